@@ -1,0 +1,61 @@
+# Thin driver: Debian packages, CMake build, ctest, demo, benchmarks, formatting.
+BUILD   ?= build
+PYTHON  := /usr/bin/python3
+JOBS    ?= $(shell nproc)
+SUDO    := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+MODDIR  := $(HOME)/.local/share/FreeCAD/Mod
+
+DEBS := cmake make g++ pkg-config freecad \
+	libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libtbb-dev \
+	libcgal-dev libeigen3-dev pybind11-dev python3-dev nlohmann-json3-dev libassimp-dev \
+	python3-ezdxf python3-pytest python3-numpy libgtest-dev libbenchmark-dev \
+	xvfb xauth clang-format black
+
+.PHONY: all deps build test demo bench lint format install install-dev clean
+
+all: build
+
+deps:
+	@missing=$$(for p in $(DEBS); do \
+	  dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q "install ok installed" || echo $$p; \
+	done); \
+	if [ -n "$$missing" ]; then \
+	  echo "Installing Debian packages:" $$missing; \
+	  $(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
+
+$(BUILD)/CMakeCache.txt:
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=$(PYTHON)
+
+build: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS)
+	@$(PYTHON) tools/write_launcher.py $(BUILD)
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j 2
+
+demo: build
+	$(PYTHON) tools/run_demo.py --build $(BUILD) --out out/demo
+
+bench: build
+	$(BUILD)/bench/popup_bench --benchmark_min_time=0.2
+
+lint:
+	clang-format --dry-run --Werror $$(git ls-files '*.cpp' '*.hpp')
+	black --check -l 100 -q $$(git ls-files '*.py')
+
+format:
+	clang-format -i $$(git ls-files '*.cpp' '*.hpp')
+	black -l 100 -q $$(git ls-files '*.py')
+
+install-dev:
+	mkdir -p $(MODDIR)
+	ln -sfn $(CURDIR)/Workbench $(MODDIR)/PopUp
+
+install: build install-dev
+	mkdir -p $(HOME)/.local/bin
+	ln -sfn $(CURDIR)/$(BUILD)/bin/popup $(HOME)/.local/bin/popup
+
+clean:
+	rm -rf $(BUILD) out

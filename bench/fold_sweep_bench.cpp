@@ -1,0 +1,111 @@
+// Fold sweep, validity check and BREP export against the patch count. BM_SweepNaiveSteps is the
+// same-process baseline for BM_SimulateSweep: the same 181 angles, one simulate_fold call each,
+// so every call restarts the continuation from the design state.
+#include <benchmark/benchmark.h>
+
+#include <string>
+#include <vector>
+
+#include "generated_scaffolds.hpp"
+#include "popup/brep_export.hpp"
+#include "popup/check_validity.hpp"
+#include "popup/simulate_fold.hpp"
+
+namespace {
+
+using popup::fixtures::generated_scaffold;
+
+constexpr int kAngles = 181;
+
+/// 180° down to 0° in 1° steps: the order the card closes in, which continuation follows.
+std::vector<double> sweep_angles()
+{
+    constexpr double pi = 3.14159265358979323846;
+    std::vector<double> angles(kAngles);
+    for (int k = 0; k < kAngles; ++k)
+        angles[k] = pi * (kAngles - 1 - k) / (kAngles - 1);
+    return angles;
+}
+
+void set_counters(benchmark::State& state, const popup::Scaffold& scaffold)
+{
+    state.counters["patches"] = static_cast<double>(scaffold.patches.size());
+    state.counters["hinges"] = static_cast<double>(scaffold.hinges.size());
+}
+
+void BM_SimulateSweep(benchmark::State& state)
+{
+    const popup::Scaffold scaffold = generated_scaffold(static_cast<int>(state.range(0)));
+    const std::vector<double> angles = sweep_angles();
+    for (auto _ : state) {
+        popup::Result<popup::FoldSweep> sweep = popup::simulate_fold(scaffold, angles);
+        if (!sweep.ok || !sweep.value.complete) {
+            state.SkipWithError("simulate_fold did not reach every angle");
+            break;
+        }
+        benchmark::DoNotOptimize(sweep.value.states.data());
+    }
+    set_counters(state, scaffold);
+    state.counters["angles"] = kAngles;
+}
+
+void BM_SweepNaiveSteps(benchmark::State& state)
+{
+    const popup::Scaffold scaffold = generated_scaffold(static_cast<int>(state.range(0)));
+    const std::vector<double> angles = sweep_angles();
+    for (auto _ : state) {
+        for (double angle : angles) {
+            popup::Result<popup::FoldSweep> sweep = popup::simulate_fold(scaffold, {angle});
+            if (!sweep.ok || !sweep.value.complete) {
+                state.SkipWithError("simulate_fold did not reach an angle");
+                return;
+            }
+            benchmark::DoNotOptimize(sweep.value.states.data());
+        }
+    }
+    set_counters(state, scaffold);
+    state.counters["angles"] = kAngles;
+}
+
+void BM_CheckValidity(benchmark::State& state)
+{
+    const popup::Scaffold scaffold = generated_scaffold(static_cast<int>(state.range(0)));
+    bool valid = false;
+    for (auto _ : state) {
+        popup::ValidityReport report = popup::check_validity(scaffold);
+        valid = report.valid();
+        benchmark::DoNotOptimize(valid);
+    }
+    set_counters(state, scaffold);
+    // Timing an invalid verdict would measure an early exit: report it next to the time.
+    state.counters["valid"] = valid ? 1.0 : 0.0;
+}
+
+void BM_PatchesToBrep(benchmark::State& state)
+{
+    const popup::Scaffold scaffold = generated_scaffold(static_cast<int>(state.range(0)));
+    constexpr double half_open = 3.14159265358979323846 / 2.0;
+    popup::Result<popup::FoldSweep> sweep = popup::simulate_fold(scaffold, {half_open});
+    if (!sweep.ok || sweep.value.states.size() != 1) {
+        state.SkipWithError("simulate_fold failed at 90 degrees");
+        return;
+    }
+    const popup::FoldState& fold_state = sweep.value.states.front();
+    std::size_t bytes = 0;
+    for (auto _ : state) {
+        std::string brep = popup::patches_to_brep(scaffold, fold_state);
+        bytes = brep.size();
+        benchmark::DoNotOptimize(brep.data());
+    }
+    set_counters(state, scaffold);
+    state.counters["brep_kB"] = static_cast<double>(bytes) / 1024.0;
+}
+
+} // namespace
+
+BENCHMARK(BM_SimulateSweep)->Unit(benchmark::kMillisecond)->Arg(10)->Arg(50)->Arg(100)->Arg(200);
+BENCHMARK(BM_SweepNaiveSteps)->Unit(benchmark::kMillisecond)->Arg(10)->Arg(50)->Arg(100)->Arg(200);
+BENCHMARK(BM_CheckValidity)->Unit(benchmark::kMillisecond)->Arg(10)->Arg(50)->Arg(100)->Arg(200);
+BENCHMARK(BM_PatchesToBrep)->Unit(benchmark::kMillisecond)->Arg(10)->Arg(50)->Arg(100)->Arg(200);
+
+BENCHMARK_MAIN();

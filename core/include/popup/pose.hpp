@@ -1,0 +1,33 @@
+#pragma once
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace popup {
+
+using Vec2 = Eigen::Vector2d;
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+
+/// Rigid motion x -> rotation * x + translation, mapping design-state world coordinates (mm) to
+/// world coordinates at some fold angle.
+struct Pose {
+    Mat3 rotation = Mat3::Identity();
+    Vec3 translation = Vec3::Zero();
+
+    Vec3 apply(const Vec3& x) const { return rotation * x + translation; }
+    Pose then(const Pose& outer) const
+    {
+        return {outer.rotation * rotation, outer.rotation * translation + outer.translation};
+    }
+};
+
+/// Rotation by `angle` (radians) about the unit axis `axis` (Rodrigues).
+Mat3 axis_angle(const Vec3& axis, double angle);
+
+/// Rotation exp([w]x) for a rotation vector w.
+Mat3 rotation_exp(const Vec3& w);
+
+/// Rotation vector w with rotation_exp(w) == r.
+Vec3 rotation_log(const Mat3& r);
+
+}  // namespace popup

@@ -1,0 +1,59 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "popup/patch.hpp"
+#include "popup/result.hpp"
+
+namespace popup {
+
+/// Intended direction of a fold, seen from the patches' normal (printed) side: a valley brings
+/// the two normal sides together, a mountain takes them apart. Needed for folds that are flat at
+/// the design state, where the motion can branch either way.
+enum class FoldDirection { unspecified, valley, mountain };
+
+const char* to_string(FoldDirection direction);
+
+/// A fold: a segment lying on the boundary or inside of both patches.
+struct Hinge {
+    int id = 0;
+    int patch_a = 0;
+    int patch_b = 0;
+    Vec3 from = Vec3::Zero();  ///< design-state world coordinates (mm)
+    Vec3 to = Vec3::Zero();
+    FoldDirection direction = FoldDirection::unspecified;
+};
+
+/// Two patches rigidly joined (a glue tab): they move as one body.
+struct Glue {
+    int patch_a = 0;
+    int patch_b = 0;
+};
+
+/// Patches, hinges and glue joints of a pop-up at its design state, in the frame of thesis §4.3:
+/// y along the central fold, z bisecting the fold angle, x toward the ground.
+struct Scaffold {
+    std::string name = "scaffold";
+    std::vector<Patch> patches;
+    std::vector<Hinge> hinges;
+    std::vector<Glue> glue;
+    int ground = -1;                     ///< id of the ground base patch (x > 0 at 180°)
+    int backdrop = -1;                   ///< id of the backdrop base patch (x < 0 at 180°)
+    double design_angle = 3.14159265358979323846;  ///< fold angle of the stored state (radians)
+    double paper_thickness = 0.2;        ///< mm
+
+    const Patch* find_patch(int id) const;
+    int patch_index(int id) const;  ///< -1 when absent
+    /// Diagonal of the design-state bounding box (mm): the scale of every tolerance.
+    double size() const;
+};
+
+/// Checks the scaffold's own consistency (ids, planarity, finite numbers, hinges lying on both
+/// patches, base patches present) and derives every patch frame. Errors name the item.
+Result<Scaffold> validate_scaffold(Scaffold scaffold);
+
+/// World pose of the ground and the backdrop at fold angle `theta`, relative to the design state.
+Pose ground_pose(const Scaffold& scaffold, double theta);
+Pose backdrop_pose(const Scaffold& scaffold, double theta);
+
+}  // namespace popup

@@ -1,0 +1,87 @@
+#include "body_graph.hpp"
+
+#include <numeric>
+
+namespace popup {
+
+namespace {
+struct DisjointSets {
+    std::vector<int> parent;
+    explicit DisjointSets(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+    int find(int i) { return parent[i] == i ? i : parent[i] = find(parent[i]); }
+    void join(int a, int b) { parent[find(a)] = find(b); }
+};
+}  // namespace
+
+Result<BodyGraph> build_body_graph(const Scaffold& s)
+{
+    Result<BodyGraph> r;
+    BodyGraph& g = r.value;
+    const int n = int(s.patches.size());
+    DisjointSets glued(n);
+    for (const Glue& glue : s.glue)
+        glued.join(s.patch_index(glue.patch_a), s.patch_index(glue.patch_b));
+
+    std::vector<int> body_of_root(n, -1);
+    g.body_of_patch.resize(n);
+    for (int i = 0; i < n; ++i) {
+        int& body = body_of_root[glued.find(i)];
+        if (body < 0)
+            body = g.body_count++;
+        g.body_of_patch[i] = body;
+    }
+    g.ground = g.body_of_patch[s.patch_index(s.ground)];
+    g.backdrop = g.body_of_patch[s.patch_index(s.backdrop)];
+    if (g.ground == g.backdrop) {
+        r.fail("base_glued", "the ground and the backdrop are glued into one rigid body",
+               "glue");
+        return r;
+    }
+
+    g.center.assign(g.body_count, Vec3::Zero());
+    std::vector<int> count(g.body_count, 0);
+    for (int i = 0; i < n; ++i)
+        for (const Vec3& x : s.patches[i].outer) {
+            g.center[g.body_of_patch[i]] += x;
+            ++count[g.body_of_patch[i]];
+        }
+    for (int b = 0; b < g.body_count; ++b)
+        g.center[b] /= double(std::max(count[b], 1));
+
+    DisjointSets linked(g.body_count);
+    for (size_t h = 0; h < s.hinges.size(); ++h) {
+        const Hinge& hinge = s.hinges[h];
+        const int a = g.body_of_patch[s.patch_index(hinge.patch_a)];
+        const int b = g.body_of_patch[s.patch_index(hinge.patch_b)];
+        // A hinge inside one body is rigid; the central fold between the bases is driven.
+        if (a == b || (g.is_base(a) && g.is_base(b)))
+            continue;
+        g.joints.push_back({int(h), a, b, {hinge.from, hinge.to}});
+        if (!g.is_base(a) && !g.is_base(b))
+            linked.join(a, b);
+    }
+
+    g.component_of_body.assign(g.body_count, -1);
+    std::vector<int> component_of_root(g.body_count, -1);
+    for (int b = 0; b < g.body_count; ++b) {
+        if (g.is_base(b))
+            continue;
+        int& c = component_of_root[linked.find(b)];
+        if (c < 0) {
+            c = int(g.components.size());
+            g.components.emplace_back();
+        }
+        g.components[c].push_back(b);
+        g.component_of_body[b] = c;
+    }
+    g.component_joints.resize(g.components.size());
+    for (size_t j = 0; j < g.joints.size(); ++j) {
+        const Joint& joint = g.joints[j];
+        const int c = g.is_base(joint.body_a) ? g.component_of_body[joint.body_b]
+                                               : g.component_of_body[joint.body_a];
+        g.component_joints[c].push_back(int(j));
+    }
+    return r;
+}
+
+}  // namespace popup

@@ -1,0 +1,374 @@
+#include "fold_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Cholesky>
+#include <Eigen/SVD>
+
+namespace popup {
+
+namespace {
+
+Mat3 skew(const Vec3& v)
+{
+    Mat3 m;
+    m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+    return m;
+}
+
+Vec3 place(const BodyPose& pose, const Vec3& center, const Vec3& x)
+{
+    return pose.rotation * (x - center) + pose.position;
+}
+
+}  // namespace
+
+FoldSolver::FoldSolver(const Scaffold& scaffold, const BodyGraph& graph,
+                       const SimulationOptions& options)
+    : scaffold_(scaffold), graph_(graph), options_(options)
+{
+    size_ = std::max(scaffold.size(), 1e-3);
+    tolerance_ = 1e-11 * size_;
+    column_of_body_.assign(graph.body_count, -1);
+    for (const auto& bodies : graph.components)
+        for (size_t k = 0; k < bodies.size(); ++k)
+            column_of_body_[bodies[k]] = int(6 * k);
+
+    hints_.resize(graph.components.size());
+    undirected_.resize(graph.components.size());
+    const Configuration design = design_configuration();
+    for (const Joint& joint : graph.joints) {
+        const Hinge& h = scaffold.hinges[joint.hinge];
+        BranchHint hint{scaffold.patch_index(h.patch_a), scaffold.patch_index(h.patch_b),
+                        joint.hinge, h.direction == FoldDirection::mountain ? -1.0 : 1.0};
+        if (std::abs(fold_sine(hint, design)) > 1e-9)
+            continue;  // not flat: the design state fixes the branch by itself
+        const int free_body = graph.is_base(joint.body_a) ? joint.body_b : joint.body_a;
+        const int c = graph.component_of_body[free_body];
+        if (h.direction == FoldDirection::unspecified)
+            undirected_[c].push_back(joint.hinge);
+        else
+            hints_[c].push_back(hint);
+    }
+}
+
+Configuration FoldSolver::design_configuration() const
+{
+    Configuration q(graph_.body_count);
+    for (int b = 0; b < graph_.body_count; ++b)
+        q[b].position = graph_.center[b];
+    return q;
+}
+
+void FoldSolver::drive_base(double theta, Configuration& q) const
+{
+    const Pose g = ground_pose(scaffold_, theta);
+    const Pose b = backdrop_pose(scaffold_, theta);
+    q[graph_.ground] = {g.rotation, g.apply(graph_.center[graph_.ground])};
+    q[graph_.backdrop] = {b.rotation, b.apply(graph_.center[graph_.backdrop])};
+}
+
+double FoldSolver::residual(int c, const Configuration& q) const
+{
+    double worst = 0.0;
+    for (int j : graph_.component_joints[c]) {
+        const Joint& joint = graph_.joints[j];
+        for (const Vec3& x : joint.ends)
+            worst = std::max(worst, (place(q[joint.body_a], graph_.center[joint.body_a], x) -
+                                     place(q[joint.body_b], graph_.center[joint.body_b], x))
+                                        .norm());
+    }
+    return worst;
+}
+
+void FoldSolver::constraint_system(int c, const Configuration& q, Eigen::VectorXd& r,
+                                   Eigen::MatrixXd& J) const
+{
+    const auto& joints = graph_.component_joints[c];
+    const int n = int(6 * graph_.components[c].size());
+    r.resize(6 * joints.size());
+    J.setZero(6 * joints.size(), n);
+    for (size_t k = 0; k < joints.size(); ++k) {
+        const Joint& joint = graph_.joints[joints[k]];
+        for (int e = 0; e < 2; ++e) {
+            const int row = int(6 * k + 3 * e);
+            const Vec3& x = joint.ends[e];
+            const Vec3 arm_a = q[joint.body_a].rotation * (x - graph_.center[joint.body_a]);
+            const Vec3 arm_b = q[joint.body_b].rotation * (x - graph_.center[joint.body_b]);
+            r.segment<3>(row) =
+                (arm_a + q[joint.body_a].position) - (arm_b + q[joint.body_b].position);
+            const int ca = column_of_body_[joint.body_a];
+            const int cb = column_of_body_[joint.body_b];
+            if (!graph_.is_base(joint.body_a)) {
+                J.block<3, 3>(row, ca) = -skew(arm_a) / size_;
+                J.block<3, 3>(row, ca + 3) = Mat3::Identity();
+            }
+            if (!graph_.is_base(joint.body_b)) {
+                J.block<3, 3>(row, cb) = skew(arm_b) / size_;
+                J.block<3, 3>(row, cb + 3) = -Mat3::Identity();
+            }
+        }
+    }
+}
+
+Eigen::MatrixXd FoldSolver::jacobian(int c, const Configuration& q) const
+{
+    Eigen::VectorXd r;
+    Eigen::MatrixXd J;
+    constraint_system(c, q, r, J);
+    return J;
+}
+
+double FoldSolver::fold_sine(const BranchHint& hint, const Configuration& q) const
+{
+    const Hinge& h = scaffold_.hinges[hint.hinge];
+    const int a = graph_.body_of_patch[hint.patch_a];
+    const int b = graph_.body_of_patch[hint.patch_b];
+    const Patch& pa = scaffold_.patches[hint.patch_a];
+    const Patch& pb = scaffold_.patches[hint.patch_b];
+    const Vec3 normal = q[a].rotation * pa.normal;
+    const Vec3 axis = (q[a].rotation * (h.to - h.from)).normalized();
+    const Vec3 mid = place(q[a], graph_.center[a], 0.5 * (h.from + h.to));
+    Vec3 away = place(q[b], graph_.center[b], pb.centroid()) - mid;
+    away -= away.dot(axis) * axis;
+    const double len = away.norm();
+    return len > 0.0 ? normal.dot(away) / len : 0.0;
+}
+
+bool FoldSolver::least_squares(int c, Configuration& q, const std::vector<BranchHint>* hints,
+                               int max_iterations, bool to_round_off) const
+{
+    const auto& bodies = graph_.components[c];
+    const int n = int(6 * bodies.size());
+    if (n == 0)
+        return true;
+    const int nh = hints ? int(hints->size()) : 0;
+    const double weight = 0.1 * size_;
+    const double target = 0.02;  // sine of a small opening on the intended side
+
+    auto apply = [&](Configuration& conf, const Eigen::VectorXd& d) {
+        for (size_t k = 0; k < bodies.size(); ++k) {
+            BodyPose& p = conf[bodies[k]];
+            p.rotation = rotation_exp(d.segment<3>(6 * k) / size_) * p.rotation;
+            p.position += d.segment<3>(6 * k + 3);
+        }
+    };
+    auto system = [&](const Configuration& conf, Eigen::VectorXd& r, Eigen::MatrixXd& J) {
+        constraint_system(c, conf, r, J);
+        if (nh == 0)
+            return;
+        const int m = int(r.size());
+        r.conservativeResize(m + nh);
+        J.conservativeResize(m + nh, n);
+        for (int k = 0; k < nh; ++k) {
+            const BranchHint& hint = (*hints)[k];
+            const double f = fold_sine(hint, conf);
+            r[m + k] = weight * (hint.sign * f - target);
+            for (int col = 0; col < n; ++col) {  // few unknowns, one step: differences suffice
+                Configuration moved = conf;
+                Eigen::VectorXd d = Eigen::VectorXd::Zero(n);
+                d[col] = 1e-7 * size_;
+                apply(moved, d);
+                J(m + k, col) = weight * hint.sign * (fold_sine(hint, moved) - f) / d[col];
+            }
+        }
+    };
+
+    Eigen::VectorXd r;
+    Eigen::MatrixXd J;
+    system(q, r, J);
+    double cost = r.squaredNorm();
+    double lambda = 1e-6;
+    for (int it = 0; it < max_iterations; ++it) {
+        if (nh == 0 && !to_round_off && r.cwiseAbs().maxCoeff() <= tolerance_)
+            return true;
+        const Eigen::MatrixXd A = J.transpose() * J;
+        const Eigen::VectorXd g = J.transpose() * r;
+        bool improved = false;
+        while (lambda < 1e10) {
+            Eigen::MatrixXd M = A;
+            M.diagonal() += lambda * A.diagonal() + Eigen::VectorXd::Constant(n, 1e-14);
+            const Eigen::VectorXd d = -M.ldlt().solve(g);
+            Configuration trial = q;
+            apply(trial, d);
+            Eigen::VectorXd r2;
+            Eigen::MatrixXd J2;
+            system(trial, r2, J2);
+            const double cost2 = r2.squaredNorm();
+            if (cost2 < cost || (cost2 <= cost && cost2 == 0.0)) {
+                q = std::move(trial);
+                r = std::move(r2);
+                J = std::move(J2);
+                improved = cost - cost2 > 1e-30 * size_ * size_;
+                cost = cost2;
+                lambda = std::max(lambda * 0.25, 1e-12);
+                break;
+            }
+            lambda *= 8.0;
+        }
+        if (!improved)
+            break;
+    }
+    if (nh > 0)
+        return true;  // the hinted pass only positions the guess; the plain pass must converge
+    return residual(c, q) <= tolerance_;
+}
+
+bool FoldSolver::correct(int c, Configuration& q, const std::vector<BranchHint>& hints,
+                         int max_iterations, bool to_round_off) const
+{
+    if (!hints.empty())
+        least_squares(c, q, &hints, max_iterations, false);
+    return least_squares(c, q, nullptr, max_iterations, to_round_off);
+}
+
+FoldState FoldSolver::state(double theta, const Configuration& q) const
+{
+    FoldState s;
+    s.angle = theta;
+    s.poses.resize(scaffold_.patches.size());
+    for (size_t i = 0; i < scaffold_.patches.size(); ++i) {
+        const int b = graph_.body_of_patch[i];
+        s.poses[i].rotation = q[b].rotation;
+        s.poses[i].translation = q[b].position - q[b].rotation * graph_.center[b];
+    }
+    for (const Hinge& h : scaffold_.hinges) {
+        const Pose& a = s.poses[scaffold_.patch_index(h.patch_a)];
+        const Pose& b = s.poses[scaffold_.patch_index(h.patch_b)];
+        for (const Vec3& x : {h.from, h.to})
+            s.hinge_residual = std::max(s.hinge_residual, (a.apply(x) - b.apply(x)).norm());
+    }
+    for (size_t i = 0; i < scaffold_.patches.size(); ++i) {
+        const Loop3& loop = scaffold_.patches[i].outer;
+        for (size_t k = 0; k < loop.size(); ++k) {
+            const Vec3& x = loop[k];
+            const Vec3& y = loop[(k + 1) % loop.size()];
+            const double before = (y - x).norm();
+            const double after = (s.poses[i].apply(y) - s.poses[i].apply(x)).norm();
+            s.edge_strain = std::max(s.edge_strain, std::abs(after - before) / before);
+        }
+    }
+    return s;
+}
+
+Configuration FoldSolver::configuration(const FoldState& state) const
+{
+    Configuration q(graph_.body_count);
+    for (size_t i = 0; i < scaffold_.patches.size(); ++i) {
+        const int b = graph_.body_of_patch[i];
+        q[b].rotation = state.poses[i].rotation;
+        q[b].position = state.poses[i].apply(graph_.center[b]);
+    }
+    return q;
+}
+
+ComponentTrack::ComponentTrack(const FoldSolver& solver, int component, double design_angle)
+    : solver_(solver), component_(component), theta_(design_angle),
+      current_(solver.design_configuration()), step_(solver.options().max_step)
+{
+    solver.drive_base(theta_, current_);
+}
+
+bool ComponentTrack::advance_to(double target)
+{
+    const SimulationOptions& options = solver_.options();
+    while (theta_ != target) {
+        const double gap = target - theta_;
+        const double next = std::abs(gap) <= step_ ? target : theta_ + std::copysign(step_, gap);
+        if (try_step(next)) {
+            step_ = std::min(step_ * 1.5, options.max_step);
+            if (theta_ == target && (target == 0.0 || target == M_PI) && singular())
+                take_limit_at_end();
+        } else {
+            step_ *= 0.5;
+            if (step_ < options.min_step) {
+                locked_ = theta_;
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+bool ComponentTrack::singular() const
+{
+    const Eigen::MatrixXd J = solver_.jacobian(component_, current_);
+    if (J.cols() == 0)
+        return false;
+    const Eigen::VectorXd s = Eigen::JacobiSVD<Eigen::MatrixXd>(J).singularValues();
+    return s.minCoeff() <= 1e-6 * std::max(s.maxCoeff(), 1.0);
+}
+
+void ComponentTrack::take_limit_at_end()
+{
+    if (previous_step_ == 0.0)
+        return;
+    // Cubic extrapolation from four states 1e-3 rad apart on the branch (error ~ h⁴ L).
+    const double h = 1e-3;
+    const double weights[4] = {4.0, -6.0, 4.0, -1.0};
+    const auto& bodies = solver_.graph().components[component_];
+    std::vector<Configuration> nodes;
+    for (int k = 1; k <= 4; ++k) {
+        const double t = k * h / std::abs(previous_step_);  // fraction of the way back
+        Configuration q = current_;
+        for (int b : bodies) {
+            const Mat3 turn = previous_[b].rotation * current_[b].rotation.transpose();
+            q[b].rotation = rotation_exp(t * rotation_log(turn)) * current_[b].rotation;
+            q[b].position += t * (previous_[b].position - current_[b].position);
+        }
+        solver_.drive_base(theta_ - std::copysign(k * h, previous_step_), q);
+        if (!solver_.correct(component_, q, {}, solver_.options().max_newton_iterations, true))
+            return;
+        nodes.push_back(std::move(q));
+    }
+    for (int b : bodies) {
+        Vec3 turn = Vec3::Zero(), position = Vec3::Zero();
+        for (int k = 0; k < 4; ++k) {
+            turn += weights[k] *
+                    rotation_log(nodes[k][b].rotation * nodes[0][b].rotation.transpose());
+            position += weights[k] * nodes[k][b].position;
+        }
+        current_[b].rotation = rotation_exp(turn) * nodes[0][b].rotation;
+        current_[b].position = position;
+    }
+}
+
+bool ComponentTrack::try_step(double next)
+{
+    const double h = next - theta_;
+    Configuration guess = current_;
+    solver_.drive_base(next, guess);
+    const auto& bodies = solver_.graph().components[component_];
+    if (!at_design_ && previous_step_ != 0.0) {
+        // Secant predictor along the branch already followed.
+        const double s = h / previous_step_;
+        for (int b : bodies) {
+            const Mat3 turn = current_[b].rotation * previous_[b].rotation.transpose();
+            guess[b].rotation = rotation_exp(s * rotation_log(turn)) * current_[b].rotation;
+            guess[b].position =
+                current_[b].position + s * (current_[b].position - previous_[b].position);
+        }
+    }
+    static const std::vector<BranchHint> none;
+    const auto& hints = at_design_ ? solver_.hints(component_) : none;
+    if (!solver_.correct(component_, guess, hints, solver_.options().max_newton_iterations))
+        return false;
+    for (int b : bodies) {
+        const Mat3 turn = guess[b].rotation * current_[b].rotation.transpose();
+        if (Eigen::AngleAxisd(turn).angle() > 0.5)
+            return false;  // a jump this large in one step means another branch
+    }
+    if (at_design_)
+        for (const BranchHint& hint : hints)
+            if (hint.sign * solver_.fold_sine(hint, guess) <= 0.0)
+                branch_ok_ = false;
+    previous_ = current_;
+    previous_step_ = h;
+    current_ = std::move(guess);
+    theta_ = next;
+    at_design_ = false;
+    return true;
+}
+
+}  // namespace popup

@@ -1,0 +1,106 @@
+#pragma once
+// Internal: rigid-body kinematics of a scaffold. Every free body has a pose x -> R (x - c) + p
+// (c its design-state centre); hinges are point-coincidence constraints at both hinge ends; the
+// base bodies are driven by the fold angle. Solved per component by damped Gauss-Newton.
+#include <vector>
+
+#include "body_graph.hpp"
+#include "popup/simulate_fold.hpp"
+
+namespace popup {
+
+struct BodyPose {
+    Mat3 rotation = Mat3::Identity();
+    Vec3 position = Vec3::Zero();
+};
+using Configuration = std::vector<BodyPose>;
+
+/// A fold that is flat at the design state and carries an intended direction: during the first
+/// step away from the design state it pulls the solution onto the intended branch.
+struct BranchHint {
+    int patch_a = 0;  ///< patch indices
+    int patch_b = 0;
+    int hinge = 0;
+    double sign = 1.0;  ///< +1 valley, -1 mountain
+};
+
+class FoldSolver {
+public:
+    FoldSolver(const Scaffold& scaffold, const BodyGraph& graph, const SimulationOptions& options);
+
+    const BodyGraph& graph() const { return graph_; }
+    const SimulationOptions& options() const { return options_; }
+    double tolerance() const { return tolerance_; }
+    Configuration design_configuration() const;
+    void drive_base(double theta, Configuration& q) const;
+
+    /// Largest hinge end mismatch (mm) over the joints of component c.
+    double residual(int c, const Configuration& q) const;
+    /// Newton-corrects the bodies of component c at the base state already in q. With hints,
+    /// first settles on the hinted side of each flat fold, then corrects without them.
+    /// `to_round_off` keeps iterating past the tolerance while the residual still drops.
+    bool correct(int c, Configuration& q, const std::vector<BranchHint>& hints,
+                 int max_iterations, bool to_round_off = false) const;
+
+    /// Signed opening of a fold: sine of the angle by which patch b leaves patch a's plane,
+    /// positive toward a's normal (valley side).
+    double fold_sine(const BranchHint& hint, const Configuration& q) const;
+    /// Branch hints of component c (flat directed folds at the design state).
+    const std::vector<BranchHint>& hints(int c) const { return hints_[c]; }
+    /// Flat folds without a direction in component c (the branch is then arbitrary).
+    const std::vector<int>& undirected_flat_hinges(int c) const { return undirected_[c]; }
+
+    FoldState state(double theta, const Configuration& q) const;
+    Configuration configuration(const FoldState& state) const;
+
+    /// Jacobian of component c's hinge constraints with respect to its bodies' motions
+    /// (rotation columns scaled by the model size so every column is in mm).
+    Eigen::MatrixXd jacobian(int c, const Configuration& q) const;
+
+private:
+    void constraint_system(int c, const Configuration& q, Eigen::VectorXd& r,
+                           Eigen::MatrixXd& J) const;
+    bool least_squares(int c, Configuration& q, const std::vector<BranchHint>* hints,
+                       int max_iterations, bool to_round_off) const;
+
+    const Scaffold& scaffold_;
+    const BodyGraph& graph_;
+    SimulationOptions options_;
+    double size_ = 1.0;
+    double tolerance_ = 1e-11;
+    std::vector<std::vector<BranchHint>> hints_;
+    std::vector<std::vector<int>> undirected_;
+    std::vector<int> column_of_body_;  ///< first unknown of each free body within its component
+};
+
+/// Continuation of one component from the design state toward a sequence of angles.
+class ComponentTrack {
+public:
+    ComponentTrack(const FoldSolver& solver, int component, double design_angle);
+    /// Advances to `target`; false when the motion locks before it (locked_angle() says where).
+    bool advance_to(double target);
+    const Configuration& configuration() const { return current_; }
+    double angle() const { return theta_; }
+    double locked_angle() const { return locked_; }
+    bool branch_followed() const { return branch_ok_; }
+
+private:
+    bool try_step(double next);
+    /// At a closed or fully open end where the hinges line up the constraints are tangent and
+    /// pin the pose only to the square root of round-off; take the branch's limit instead.
+    void take_limit_at_end();
+    bool singular() const;
+
+    const FoldSolver& solver_;
+    int component_;
+    double theta_;
+    Configuration current_;
+    Configuration previous_;
+    double previous_step_ = 0.0;
+    double step_;
+    bool at_design_ = true;
+    bool branch_ok_ = true;
+    double locked_ = -1.0;
+};
+
+}  // namespace popup

@@ -1,0 +1,204 @@
+#include "popup/scaffold.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
+
+#include "polygon_2d.hpp"
+
+namespace popup {
+
+const char* to_string(FoldDirection direction)
+{
+    switch (direction) {
+    case FoldDirection::valley:
+        return "valley";
+    case FoldDirection::mountain:
+        return "mountain";
+    default:
+        return "unspecified";
+    }
+}
+
+const Patch* Scaffold::find_patch(int id) const
+{
+    const int i = patch_index(id);
+    return i < 0 ? nullptr : &patches[i];
+}
+
+int Scaffold::patch_index(int id) const
+{
+    for (size_t i = 0; i < patches.size(); ++i)
+        if (patches[i].id == id)
+            return int(i);
+    return -1;
+}
+
+double Scaffold::size() const
+{
+    Eigen::AlignedBox3d box;
+    for (const Patch& p : patches)
+        for (const Vec3& x : p.outer)
+            box.extend(x);
+    return box.isEmpty() ? 0.0 : box.diagonal().norm();
+}
+
+namespace {
+
+std::string patch_subject(const Patch& p)
+{
+    std::ostringstream s;
+    s << "patch " << p.id;
+    if (!p.name.empty())
+        s << " (" << p.name << ")";
+    return s.str();
+}
+
+bool finite(const Vec3& x) { return x.allFinite(); }
+
+// A point lies on a patch when it is in the patch plane and inside or on its outline, within tol.
+bool point_on_patch(const Patch& p, const Vec3& x, double tol)
+{
+    if (std::abs((x - p.origin).dot(p.normal)) > tol)
+        return false;
+    const Vec2 q = p.to_local(x);
+    if (!point_in_polygon_or_near(p.outer_local(), q, tol))
+        return false;
+    for (const Loop2& hole : p.holes_local())
+        if (point_in_polygon_or_near(hole, q, -tol))
+            return false;
+    return true;
+}
+
+}  // namespace
+
+Result<Scaffold> validate_scaffold(Scaffold s)
+{
+    Result<Scaffold> r;
+    if (s.patches.empty()) {
+        r.fail("empty_scaffold", "the scaffold has no patches; it needs at least the two base patches",
+               "scaffold");
+        return r;
+    }
+    bool coordinates_ok = true;
+    for (const Patch& p : s.patches) {
+        if (p.outer.size() < 3) {
+            r.fail("too_few_vertices",
+                   "outline has " + std::to_string(p.outer.size()) + " vertices, needs at least 3",
+                   patch_subject(p));
+            coordinates_ok = false;
+        }
+        bool ok = std::all_of(p.outer.begin(), p.outer.end(), finite);
+        for (const Loop3& h : p.holes)
+            ok = ok && std::all_of(h.begin(), h.end(), finite);
+        if (!ok) {
+            r.fail("non_finite_coordinate", "a vertex has a NaN or infinite coordinate",
+                   patch_subject(p));
+            coordinates_ok = false;
+        }
+    }
+    if (!coordinates_ok)
+        return r;
+
+    const double size = s.size();
+    const double tol = 1e-6 * std::max(size, 1.0);
+    std::set<int> ids;
+    for (Patch& p : s.patches) {
+        if (!ids.insert(p.id).second)
+            r.fail("duplicate_patch_id", "id " + std::to_string(p.id) + " is used twice",
+                   patch_subject(p));
+        const double deviation = p.derive_frame();
+        if (!std::isfinite(deviation) || p.area() <= tol * tol) {
+            r.fail("degenerate_patch", "outline encloses no area", patch_subject(p));
+            continue;
+        }
+        if (deviation > tol) {
+            std::ostringstream m;
+            m << "is not planar: a vertex lies " << deviation << " mm off its plane (allowed "
+              << tol << " mm)";
+            r.fail("non_planar_patch", m.str(), patch_subject(p));
+        }
+    }
+    auto check_base = [&](int id, const char* which) {
+        if (!s.find_patch(id))
+            r.fail("missing_base_patch",
+                   std::string(which) + " = " + std::to_string(id) + " names no patch", which);
+    };
+    check_base(s.ground, "ground");
+    check_base(s.backdrop, "backdrop");
+    if (s.ground == s.backdrop && s.find_patch(s.ground))
+        r.fail("missing_base_patch", "ground and backdrop are the same patch", "backdrop");
+    if (!(s.design_angle > 0.0 && s.design_angle <= M_PI))
+        r.fail("bad_design_angle",
+               "design angle " + std::to_string(s.design_angle * 180.0 / M_PI) +
+                   "° must be > 0° and <= 180°",
+               "design_angle");
+    if (!(s.paper_thickness >= 0.0 && s.paper_thickness < 0.05 * std::max(size, 1.0)))
+        r.fail("bad_paper_thickness",
+               "paper thickness " + std::to_string(s.paper_thickness) +
+                   " mm must be >= 0 and below 5% of the model size",
+               "paper_thickness");
+
+    std::set<int> hinge_ids;
+    for (const Hinge& h : s.hinges) {
+        const std::string subject = "hinge " + std::to_string(h.id);
+        if (!hinge_ids.insert(h.id).second)
+            r.fail("duplicate_hinge_id", "id is used twice", subject);
+        const Patch* a = s.find_patch(h.patch_a);
+        const Patch* b = s.find_patch(h.patch_b);
+        if (!a || !b || h.patch_a == h.patch_b) {
+            r.fail("bad_hinge_patches",
+                   "joins patches " + std::to_string(h.patch_a) + " and " +
+                       std::to_string(h.patch_b) + "; both must exist and differ",
+                   subject);
+            continue;
+        }
+        if (!finite(h.from) || !finite(h.to) || (h.to - h.from).norm() <= tol) {
+            r.fail("degenerate_hinge", "segment has a non-finite or zero-length end", subject);
+            continue;
+        }
+        for (const Patch* p : {a, b}) {
+            for (const Vec3& x : {h.from, h.to}) {
+                if (!point_on_patch(*p, x, 10 * tol)) {
+                    std::ostringstream m;
+                    m << "segment end (" << x.x() << ", " << x.y() << ", " << x.z()
+                      << ") is not on " << patch_subject(*p);
+                    r.fail("hinge_off_patch", m.str(), subject);
+                }
+            }
+        }
+    }
+    for (size_t i = 0; i < s.glue.size(); ++i) {
+        const Glue& g = s.glue[i];
+        if (!s.find_patch(g.patch_a) || !s.find_patch(g.patch_b) || g.patch_a == g.patch_b)
+            r.fail("bad_glue_patches",
+                   "joins patches " + std::to_string(g.patch_a) + " and " +
+                       std::to_string(g.patch_b) + "; both must exist and differ",
+                   "glue[" + std::to_string(i) + "]");
+    }
+    r.value = std::move(s);
+    return r;
+}
+
+namespace {
+// The ground turns about the central fold (the y axis) by half the change of the fold angle.
+Pose base_pose(double half_turn)
+{
+    Pose p;
+    p.rotation = axis_angle(Vec3::UnitY(), half_turn);
+    return p;
+}
+}  // namespace
+
+Pose ground_pose(const Scaffold& scaffold, double theta)
+{
+    return base_pose(0.5 * (theta - scaffold.design_angle));
+}
+
+Pose backdrop_pose(const Scaffold& scaffold, double theta)
+{
+    return base_pose(-0.5 * (theta - scaffold.design_angle));
+}
+
+}  // namespace popup

@@ -1,0 +1,129 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "popup/check_validity.hpp"
+#include "test_support.hpp"
+#include "validity_cases.hpp"
+
+using namespace popup;
+
+namespace {
+bool has_code(const ValidityReport& r, const std::string& code)
+{
+    for (const Diagnostic& d : r.diagnostics)
+        if (d.code == code)
+            return true;
+    return false;
+}
+
+const Diagnostic* find_code(const ValidityReport& r, const std::string& code)
+{
+    for (const Diagnostic& d : r.diagnostics)
+        if (d.code == code)
+            return &d;
+    return nullptr;
+}
+}  // namespace
+
+TEST(CheckValidity, TentFoldIsValidWithTinyResiduals)
+{
+    const ValidityReport r = check_validity(fixtures::valid_tent_card());
+    EXPECT_TRUE(r.foldable);
+    EXPECT_TRUE(r.stable);
+    EXPECT_TRUE(r.intersection_free);
+    EXPECT_TRUE(r.enclosed);
+    EXPECT_TRUE(r.diagnostics.empty()) << r.diagnostics.front().message;
+    EXPECT_LE(r.max_hinge_residual, 1e-9 * r.model_size);
+    EXPECT_LE(r.max_edge_strain, 1e-12);
+    EXPECT_LE(r.flatness_at_zero, 1e-6 * r.model_size);
+}
+
+TEST(CheckValidity, MultiMechanismCardIsValid)
+{
+    const ValidityReport r = check_validity(fixtures::valid_multi_card());
+    EXPECT_TRUE(r.valid()) << (r.diagnostics.empty() ? "" : r.diagnostics.front().message);
+    EXPECT_TRUE(r.crossings.empty());
+}
+
+TEST(CheckValidity, TentWithShortSlopesIsNotFoldable)
+{
+    const ValidityReport r = check_validity(fixtures::broken_tent_card());
+    EXPECT_FALSE(r.foldable);
+    // It locks opening, where sin(θ/2) = slope / foot = 25/30.
+    EXPECT_NEAR(r.locked_at * 180 / M_PI, 2 * std::asin(25.0 / 30.0) * 180 / M_PI, 0.05);
+    const Diagnostic* d = find_code(r, "motion_locked");
+    ASSERT_NE(d, nullptr);
+    EXPECT_NE(d->message.find("112.9"), std::string::npos) << d->message;
+}
+
+TEST(CheckValidity, FiveBarLoopIsNotStable)
+{
+    const ValidityReport r = check_validity(fixtures::five_bar_card());
+    EXPECT_FALSE(r.stable);
+    const Diagnostic* d = find_code(r, "unstable");
+    ASSERT_NE(d, nullptr);
+    EXPECT_NE(d->message.find("1 free motion"), std::string::npos) << d->message;
+    for (const char* id : {"patch 2", "patch 3", "patch 4"})
+        EXPECT_NE(d->subject.find(id), std::string::npos) << d->subject;
+}
+
+TEST(CheckValidity, WallsCollidingAt40DegreesAreFound)
+{
+    const ValidityReport r = check_validity(fixtures::colliding_walls_card());
+    EXPECT_FALSE(r.intersection_free);
+    const Crossing* walls = nullptr;
+    for (const Crossing& c : r.crossings)
+        if (c.patch_a == 2 && c.patch_b == 3)
+            walls = &c;
+    ASSERT_NE(walls, nullptr);
+    EXPECT_NEAR(walls->angle * 180 / M_PI, 40.0, 2.0);
+    EXPECT_GT(walls->depth, 1.0);
+    // Nothing crosses before the walls meet.
+    for (const Crossing& c : r.crossings)
+        EXPECT_LE(c.angle * 180 / M_PI, 40.5);
+}
+
+TEST(CheckValidity, TentStickingOutOfTheClosedCardIsNotEnclosed)
+{
+    const ValidityReport r = check_validity(fixtures::sticking_out_tent_card());
+    EXPECT_TRUE(r.foldable);
+    EXPECT_TRUE(r.stable);
+    EXPECT_FALSE(r.enclosed);
+    const Diagnostic* d = find_code(r, "not_enclosed");
+    ASSERT_NE(d, nullptr);
+    EXPECT_NE(d->message.find("by 10 mm"), std::string::npos) << d->message;
+}
+
+TEST(CheckValidity, StackedStepFoldIsNotACrossing)
+{
+    // Flat at 180° and at 0°, every patch lies on another: touching, never crossing.
+    Scaffold card = fixtures::make_card(200, 140);
+    fixtures::add_step_fold(card, 50, 40, 30, 20);
+    const ValidityReport r = check_validity(card);
+    EXPECT_TRUE(r.intersection_free);
+    EXPECT_TRUE(r.valid()) << (r.diagnostics.empty() ? "" : r.diagnostics.front().message);
+}
+
+TEST(CheckValidity, BadOptionsAreNamed)
+{
+    ValidityOptions o;
+    o.samples = 1;
+    const ValidityReport r = check_validity(fixtures::valid_tent_card(), o);
+    EXPECT_FALSE(r.valid());
+    EXPECT_TRUE(has_code(r, "bad_option"));
+}
+
+TEST(FindCrossings, ReportsDepthOfTheWalls)
+{
+    const Scaffold s = fixtures::colliding_walls_card();
+    const Result<FoldSweep> sweep = simulate_fold(s, {fixtures::deg(30)});
+    ASSERT_EQ(sweep.value.states.size(), 1u);
+    const auto crossings = find_crossings(s, sweep.value.states[0], 1e-6);
+    ASSERT_FALSE(crossings.empty());
+    // Each wall's top passes the mid-plane by d·sin15° − h·cos15° at 30°.
+    const double d = 50, h = d * std::tan(fixtures::deg(20));
+    const double past = h * std::cos(fixtures::deg(15)) - d * std::sin(fixtures::deg(15));
+    EXPECT_GT(crossings[0].depth, 0.0);
+    EXPECT_LT(crossings[0].depth, 2 * past + 1e-9);
+}
