@@ -86,14 +86,18 @@ struct Checker {
     // inside patch j: the patch passed through. Returns how far the vertex went, or 0.
     double passes_through(const FoldState& a, const FoldState& b, int i, int j, int levels) const
     {
-        const std::vector<double> da = side_of_plane(meshes, s, a, i, j);
-        const std::vector<double> db = side_of_plane(meshes, s, b, i, j);
-        for (size_t k = 0; k < da.size(); ++k) {
-            if (!((da[k] > tolerance && db[k] < -tolerance) ||
-                  (da[k] < -tolerance && db[k] > tolerance)))
+        const Vec3 na = a.poses[j].rotation * s.patches[j].normal;
+        const Vec3 nb = b.poses[j].rotation * s.patches[j].normal;
+        const Vec3 oa = a.poses[j].apply(s.patches[j].origin);
+        const Vec3 ob = b.poses[j].apply(s.patches[j].origin);
+        for (size_t k = 0; k < meshes[i].vertices.size(); ++k) {
+            const Vec3& x = meshes[i].vertices[k];
+            const double da = (a.poses[i].apply(x) - oa).dot(na);
+            const double db = (b.poses[i].apply(x) - ob).dot(nb);
+            if (!((da > tolerance && db < -tolerance) || (da < -tolerance && db > tolerance)))
                 continue;
             FoldState lo = a, hi = b;
-            double dlo = da[k], dhi = db[k];
+            double dlo = da, dhi = db;
             for (int level = 0; level < levels; ++level) {
                 FoldState mid;
                 if (!solve_between(lo, hi, 0.5 * (lo.angle + hi.angle), mid))
@@ -114,7 +118,7 @@ struct Checker {
             const Pose& pj = lo.poses[j];
             const Vec2 q = s.patches[j].to_local(pj.rotation.transpose() * (hit - pj.translation));
             if (point_in_polygon_or_near(s.patches[j].outer_local(), q, -tolerance))
-                return std::max(std::abs(da[k]), std::abs(db[k]));
+                return std::max(std::abs(da), std::abs(db));
         }
         return 0.0;
     }

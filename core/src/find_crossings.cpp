@@ -222,12 +222,15 @@ std::vector<double> side_of_plane(const std::vector<PatchMesh>& meshes, const Sc
 double crossing_depth(const std::vector<PatchMesh>& meshes, const Scaffold& scaffold,
                       const FoldState& state, int i, int j, double tolerance, double clearance)
 {
-    const std::vector<double> di = side_of_plane(meshes, scaffold, state, i, j);
-    const std::vector<double> dj = side_of_plane(meshes, scaffold, state, j, i);
     auto straddle = [](const std::vector<double>& d) {
         const auto [lo, hi] = std::minmax_element(d.begin(), d.end());
         return std::min(*hi, -*lo);
     };
+    const std::vector<double> di = side_of_plane(meshes, scaffold, state, i, j);
+    // Most pairs do not even reach each other's plane: stop before any further work.
+    if (clearance <= 0.0 && straddle(di) <= tolerance)
+        return 0.0;
+    const std::vector<double> dj = side_of_plane(meshes, scaffold, state, j, i);
     const std::vector<Vec3> vi = posed_vertices(meshes[i], state.poses[i]);
     const std::vector<Vec3> vj = posed_vertices(meshes[j], state.poses[j]);
     double near = 0.0;

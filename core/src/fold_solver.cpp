@@ -35,6 +35,8 @@ FoldSolver::FoldSolver(const Scaffold& scaffold, const BodyGraph& graph,
         for (size_t k = 0; k < bodies.size(); ++k)
             column_of_body_[bodies[k]] = int(6 * k);
 
+    for (const Hinge& h : scaffold.hinges)
+        hinge_patches_.push_back({scaffold.patch_index(h.patch_a), scaffold.patch_index(h.patch_b)});
     hints_.resize(graph.components.size());
     undirected_.resize(graph.components.size());
     const Configuration design = design_configuration();
@@ -136,6 +138,103 @@ double FoldSolver::fold_sine(const BranchHint& hint, const Configuration& q) con
     return len > 0.0 ? normal.dot(away) / len : 0.0;
 }
 
+void FoldSolver::apply_step(int c, Configuration& q, const Eigen::VectorXd& d) const
+{
+    const auto& bodies = graph_.components[c];
+    for (size_t k = 0; k < bodies.size(); ++k) {
+        BodyPose& p = q[bodies[k]];
+        p.rotation = rotation_exp(d.segment<3>(6 * k) / size_) * p.rotation;
+        p.position += d.segment<3>(6 * k + 3);
+    }
+}
+
+double FoldSolver::hint_residual(const BranchHint& hint, const Configuration& q) const
+{
+    const double weight = 0.1 * size_;
+    const double target = 0.02;  // sine of a small opening on the intended side
+    return weight * (hint.sign * fold_sine(hint, q) - target);
+}
+
+double FoldSolver::cost(int c, const Configuration& q, const std::vector<BranchHint>* hints,
+                        double* worst) const
+{
+    double total = 0.0, largest = 0.0;
+    for (int j : graph_.component_joints[c]) {
+        const Joint& joint = graph_.joints[j];
+        for (const Vec3& x : joint.ends) {
+            const Vec3 r = place(q[joint.body_a], graph_.center[joint.body_a], x) -
+                           place(q[joint.body_b], graph_.center[joint.body_b], x);
+            total += r.squaredNorm();
+            largest = std::max(largest, r.cwiseAbs().maxCoeff());
+        }
+    }
+    if (hints)
+        for (const BranchHint& hint : *hints)
+            total += std::pow(hint_residual(hint, q), 2);
+    if (worst)
+        *worst = largest;
+    return total;
+}
+
+void FoldSolver::linearize(int c, const Configuration& q, const std::vector<BranchHint>* hints,
+                           Eigen::MatrixXd& A, Eigen::VectorXd& g) const
+{
+    const int n = int(6 * graph_.components[c].size());
+    A.setZero(n, n);
+    g.setZero(n);
+    // Each hinge end touches at most two bodies: assemble JᵀJ and Jᵀr from 3x6 blocks.
+    for (int j : graph_.component_joints[c]) {
+        const Joint& joint = graph_.joints[j];
+        const bool free_a = !graph_.is_base(joint.body_a);
+        const bool free_b = !graph_.is_base(joint.body_b);
+        const int ca = column_of_body_[joint.body_a];
+        const int cb = column_of_body_[joint.body_b];
+        for (const Vec3& x : joint.ends) {
+            const Vec3 arm_a = q[joint.body_a].rotation * (x - graph_.center[joint.body_a]);
+            const Vec3 arm_b = q[joint.body_b].rotation * (x - graph_.center[joint.body_b]);
+            const Vec3 r =
+                (arm_a + q[joint.body_a].position) - (arm_b + q[joint.body_b].position);
+            Eigen::Matrix<double, 3, 6> Ja, Jb;
+            Ja << -skew(arm_a) / size_, Mat3::Identity();
+            Jb << skew(arm_b) / size_, -Mat3::Identity();
+            // Fixed-size temporaries keep Eigen off its general (allocating) product path.
+            if (free_a) {
+                const Eigen::Matrix<double, 6, 6> aa = Ja.transpose() * Ja;
+                const Eigen::Matrix<double, 6, 1> ga = Ja.transpose() * r;
+                A.block<6, 6>(ca, ca) += aa;
+                g.segment<6>(ca) += ga;
+            }
+            if (free_b) {
+                const Eigen::Matrix<double, 6, 6> bb = Jb.transpose() * Jb;
+                const Eigen::Matrix<double, 6, 1> gb = Jb.transpose() * r;
+                A.block<6, 6>(cb, cb) += bb;
+                g.segment<6>(cb) += gb;
+            }
+            if (free_a && free_b) {
+                const Eigen::Matrix<double, 6, 6> ab = Ja.transpose() * Jb;
+                A.block<6, 6>(ca, cb) += ab;
+                A.block<6, 6>(cb, ca) += ab.transpose();
+            }
+        }
+    }
+    if (!hints)
+        return;
+    // Hint rows by differences: used once per design state, so speed does not matter here.
+    for (const BranchHint& hint : *hints) {
+        const double f = hint_residual(hint, q);
+        Eigen::VectorXd row(n);
+        for (int col = 0; col < n; ++col) {
+            Configuration moved = q;
+            Eigen::VectorXd d = Eigen::VectorXd::Zero(n);
+            d[col] = 1e-7 * size_;
+            apply_step(c, moved, d);
+            row[col] = (hint_residual(hint, moved) - f) / d[col];
+        }
+        A += row * row.transpose();
+        g += row * f;
+    }
+}
+
 bool FoldSolver::least_squares(int c, Configuration& q, const std::vector<BranchHint>* hints,
                                int max_iterations, bool to_round_off) const
 {
@@ -143,76 +242,44 @@ bool FoldSolver::least_squares(int c, Configuration& q, const std::vector<Branch
     const int n = int(6 * bodies.size());
     if (n == 0)
         return true;
-    const int nh = hints ? int(hints->size()) : 0;
-    const double weight = 0.1 * size_;
-    const double target = 0.02;  // sine of a small opening on the intended side
-
-    auto apply = [&](Configuration& conf, const Eigen::VectorXd& d) {
-        for (size_t k = 0; k < bodies.size(); ++k) {
-            BodyPose& p = conf[bodies[k]];
-            p.rotation = rotation_exp(d.segment<3>(6 * k) / size_) * p.rotation;
-            p.position += d.segment<3>(6 * k + 3);
-        }
-    };
-    auto system = [&](const Configuration& conf, Eigen::VectorXd& r, Eigen::MatrixXd& J) {
-        constraint_system(c, conf, r, J);
-        if (nh == 0)
-            return;
-        const int m = int(r.size());
-        r.conservativeResize(m + nh);
-        J.conservativeResize(m + nh, n);
-        for (int k = 0; k < nh; ++k) {
-            const BranchHint& hint = (*hints)[k];
-            const double f = fold_sine(hint, conf);
-            r[m + k] = weight * (hint.sign * f - target);
-            for (int col = 0; col < n; ++col) {  // few unknowns, one step: differences suffice
-                Configuration moved = conf;
-                Eigen::VectorXd d = Eigen::VectorXd::Zero(n);
-                d[col] = 1e-7 * size_;
-                apply(moved, d);
-                J(m + k, col) = weight * hint.sign * (fold_sine(hint, moved) - f) / d[col];
-            }
-        }
-    };
-
-    Eigen::VectorXd r;
-    Eigen::MatrixXd J;
-    system(q, r, J);
-    double cost = r.squaredNorm();
+    Eigen::MatrixXd A, M;
+    Eigen::VectorXd g;
+    std::vector<BodyPose> saved(bodies.size());
+    double worst = 0.0;
+    double current = cost(c, q, hints, &worst);
     double lambda = 1e-6;
     for (int it = 0; it < max_iterations; ++it) {
-        if (nh == 0 && !to_round_off && r.cwiseAbs().maxCoeff() <= tolerance_)
+        if (!hints && !to_round_off && worst <= tolerance_)
             return true;
-        const Eigen::MatrixXd A = J.transpose() * J;
-        const Eigen::VectorXd g = J.transpose() * r;
+        linearize(c, q, hints, A, g);
         bool improved = false;
         while (lambda < 1e10) {
-            Eigen::MatrixXd M = A;
+            M = A;
             M.diagonal() += lambda * A.diagonal() + Eigen::VectorXd::Constant(n, 1e-14);
-            const Eigen::VectorXd d = -M.ldlt().solve(g);
-            Configuration trial = q;
-            apply(trial, d);
-            Eigen::VectorXd r2;
-            Eigen::MatrixXd J2;
-            system(trial, r2, J2);
-            const double cost2 = r2.squaredNorm();
-            if (cost2 < cost || (cost2 <= cost && cost2 == 0.0)) {
-                q = std::move(trial);
-                r = std::move(r2);
-                J = std::move(J2);
-                improved = cost - cost2 > 1e-30 * size_ * size_;
-                cost = cost2;
+            const Eigen::VectorXd d = -M.llt().solve(g);
+            // Try the step in place; only this component's bodies are saved for a rollback.
+            for (size_t k = 0; k < bodies.size(); ++k)
+                saved[k] = q[bodies[k]];
+            apply_step(c, q, d);
+            double worst2 = 0.0;
+            const double trial = cost(c, q, hints, &worst2);
+            if (trial < current || (trial == 0.0 && current == 0.0)) {
+                improved = current - trial > 1e-30 * size_ * size_;
+                current = trial;
+                worst = worst2;
                 lambda = std::max(lambda * 0.25, 1e-12);
                 break;
             }
+            for (size_t k = 0; k < bodies.size(); ++k)
+                q[bodies[k]] = saved[k];
             lambda *= 8.0;
         }
         if (!improved)
             break;
     }
-    if (nh > 0)
+    if (hints)
         return true;  // the hinted pass only positions the guess; the plain pass must converge
-    return residual(c, q) <= tolerance_;
+    return worst <= tolerance_;
 }
 
 bool FoldSolver::correct(int c, Configuration& q, const std::vector<BranchHint>& hints,
@@ -233,9 +300,10 @@ FoldState FoldSolver::state(double theta, const Configuration& q) const
         s.poses[i].rotation = q[b].rotation;
         s.poses[i].translation = q[b].position - q[b].rotation * graph_.center[b];
     }
-    for (const Hinge& h : scaffold_.hinges) {
-        const Pose& a = s.poses[scaffold_.patch_index(h.patch_a)];
-        const Pose& b = s.poses[scaffold_.patch_index(h.patch_b)];
+    for (size_t k = 0; k < scaffold_.hinges.size(); ++k) {
+        const Hinge& h = scaffold_.hinges[k];
+        const Pose& a = s.poses[hinge_patches_[k][0]];
+        const Pose& b = s.poses[hinge_patches_[k][1]];
         for (const Vec3& x : {h.from, h.to})
             s.hinge_residual = std::max(s.hinge_residual, (a.apply(x) - b.apply(x)).norm());
     }
@@ -265,7 +333,8 @@ Configuration FoldSolver::configuration(const FoldState& state) const
 
 ComponentTrack::ComponentTrack(const FoldSolver& solver, int component, double design_angle)
     : solver_(solver), component_(component), theta_(design_angle),
-      current_(solver.design_configuration()), step_(solver.options().max_step)
+      current_(solver.design_configuration()), previous_(current_), guess_(current_),
+      step_(solver.options().max_step)
 {
     solver.drive_base(theta_, current_);
 }
@@ -337,9 +406,12 @@ void ComponentTrack::take_limit_at_end()
 bool ComponentTrack::try_step(double next)
 {
     const double h = next - theta_;
-    Configuration guess = current_;
-    solver_.drive_base(next, guess);
     const auto& bodies = solver_.graph().components[component_];
+    // Only this component's bodies and the base matter: copy those, not the whole card.
+    Configuration& guess = guess_;
+    for (int b : bodies)
+        guess[b] = current_[b];
+    solver_.drive_base(next, guess);
     if (!at_design_ && previous_step_ != 0.0) {
         // Secant predictor along the branch already followed.
         const double s = h / previous_step_;
@@ -363,9 +435,9 @@ bool ComponentTrack::try_step(double next)
         for (const BranchHint& hint : hints)
             if (hint.sign * solver_.fold_sine(hint, guess) <= 0.0)
                 branch_ok_ = false;
-    previous_ = current_;
+    previous_.swap(current_);
+    current_.swap(guess_);
     previous_step_ = h;
-    current_ = std::move(guess);
     theta_ = next;
     at_design_ = false;
     return true;

@@ -2,6 +2,7 @@
 // Internal: rigid-body kinematics of a scaffold. Every free body has a pose x -> R (x - c) + p
 // (c its design-state centre); hinges are point-coincidence constraints at both hinge ends; the
 // base bodies are driven by the fold angle. Solved per component by damped Gauss-Newton.
+#include <array>
 #include <vector>
 
 #include "body_graph.hpp"
@@ -57,11 +58,23 @@ public:
     /// (rotation columns scaled by the model size so every column is in mm).
     Eigen::MatrixXd jacobian(int c, const Configuration& q) const;
 
+    /// Normal equations JᵀJ and Jᵀr of component c's least-squares problem (hinge ends, plus
+    /// hints when given), with rotation columns scaled by the model size.
+    void linearize(int c, const Configuration& q, const std::vector<BranchHint>* hints,
+                   Eigen::MatrixXd& A, Eigen::VectorXd& g) const;
+
 private:
     void constraint_system(int c, const Configuration& q, Eigen::VectorXd& r,
                            Eigen::MatrixXd& J) const;
     bool least_squares(int c, Configuration& q, const std::vector<BranchHint>* hints,
                        int max_iterations, bool to_round_off) const;
+    void apply_step(int c, Configuration& q, const Eigen::VectorXd& d) const;
+    double hint_residual(const BranchHint& hint, const Configuration& q) const;
+    /// Sum of squared residuals (hinge ends, and hints when given); `worst` gets the largest
+    /// hinge coordinate mismatch.
+    double cost(int c, const Configuration& q, const std::vector<BranchHint>* hints,
+                double* worst) const;
+
 
     const Scaffold& scaffold_;
     const BodyGraph& graph_;
@@ -70,7 +83,8 @@ private:
     double tolerance_ = 1e-11;
     std::vector<std::vector<BranchHint>> hints_;
     std::vector<std::vector<int>> undirected_;
-    std::vector<int> column_of_body_;  ///< first unknown of each free body within its component
+    std::vector<int> column_of_body_;
+    std::vector<std::array<int, 2>> hinge_patches_;  ///< patch indices of each hinge  ///< first unknown of each free body within its component
 };
 
 /// Continuation of one component from the design state toward a sequence of angles.
@@ -96,6 +110,7 @@ private:
     double theta_;
     Configuration current_;
     Configuration previous_;
+    Configuration guess_;
     double previous_step_ = 0.0;
     double step_;
     bool at_design_ = true;
