@@ -196,7 +196,7 @@ Result<Scaffold> scaffold_from_json(const std::string& text)
     json j;
     try {
         j = json::parse(text);
-    } catch (const json::parse_error& e) {
+    } catch (const json::exception& e) {  // syntax errors, and numbers beyond double range
         r.fail("bad_json", std::string("not valid JSON: ") + e.what(), "(file)");
         return r;
     }

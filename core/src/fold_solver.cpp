@@ -347,7 +347,8 @@ bool ComponentTrack::advance_to(double target)
         const double next = std::abs(gap) <= step_ ? target : theta_ + std::copysign(step_, gap);
         if (try_step(next)) {
             step_ = std::min(step_ * 1.5, options.max_step);
-            if (theta_ == target && (target == 0.0 || target == M_PI) && singular())
+            if (theta_ == target && (target == 0.0 || target == M_PI) &&
+                solver_.singular(component_, current_))
                 take_limit_at_end();
         } else {
             step_ *= 0.5;
@@ -360,9 +361,9 @@ bool ComponentTrack::advance_to(double target)
     return true;
 }
 
-bool ComponentTrack::singular() const
+bool FoldSolver::singular(int c, const Configuration& q) const
 {
-    const Eigen::MatrixXd J = solver_.jacobian(component_, current_);
+    const Eigen::MatrixXd J = jacobian(c, q);
     if (J.cols() == 0)
         return false;
     const Eigen::VectorXd s = Eigen::JacobiSVD<Eigen::MatrixXd>(J).singularValues();

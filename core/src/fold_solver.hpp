@@ -57,6 +57,8 @@ public:
     /// Jacobian of component c's hinge constraints with respect to its bodies' motions
     /// (rotation columns scaled by the model size so every column is in mm).
     Eigen::MatrixXd jacobian(int c, const Configuration& q) const;
+    /// The component's constraints lose rank at q (a branch point or a free motion).
+    bool singular(int c, const Configuration& q) const;
 
     /// Normal equations JᵀJ and Jᵀr of component c's least-squares problem (hinge ends, plus
     /// hints when given), with rotation columns scaled by the model size.
@@ -103,7 +105,6 @@ private:
     /// At a closed or fully open end where the hinges line up the constraints are tangent and
     /// pin the pose only to the square root of round-off; take the branch's limit instead.
     void take_limit_at_end();
-    bool singular() const;
 
     const FoldSolver& solver_;
     int component_;

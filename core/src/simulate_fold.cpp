@@ -116,14 +116,18 @@ Result<FoldSweep> simulate_fold(const Scaffold& input, const std::vector<double>
                 result.warn("branch_not_followed",
                             "a flat fold left the design state against its fold direction",
                             patch_list(s, g, int(c)));
-            if (!solver.undirected_flat_hinges(c).empty()) {
-                std::ostringstream m;
-                m << "hinge " << s.hinges[solver.undirected_flat_hinges(c)[0]].id
-                  << " is flat at the design state and has no fold direction; set \"fold\" to "
-                     "valley or mountain to choose how it pops";
-                result.warn("undirected_flat_fold", m.str(), patch_list(s, g, int(c)));
-            }
         }
+    }
+    // A flat fold without a direction matters only where the design state is a branch point.
+    const Configuration design = solver.design_configuration();
+    for (size_t c = 0; c < g.components.size(); ++c) {
+        if (solver.undirected_flat_hinges(c).empty() || !solver.singular(int(c), design))
+            continue;
+        std::ostringstream m;
+        m << "hinge " << s.hinges[solver.undirected_flat_hinges(c)[0]].id
+          << " is flat at the design state, where the motion can branch, and has no fold "
+             "direction; set \"fold\" to valley or mountain to choose how it pops";
+        result.warn("undirected_flat_fold", m.str(), patch_list(s, g, int(c)));
     }
     sweep.complete = std::all_of(reached.begin(), reached.end(), [](bool r) { return r; });
     for (size_t i = 0; i < angles.size(); ++i) {
