@@ -242,8 +242,10 @@ bool FoldSolver::least_squares(int c, Configuration& q, const std::vector<Branch
     const int n = int(6 * bodies.size());
     if (n == 0)
         return true;
+    // Buffers reused across iterations: a sweep runs this thousands of times.
     Eigen::MatrixXd A, M;
-    Eigen::VectorXd g;
+    Eigen::VectorXd g, d(n);
+    Eigen::LLT<Eigen::MatrixXd> llt(n);
     std::vector<BodyPose> saved(bodies.size());
     double worst = 0.0;
     double current = cost(c, q, hints, &worst);
@@ -255,8 +257,10 @@ bool FoldSolver::least_squares(int c, Configuration& q, const std::vector<Branch
         bool improved = false;
         while (lambda < 1e10) {
             M = A;
-            M.diagonal() += lambda * A.diagonal() + Eigen::VectorXd::Constant(n, 1e-14);
-            const Eigen::VectorXd d = -M.llt().solve(g);
+            M.diagonal().array() += lambda * A.diagonal().array() + 1e-14;
+            llt.compute(M);
+            d.noalias() = llt.solve(g);
+            d = -d;
             // Try the step in place; only this component's bodies are saved for a rollback.
             for (size_t k = 0; k < bodies.size(); ++k)
                 saved[k] = q[bodies[k]];
