@@ -140,14 +140,29 @@ bool triangles_meet(const PatchMesh& a, const std::vector<Vec3>& pa, const Patch
     return false;
 }
 
-// How far a vertex of one patch comes inside `clearance` of the inside of patch b.
-double proximity_depth(const std::vector<Vec3>& va, const Patch& pb,
-                       const Pose& pose_b, const std::vector<double>& side, double clearance)
+// Distance from x to the segment ab (3D).
+double distance_to_segment_3d(const Vec3& x, const Vec3& a, const Vec3& b)
+{
+    const Vec3 ab = b - a;
+    const double t = std::clamp((x - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+    return (a + t * ab - x).norm();
+}
+
+// How far a vertex of patch a comes inside `clearance` of the inside of patch b. Vertices on a
+// hinge the two patches share touch by design and are left out.
+double proximity_depth(const PatchMesh& mesh_a, const std::vector<Vec3>& va, const Patch& pb,
+                       const Pose& pose_b, const std::vector<double>& side, double clearance,
+                       const std::vector<const Hinge*>& shared, double tolerance)
 {
     double deepest = 0.0;
     const Mat3 back = pose_b.rotation.transpose();
     for (size_t k = 0; k < va.size(); ++k) {
         if (std::abs(side[k]) >= clearance)
+            continue;
+        const bool on_hinge = std::any_of(shared.begin(), shared.end(), [&](const Hinge* h) {
+            return distance_to_segment_3d(mesh_a.vertices[k], h->from, h->to) <= tolerance;
+        });
+        if (on_hinge)
             continue;
         const Vec2 q = pb.to_local(back * (va[k] - pose_b.translation));
         if (point_in_polygon_or_near(pb.outer_local(), q, -clearance))
@@ -237,11 +252,16 @@ double crossing_depth(const std::vector<PatchMesh>& meshes, const Scaffold& scaf
     if (clearance > 0.0) {
         const Vec3 ni = state.poses[i].rotation * scaffold.patches[i].normal;
         const Vec3 nj = state.poses[j].rotation * scaffold.patches[j].normal;
+        std::vector<const Hinge*> shared;
+        for (const Hinge& h : scaffold.hinges)
+            if ((h.patch_a == scaffold.patches[i].id && h.patch_b == scaffold.patches[j].id) ||
+                (h.patch_a == scaffold.patches[j].id && h.patch_b == scaffold.patches[i].id))
+                shared.push_back(&h);
         if (ni.cross(nj).norm() > 0.02)  // transversal approach only: stacking is allowed
-            near = std::max(proximity_depth(vi, scaffold.patches[j],
-                                            state.poses[j], di, clearance),
-                            proximity_depth(vj, scaffold.patches[i],
-                                            state.poses[i], dj, clearance));
+            near = std::max(proximity_depth(meshes[i], vi, scaffold.patches[j], state.poses[j],
+                                            di, clearance, shared, tolerance),
+                            proximity_depth(meshes[j], vj, scaffold.patches[i], state.poses[i],
+                                            dj, clearance, shared, tolerance));
     }
     const double depth = std::min(straddle(di), straddle(dj));
     if (depth <= tolerance)

@@ -127,3 +127,27 @@ TEST(FindCrossings, ReportsDepthOfTheWalls)
     EXPECT_GT(crossings[0].depth, 0.0);
     EXPECT_LT(crossings[0].depth, 2 * past + 1e-9);
 }
+
+TEST(CheckValidity, ClearanceIgnoresSharedHingesButCatchesNearMisses)
+{
+    ValidityOptions o;
+    o.clearance = 0.5;
+    EXPECT_TRUE(check_validity(fixtures::valid_tent_card(), o).intersection_free);
+    // A short wall on the ground runs into the face of a tall wall on the backdrop; with 5 mm
+    // clearance the verdict comes earlier in the closing, while the gap is still open.
+    Scaffold s = fixtures::make_card(200, 140);
+    const int g = fixtures::add_quad(s, {50, 60, 0}, {50, 120, 0}, {50, 120, 15}, {50, 60, 15});
+    const int b = fixtures::add_quad(s, {-50, 40, 0}, {-50, 40, 40}, {-50, 140, 40}, {-50, 140, 0});
+    s.glue = {{s.ground, g}, {s.backdrop, b}};
+    auto onset = [&](double clearance) {
+        o.clearance = clearance;
+        for (const Crossing& c : check_validity(s, o).crossings)
+            if (c.patch_a == g && c.patch_b == b)
+                return c.angle * 180 / M_PI;
+        return -1.0;
+    };
+    const double touching = onset(0.0);
+    const double near_miss = onset(5.0);
+    EXPECT_GT(touching, 0.0);
+    EXPECT_GT(near_miss, touching + 1.0);
+}

@@ -1,0 +1,31 @@
+# PopUp workbench, GUI side. FreeCAD exec's this file (no reliable __file__, names defined here are
+# not visible inside methods), so paths come from the `popupwb` package and imports stay local.
+import FreeCADGui
+
+
+class PopUpWorkbench(FreeCADGui.Workbench):
+    MenuText = "PopUp"
+    ToolTip = "Paper pop-up design: load designs, fold them, check their validity"
+
+    def __init__(self):
+        import popupwb
+
+        self.__class__.Icon = popupwb.icon_path("PopUp_Workbench")
+
+    def Initialize(self):
+        from popupwb.commands import COMMANDS
+
+        self.appendToolbar("PopUp", COMMANDS)
+        self.appendMenu("PopUp", COMMANDS)
+
+    def Activated(self):
+        return None
+
+    def Deactivated(self):
+        return None
+
+    def GetClassName(self):
+        return "Gui::PythonWorkbench"
+
+
+FreeCADGui.addWorkbench(PopUpWorkbench())

@@ -1,0 +1,199 @@
+"""Scaffold: a pop-up design file shown at a fold angle, as an exact compound of planar faces.
+
+The feature only translates: it reads its properties, asks popupcore for the pose of every patch
+at FoldAngle and for the B-rep of the posed patches, and hands the BREP text to Part. The module
+path, the class name and the property names are stored in .FCStd files: never rename them.
+"""
+
+import collections
+import hashlib
+import math
+import os
+import time
+
+import FreeCAD
+import Part
+
+from popupwb.core import popupcore
+
+TYPE = "PopUp::Scaffold"
+VERSION = "1"
+
+# Parsed designs by the SHA-256 of their text. Module-level, never in proxy state: the proxy must
+# stay JSON-serialisable and a reopened document simply parses again. Keyed by content rather than
+# path so that an edited file is re-read and identical designs share one parse.
+_DESIGN_CACHE = collections.OrderedDict()
+_DESIGN_CACHE_SIZE = 16
+
+
+def load_design(path):
+    """The popupcore.Scaffold of the design file at `path`, parsed once per distinct content.
+
+    Raises OSError when the file cannot be read and popupcore.DesignError (a ValueError) when it is
+    not a valid design (RuntimeError for a parser failure it missed; scaffold_of() folds both).
+    """
+    with open(path, "rb") as stream:
+        data = stream.read()
+    key = hashlib.sha256(data).hexdigest()
+    scaffold = _DESIGN_CACHE.get(key)
+    if scaffold is None:
+        try:
+            text = data.decode("utf-8")
+        except UnicodeDecodeError as error:
+            raise popupcore.DesignError(f"file: not UTF-8 text ({error})") from error
+        scaffold = popupcore.scaffold_from_json(text)
+        _DESIGN_CACHE[key] = scaffold
+        while len(_DESIGN_CACHE) > _DESIGN_CACHE_SIZE:
+            _DESIGN_CACHE.popitem(last=False)
+    else:
+        _DESIGN_CACHE.move_to_end(key)
+    return scaffold
+
+
+def scaffold_of(obj):
+    """The parsed design of a Scaffold object; errors name the object and its DesignFile."""
+    path = obj.DesignFile
+    if not path:
+        raise ValueError(f"{obj.Label}: DesignFile is empty, choose a pop-up design (*.json)")
+    try:
+        return load_design(path)
+    except OSError as error:
+        raise ValueError(
+            f"{obj.Label}: DesignFile '{path}' cannot be read: {error.strerror or error}"
+        ) from error
+    except (ValueError, RuntimeError) as error:  # DesignError, or a parser failure it missed
+        raise ValueError(
+            f"{obj.Label}: DesignFile '{path}' is not a valid design: {error}"
+        ) from error
+
+
+def is_scaffold(obj):
+    """True for document objects driven by ScaffoldFeature."""
+    return getattr(getattr(obj, "Proxy", None), "TYPE", None) == TYPE
+
+
+class ScaffoldFeature:
+    """Proxy of a Part::FeaturePython showing a design file at a fold angle."""
+
+    TYPE = TYPE
+
+    def __init__(self, obj):
+        obj.Proxy = self
+        self.add_properties(obj)
+
+    def add_properties(self, obj):
+        """Adds every property that is missing, so files written by older versions upgrade."""
+        have = set(obj.PropertiesList)
+
+        def add(kind, name, doc, value=None, mode=0, output=False):
+            if name in have:
+                return
+            obj.addProperty(kind, name, "PopUp", doc)
+            if value is not None:
+                setattr(obj, name, value)
+            if mode:
+                obj.setEditorMode(name, mode)
+            if output:
+                # Written by commands, not by the user: changing it must not trigger a recompute.
+                obj.setPropertyStatus(name, "Output")
+
+        # PropertyFileIncluded rather than PropertyFile: the design is copied into the .FCStd, so a
+        # saved document is self-contained and recomputes anywhere (checked by the save/reopen
+        # test). The price: editing the original file later needs DesignFile to be set again.
+        add(
+            "App::PropertyFileIncluded",
+            "DesignFile",
+            "Pop-up design file (JSON, docs/DESIGN_FORMAT.md), stored inside the document",
+        )
+        add("App::PropertyAngle", "FoldAngle", "Opening angle of the card, 0° to 180°", 180.0)
+        add(
+            "App::PropertyLength",
+            "PaperThickness",
+            "Paper thickness, used when Thickened (the design file's value by default)",
+            0.2,
+        )
+        add("App::PropertyBool", "Thickened", "Show the patches as solids of PaperThickness", False)
+        add(
+            "App::PropertyStringList",
+            "Diagnostics",
+            "Findings of the last validity check (code: message [subject])",
+            mode=1,
+            output=True,
+        )
+        add(
+            "App::PropertyBool",
+            "Valid",
+            "True when the last validity check passed; reset when DesignFile changes",
+            False,
+            mode=1,
+            output=True,
+        )
+        add("App::PropertyString", "Version", "Version of this object's properties", VERSION, 1)
+
+    def onChanged(self, obj, prop):
+        # A new design invalidates the verdict of the old one. Not while a file is restored: the
+        # stored verdict belongs to the stored design (and FileIncluded is set after the others).
+        restoring = "Restore" in obj.State or obj.Document.Restoring
+        if prop == "DesignFile" and not restoring and hasattr(obj, "Valid"):
+            obj.Valid = False
+            obj.Diagnostics = []
+
+    def onDocumentRestored(self, obj):
+        self.add_properties(obj)
+
+    def execute(self, obj):
+        start = time.perf_counter()
+        angle = obj.FoldAngle.Value
+        if not 0.0 <= angle <= 180.0:
+            raise ValueError(f"{obj.Label}: FoldAngle = {angle:g}°, must be within 0° and 180°")
+        thickness = obj.PaperThickness.Value if obj.Thickened else 0.0
+        if obj.Thickened and thickness <= 0.0:
+            raise ValueError(
+                f"{obj.Label}: PaperThickness = {thickness:g} mm, must be > 0 when Thickened"
+            )
+        scaffold = scaffold_of(obj)
+
+        sweep = popupcore.simulate_fold(scaffold, [math.radians(angle)])
+        if not sweep.complete or not sweep.states:
+            findings = "; ".join(f"{d.subject}: {d.message}" for d in sweep.diagnostics)
+            if sweep.locked_at >= 0.0:
+                reason = f"the design locks at {math.degrees(sweep.locked_at):.2f}°"
+            else:
+                reason = "the simulation did not reach it"
+            raise ValueError(
+                f"{obj.Label}: FoldAngle = {angle:g}° cannot be reached, {reason}"
+                + (f" ({findings})" if findings else "")
+            )
+        for d in sweep.diagnostics:
+            FreeCAD.Console.PrintLog(f"{obj.Label}: {d.code}: {d.message} [{d.subject}]\n")
+
+        try:
+            brep = popupcore.patches_to_brep(scaffold, sweep.states[0], thickness)
+        except RuntimeError as error:
+            raise RuntimeError(
+                f"{obj.Label}: building the patches at FoldAngle = {angle:g}° failed: {error}"
+            ) from error
+        shape = Part.Shape()
+        shape.importBrepFromString(brep, False)  # returns None, fills `shape`
+        # Assigning Shape resets Placement to the shape's own: keep the user's placement.
+        placement = obj.Placement
+        obj.Shape = shape
+        obj.Placement = placement
+        FreeCAD.Console.PrintLog(
+            f"{obj.Label}: {len(scaffold.patches)} patches at {angle:g}° in "
+            f"{1000.0 * (time.perf_counter() - start):.1f} ms\n"
+        )
+
+    # Proxy state: nothing. Everything lives in properties; both protocols for FreeCAD 0.20
+    # (__getstate__/__setstate__) and later versions (dumps/loads).
+    def __getstate__(self):
+        return None
+
+    def __setstate__(self, state):
+        return None
+
+    def dumps(self):
+        return self.__getstate__()
+
+    def loads(self, state):
+        return self.__setstate__(state)

@@ -1,0 +1,89 @@
+"""Validity check of Scaffold objects, and the text report shared with the command-line tool.
+
+format_report() and format_diagnostic() need neither FreeCAD nor popupcore (plain Python can use
+them); run_check() imports both when called.
+"""
+
+import math
+
+_VERDICTS = (
+    ("foldable", "foldable"),
+    ("stable", "stable"),
+    ("intersection_free", "intersection-free"),
+    ("enclosed", "enclosed"),
+)
+
+
+def format_diagnostic(diagnostic):
+    """A diagnostic dict as one line, "code: message [subject]" (no brackets without subject)."""
+    text = f"{diagnostic.get('code', '')}: {diagnostic.get('message', '')}"
+    subject = diagnostic.get("subject")
+    return f"{text} [{subject}]" if subject else text
+
+
+def format_report(report):
+    """Multi-line human text for a ValidityReport.to_dict() dict, starting with VALID or INVALID.
+
+    Keys missing from `report` are left out of the text, so partial reports (a design that does not
+    load) format too.
+    """
+    valid = bool(report.get("valid", False))
+    verdicts = [
+        label if report[key] else f"NOT {label}" for key, label in _VERDICTS if key in report
+    ]
+    lines = [("VALID" if valid else "INVALID") + (f": {', '.join(verdicts)}" if verdicts else "")]
+    # ValidityReport.to_dict() gives locked_at_deg (None when the motion is free); a raw
+    # "locked_at" is in radians, -1 when free.
+    locked_deg = report.get("locked_at_deg")
+    if locked_deg is None and (report.get("locked_at") or -1.0) >= 0.0:
+        locked_deg = math.degrees(report["locked_at"])
+    if locked_deg is not None:
+        lines.append(f"  locked at           {locked_deg:.2f}°")
+    numbers = (
+        ("max_hinge_residual", "max hinge residual", " mm"),
+        ("max_edge_strain", "max edge strain", ""),
+        ("flatness_at_zero", "flatness at 0°", " mm"),
+        ("model_size", "model size", " mm"),
+    )
+    for key, label, unit in numbers:
+        if key in report:
+            lines.append(f"  {label:<19} {report[key]:.3g}{unit}")
+    diagnostics = report.get("diagnostics") or []
+    if diagnostics:
+        lines.append(f"  {len(diagnostics)} finding(s):")
+        lines.extend(f"    {format_diagnostic(d)}" for d in diagnostics)
+    return "\n".join(lines)
+
+
+def run_check(obj, samples=181, clearance=0.0):
+    """Checks a Scaffold object's design with popupcore.check_validity.
+
+    Writes obj.Valid and obj.Diagnostics, prints the report to the report view and returns the
+    report dict (ValidityReport.to_dict() plus "object": obj.Name). A design that does not load
+    gives an INVALID report with one "design_error" finding instead of an exception.
+    """
+    import FreeCAD
+
+    from popupwb.core import popupcore
+    from popupwb.features.scaffold_feature import scaffold_of
+
+    try:
+        report = popupcore.check_validity(
+            scaffold_of(obj), samples=samples, clearance=clearance
+        ).to_dict()
+    except ValueError as error:
+        report = {
+            "valid": False,
+            "diagnostics": [
+                {"code": "design_error", "message": str(error), "subject": "DesignFile"}
+            ],
+        }
+    report["object"] = obj.Name
+    obj.Diagnostics = [format_diagnostic(d) for d in report["diagnostics"]]
+    obj.Valid = bool(report["valid"])
+
+    summary = [line for line in format_report(report).splitlines() if not line.startswith("    ")]
+    FreeCAD.Console.PrintMessage(f"{obj.Label}: " + "\n".join(summary) + "\n")
+    for line in obj.Diagnostics:
+        FreeCAD.Console.PrintWarning(f"{obj.Label}: {line}\n")
+    return report

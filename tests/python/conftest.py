@@ -1,0 +1,113 @@
+"""Fixtures shared by the Python tests: FreeCAD headless, documents, a sandbox Mod folder.
+
+ctest runs pytest with this environment (tests/CMakeLists.txt), and so can you, from the source tree:
+
+    B=$PWD/build
+    PYTHONPATH=$B/python:$PWD/Workbench:/usr/lib/freecad-python3/lib \
+    POPUP_SOURCE_DIR=$PWD POPUP_BUILD_DIR=$B \
+    FREECAD_USER_HOME=$B/sandbox/home HOME=$B/sandbox/home \
+    /usr/bin/python3 -m pytest tests/python
+
+Variables left unset get those values here (HOME excepted), so plain
+`/usr/bin/python3 -m pytest tests/python` works too. Always /usr/bin/python3: FreeCAD's interpreter.
+"""
+
+import json
+import os
+import subprocess
+import sys
+import uuid
+
+import pytest
+
+FREECAD_LIB = "/usr/lib/freecad-python3/lib"
+SOURCE_DIR = os.environ.setdefault(
+    "POPUP_SOURCE_DIR", os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+)
+BUILD_DIR = os.environ.setdefault("POPUP_BUILD_DIR", os.path.join(SOURCE_DIR, "build"))
+USER_HOME = os.environ.setdefault("FREECAD_USER_HOME", os.path.join(BUILD_DIR, "sandbox", "home"))
+WORKBENCH_DIR = os.path.join(SOURCE_DIR, "Workbench")
+
+
+def _ensure_path(directory):
+    if directory not in sys.path:
+        sys.path.append(directory)
+    parts = [p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep) if p]
+    if directory not in parts:
+        os.environ["PYTHONPATH"] = os.pathsep.join(parts + [directory])
+
+
+for _directory in (os.path.join(BUILD_DIR, "python"), WORKBENCH_DIR, FREECAD_LIB):
+    _ensure_path(_directory)
+
+
+def install_sandbox_mod(user_home=USER_HOME):
+    """<user_home>/Mod/PopUp -> <source>/Workbench. Debian's FreeCAD restores a proxy only when its
+    module lies in a Mod folder, so reopened files need this. Replaced atomically: ctest runs the
+    GUI smoke test, which does the same, in parallel."""
+    mod_dir = os.path.join(user_home, "Mod")
+    os.makedirs(mod_dir, exist_ok=True)
+    link = os.path.join(mod_dir, "PopUp")
+    if os.path.islink(link) and os.path.realpath(link) == os.path.realpath(WORKBENCH_DIR):
+        return link
+    temporary = f"{link}.{uuid.uuid4().hex}"
+    os.symlink(WORKBENCH_DIR, temporary)
+    os.replace(temporary, link)
+    return link
+
+
+@pytest.fixture(scope="session")
+def sandbox_mod():
+    """The sandbox Mod/PopUp symlink (path), created before FreeCAD is imported."""
+    return install_sandbox_mod()
+
+
+@pytest.fixture(scope="session")
+def freecad(sandbox_mod):
+    """The FreeCAD module, headless."""
+    import FreeCAD
+
+    return FreeCAD
+
+
+@pytest.fixture
+def doc(freecad):
+    """A new empty document, closed after the test."""
+    document = freecad.newDocument("PopUpTest")
+    yield document
+    freecad.closeDocument(document.Name)
+
+
+@pytest.fixture(scope="session")
+def data_dir():
+    return os.path.join(SOURCE_DIR, "tests", "data")
+
+
+@pytest.fixture(scope="session")
+def run_fresh_freecad(sandbox_mod):
+    """Runs a Python script in a fresh /usr/bin/python3 with FreeCAD, as a user would have it: the
+    workbench reached only through the sandbox Mod folder (Workbench/ removed from PYTHONPATH).
+    The script prints one JSON document on its last stdout line; that is returned."""
+
+    def run(script, timeout=300):
+        env = dict(os.environ)
+        env["PYTHONPATH"] = os.pathsep.join(
+            p
+            for p in env.get("PYTHONPATH", "").split(os.pathsep)
+            if p and os.path.realpath(p) != os.path.realpath(WORKBENCH_DIR)
+        )
+        prelude = f"import sys\nsys.path.append({FREECAD_LIB!r})\nimport FreeCAD\n"
+        process = subprocess.run(
+            ["/usr/bin/python3", "-c", prelude + script],
+            env=env,
+            capture_output=True,
+            text=True,
+            timeout=timeout,
+        )
+        assert process.returncode == 0, (
+            f"fresh FreeCAD process failed ({process.returncode}):\n"
+            f"{process.stdout}\n{process.stderr}"
+        )
+        return json.loads(process.stdout.strip().splitlines()[-1])
+
+    return run

@@ -1,0 +1,225 @@
+"""The `popup` command line (build/bin/popup, written by `make build`), run as a user would."""
+
+import json
+import os
+import shutil
+import subprocess
+import textwrap
+
+import pytest
+
+SOURCE_DIR = os.environ.get(
+    "POPUP_SOURCE_DIR", os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+)
+BUILD_DIR = os.environ.get("POPUP_BUILD_DIR", os.path.join(SOURCE_DIR, "build"))
+POPUP = os.path.join(BUILD_DIR, "bin", "popup")
+DATA_DIR = os.path.join(SOURCE_DIR, "tests", "data")
+FREECAD_LIB = "/usr/lib/freecad-python3/lib"
+VERDICTS = ("foldable", "stable", "intersection_free", "enclosed")
+
+# Invalid test designs and the property each one fails.
+INVALID = {
+    "broken_tent.json": "foldable",
+    "unstable_five_bar.json": "stable",
+    "colliding_walls.json": "intersection_free",
+    "sticking_out_tent.json": "enclosed",
+}
+
+
+def data(name):
+    path = os.path.join(DATA_DIR, name)
+    assert os.path.isfile(path), f"test design {path} is missing"
+    return path
+
+
+@pytest.fixture(scope="module")
+def user_home(tmp_path_factory):
+    """An empty FreeCAD user home: the CLI must work without the workbench installed."""
+    return str(tmp_path_factory.mktemp("home"))
+
+
+def popup(*args, home=None):
+    assert os.access(POPUP, os.X_OK), f"{POPUP} missing: run `make build`"
+    env = dict(os.environ)
+    if home:
+        env.update(FREECAD_USER_HOME=home, HOME=home)
+    return subprocess.run(
+        [POPUP, *args], capture_output=True, text=True, timeout=300, env=env, cwd=SOURCE_DIR
+    )
+
+
+def assert_clean_error(proc, *fragments):
+    """Exit 2, one line on stderr containing every fragment, no traceback anywhere."""
+    assert proc.returncode == 2, (proc.returncode, proc.stdout, proc.stderr)
+    assert "Traceback" not in proc.stderr + proc.stdout
+    lines = proc.stderr.strip().splitlines()
+    assert len(lines) == 1, proc.stderr
+    for fragment in fragments:
+        assert fragment in lines[0], (fragment, lines[0])
+
+
+def words(text):
+    return text.lower().replace("-", " ").replace("_", " ")
+
+
+def test_version():
+    proc = popup("--version")
+    assert proc.returncode == 0
+    assert proc.stdout.strip() == "popup 0.1.0"
+
+
+def test_valid_design():
+    proc = popup("check", data("tent_fold.json"))
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.startswith("VALID")
+    assert "Traceback" not in proc.stderr
+
+
+def test_json_report():
+    proc = popup("check", data("tent_fold.json"), "--json", "--samples", "37")
+    assert proc.returncode == 0, proc.stderr
+    report = json.loads(proc.stdout)  # exactly one JSON document on stdout
+    assert isinstance(report, dict)
+    for key in ("valid", *VERDICTS):
+        assert report[key] is True, key
+    for key in ("max_hinge_residual", "max_edge_strain", "flatness_at_zero", "model_size"):
+        assert isinstance(report[key], float), key
+    assert report["max_hinge_residual"] <= 1e-9 * report["model_size"]
+    assert report["samples"] == 37
+    assert report["file"] == data("tent_fold.json")
+    assert isinstance(report["diagnostics"], list)
+    for d in report["diagnostics"]:
+        assert set(d) >= {"code", "message", "subject"}
+
+
+@pytest.mark.parametrize("name", sorted(INVALID))
+def test_invalid_design_names_the_failing_property(name):
+    failing = INVALID[name]
+    proc = popup("check", data(name))
+    assert proc.returncode == 1, (proc.stdout, proc.stderr)
+    assert proc.stdout.startswith("INVALID")
+    assert f"not {words(failing)}" in words(proc.stdout)
+    assert "Traceback" not in proc.stderr
+
+    proc = popup("check", data(name), "--json")
+    assert proc.returncode == 1
+    report = json.loads(proc.stdout)
+    assert report["valid"] is False and report[failing] is False
+    assert report["diagnostics"], "an invalid design comes with findings"
+
+
+def test_missing_file(tmp_path):
+    path = str(tmp_path / "no_such_design.json")
+    assert_clean_error(popup("check", path), path, "no such file")
+
+
+def test_garbage_json(tmp_path):
+    path = tmp_path / "garbage.json"
+    path.write_text("{ this is not JSON ]")
+    assert_clean_error(popup("check", str(path)), str(path), "JSON")
+
+
+def test_inconsistent_design(tmp_path):
+    with open(data("tent_fold.json"), encoding="utf-8") as f:
+        design = json.load(f)
+    del design["patches"][0]["outline"]
+    path = tmp_path / "no_outline.json"
+    path.write_text(json.dumps(design))
+    assert_clean_error(popup("check", str(path), "--json"), str(path), "patches[0].outline")
+
+
+@pytest.mark.parametrize(
+    "options, fragment",
+    [
+        (["--samples", "1"], "--samples"),
+        (["--samples", "many"], "--samples"),
+        (["--clearance", "-1"], "--clearance"),
+        (["--colour", "red"], "--colour"),
+    ],
+)
+def test_bad_option(options, fragment):
+    assert_clean_error(popup("check", data("tent_fold.json"), *options), fragment)
+
+
+def test_no_command():
+    proc = popup()
+    assert proc.returncode == 2
+    assert "Traceback" not in proc.stderr
+
+
+# --- FreeCAD documents ------------------------------------------------------------------------
+
+MAKE_DOCUMENTS = textwrap.dedent(
+    """
+    import sys
+    import FreeCAD
+    from popupwb.make import make_scaffold
+
+    valid, invalid, out = sys.argv[1:4]
+    for name, design in (("valid", valid), ("invalid", invalid)):
+        doc = FreeCAD.newDocument(name)
+        doc.addObject("Part::Box", "Table")  # not a scaffold: the CLI must skip it
+        make_scaffold(doc, design, fold_angle=90.0, name="Card")
+        doc.recompute()
+        doc.saveAs(f"{out}/{name}.FCStd")
+        FreeCAD.closeDocument(doc.Name)
+    doc = FreeCAD.newDocument("plain")
+    doc.addObject("Part::Box", "Box")
+    doc.recompute()
+    doc.saveAs(f"{out}/plain.FCStd")
+    """
+)
+
+
+@pytest.fixture(scope="module")
+def documents(tmp_path_factory, user_home):
+    """valid.FCStd, invalid.FCStd (one Scaffold each) and plain.FCStd (no Scaffold)."""
+    out = tmp_path_factory.mktemp("fcstd")
+    designs = []
+    for name in ("tent_fold.json", "broken_tent.json"):
+        shutil.copy(data(name), out / name)
+        designs.append(str(out / name))
+    env = dict(os.environ)
+    env["PYTHONPATH"] = os.pathsep.join(
+        [os.path.join(BUILD_DIR, "python"), os.path.join(SOURCE_DIR, "Workbench"), FREECAD_LIB]
+    )
+    env.update(FREECAD_USER_HOME=user_home, HOME=user_home)
+    proc = subprocess.run(
+        ["/usr/bin/python3", "-c", MAKE_DOCUMENTS, *designs, str(out)],
+        capture_output=True,
+        text=True,
+        timeout=300,
+        env=env,
+    )
+    assert proc.returncode == 0, proc.stderr
+    return out
+
+
+def test_check_fcstd(documents, user_home):
+    proc = popup("check", str(documents / "valid.FCStd"), home=user_home)
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.startswith("VALID")
+
+    proc = popup("check", str(documents / "valid.FCStd"), "--json", home=user_home)
+    assert proc.returncode == 0, proc.stderr
+    report = json.loads(proc.stdout)
+    assert report["valid"] is True
+    assert report["object"] == "Card"
+
+
+def test_check_fcstd_with_invalid_design(documents, user_home):
+    proc = popup("check", str(documents / "invalid.FCStd"), "--json", home=user_home)
+    assert proc.returncode == 1, proc.stderr
+    report = json.loads(proc.stdout)
+    assert report["valid"] is False and report["foldable"] is False
+
+
+def test_check_fcstd_without_scaffold(documents, user_home):
+    path = str(documents / "plain.FCStd")
+    assert_clean_error(popup("check", path, home=user_home), path, "no PopUp Scaffold")
+
+
+def test_check_broken_fcstd(tmp_path, user_home):
+    path = tmp_path / "broken.FCStd"
+    path.write_bytes(b"this is not a zip archive")
+    assert_clean_error(popup("check", str(path), home=user_home), str(path))
