@@ -108,7 +108,7 @@ void raise_native(const std::string& kind, const std::string& message)
                                 "', must be 'std', 'invalid_argument', 'occt' or 'cgal'");
 }
 
-}  // namespace
+} // namespace
 
 PYBIND11_MODULE(popupcore, m)
 {
@@ -130,9 +130,9 @@ PYBIND11_MODULE(popupcore, m)
             PyErr_SetString(design_error, e.what());
         } catch (const Standard_Failure& e) {
             const char* msg = e.GetMessageString();
-            PyErr_SetString(occt_error, (std::string(e.DynamicType()->Name()) + ": " +
-                                         (msg ? msg : ""))
-                                            .c_str());
+            PyErr_SetString(
+                occt_error,
+                (std::string(e.DynamicType()->Name()) + ": " + (msg ? msg : "")).c_str());
         } catch (const CGAL::Failure_exception& e) {
             PyErr_SetString(cgal_error, e.what());
         }
@@ -152,7 +152,8 @@ PYBIND11_MODULE(popupcore, m)
     py::class_<Patch>(m, "Patch")
         .def_readonly("id", &Patch::id)
         .def_readonly("name", &Patch::name)
-        .def_property_readonly("role", [](const Patch& p) { return std::string(to_string(p.role)); })
+        .def_property_readonly("role",
+                               [](const Patch& p) { return std::string(to_string(p.role)); })
         .def_property_readonly("outer", [](const Patch& p) { return loop_array(p.outer); })
         .def_property_readonly("holes",
                                [](const Patch& p) {
@@ -190,10 +191,12 @@ PYBIND11_MODULE(popupcore, m)
         .def_readonly("paper_thickness", &Scaffold::paper_thickness)
         .def("size", &Scaffold::size, "Diagonal of the design-state bounding box (mm).");
 
-    m.def("scaffold_from_json", [](const std::string& t) { return unwrap(scaffold_from_json(t)); },
-          py::arg("text"), "Parses a design file's text; raises DesignError naming the field.");
-    m.def("load_scaffold", [](const std::string& p) { return unwrap(load_scaffold(p)); },
-          py::arg("path"), "Reads a JSON design file; raises DesignError naming the field.");
+    m.def(
+        "scaffold_from_json", [](const std::string& t) { return unwrap(scaffold_from_json(t)); },
+        py::arg("text"), "Parses a design file's text; raises DesignError naming the field.");
+    m.def(
+        "load_scaffold", [](const std::string& p) { return unwrap(load_scaffold(p)); },
+        py::arg("path"), "Reads a JSON design file; raises DesignError naming the field.");
     m.def("scaffold_to_json", &scaffold_to_json, py::arg("scaffold"));
     m.def("save_scaffold", &save_scaffold, py::arg("scaffold"), py::arg("path"));
 
@@ -220,8 +223,7 @@ PYBIND11_MODULE(popupcore, m)
         });
 
     py::class_<Result<FoldSweep>>(m, "FoldSweep")
-        .def_property_readonly("states",
-                               [](const Result<FoldSweep>& r) { return r.value.states; })
+        .def_property_readonly("states", [](const Result<FoldSweep>& r) { return r.value.states; })
         .def_property_readonly("complete",
                                [](const Result<FoldSweep>& r) { return r.value.complete; })
         .def_property_readonly("locked_at",

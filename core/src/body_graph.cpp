@@ -11,7 +11,7 @@ struct DisjointSets {
     int find(int i) { return parent[i] == i ? i : parent[i] = find(parent[i]); }
     void join(int a, int b) { parent[find(a)] = find(b); }
 };
-}  // namespace
+} // namespace
 
 Result<BodyGraph> build_body_graph(const Scaffold& s)
 {
@@ -33,8 +33,7 @@ Result<BodyGraph> build_body_graph(const Scaffold& s)
     g.ground = g.body_of_patch[s.patch_index(s.ground)];
     g.backdrop = g.body_of_patch[s.patch_index(s.backdrop)];
     if (g.ground == g.backdrop) {
-        r.fail("base_glued", "the ground and the backdrop are glued into one rigid body",
-               "glue");
+        r.fail("base_glued", "the ground and the backdrop are glued into one rigid body", "glue");
         return r;
     }
 
@@ -78,10 +77,10 @@ Result<BodyGraph> build_body_graph(const Scaffold& s)
     for (size_t j = 0; j < g.joints.size(); ++j) {
         const Joint& joint = g.joints[j];
         const int c = g.is_base(joint.body_a) ? g.component_of_body[joint.body_b]
-                                               : g.component_of_body[joint.body_a];
+                                              : g.component_of_body[joint.body_a];
         g.component_joints[c].push_back(int(j));
     }
     return r;
 }
 
-}  // namespace popup
+} // namespace popup

@@ -129,16 +129,16 @@ struct PairFinding {
     double depth = 0.0;
 };
 
-}  // namespace
+} // namespace
 
 std::vector<Crossing> find_crossings(const Scaffold& input, const FoldState& state,
                                      double tolerance)
 {
     Result<Scaffold> checked = validate_scaffold(input);
     if (!checked.ok)
-        throw std::invalid_argument("find_crossings: invalid scaffold: " +
-                                    checked.diagnostics.front().subject + ": " +
-                                    checked.diagnostics.front().message);
+        throw std::invalid_argument(
+            "find_crossings: invalid scaffold: " + checked.diagnostics.front().subject + ": " +
+            checked.diagnostics.front().message);
     const Scaffold& s = checked.value;
     if (state.poses.size() != s.patches.size())
         throw std::invalid_argument("find_crossings: the state has " +
@@ -149,7 +149,8 @@ std::vector<Crossing> find_crossings(const Scaffold& input, const FoldState& sta
         throw std::invalid_argument("find_crossings: " + graph.diagnostics.front().message);
     const std::vector<PatchMesh> meshes = mesh_patches(s);
     std::vector<Crossing> out;
-    for (const auto& [i, j] : candidate_pairs(meshes, graph.value.body_of_patch, state, tolerance)) {
+    for (const auto& [i, j] :
+         candidate_pairs(meshes, graph.value.body_of_patch, state, tolerance)) {
         const double d = crossing_depth(meshes, s, state, i, j, tolerance, 0.0);
         if (d > 0.0)
             out.push_back({s.patches[i].id, s.patches[j].id, state.angle, d});
@@ -175,8 +176,8 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
         options.refine_depth < 0 || options.refine_depth > 30) {
         add("bad_option",
             "samples must be 2..100000, clearance >= 0 mm and refine_depth 0..30 (got " +
-                std::to_string(options.samples) + ", " + std::to_string(options.clearance) +
-                ", " + std::to_string(options.refine_depth) + ")",
+                std::to_string(options.samples) + ", " + std::to_string(options.clearance) + ", " +
+                std::to_string(options.refine_depth) + ")",
             "options");
         return report;
     }
@@ -222,8 +223,8 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
         if (report.flatness_at_zero > flat_tolerance)
             add("not_flat_when_closed",
                 describe(s.patches[worst]) + " stands " + mm(report.flatness_at_zero) +
-                    " off the page plane when the card is closed (allowed " +
-                    mm(flat_tolerance) + ")",
+                    " off the page plane when the card is closed (allowed " + mm(flat_tolerance) +
+                    ")",
                 describe(s.patches[worst]));
     }
     const bool branch_ok =
@@ -248,12 +249,10 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
         if (unstable_samples++ == 0) {
             std::ostringstream names;
             for (size_t k = 0; k < motion.moving_patches.size(); ++k)
-                names << (k ? ", " : "")
-                      << describe(*s.find_patch(motion.moving_patches[k]));
+                names << (k ? ", " : "") << describe(*s.find_patch(motion.moving_patches[k]));
             add("unstable",
-                std::to_string(motion.dimension) +
-                    " free motion(s) besides the fold angle at " + deg(st.angle) + ": " +
-                    names.str() + " can move while the base is held still",
+                std::to_string(motion.dimension) + " free motion(s) besides the fold angle at " +
+                    deg(st.angle) + ": " + names.str() + " can move while the base is held still",
                 names.str());
         }
     }
@@ -342,4 +341,4 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
     return report;
 }
 
-}  // namespace popup
+} // namespace popup

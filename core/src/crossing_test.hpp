@@ -11,9 +11,9 @@ namespace popup {
 /// A patch prepared once per check: all loop vertices, boundary edges and a constrained
 /// triangulation of its interior (indices into `vertices`).
 struct PatchMesh {
-    std::vector<Vec3> vertices;                 ///< design state
-    std::vector<std::array<int, 2>> edges;      ///< boundary edges (outer loop and holes)
-    std::vector<std::array<int, 3>> triangles;  ///< interior, from a CGAL CDT
+    std::vector<Vec3> vertices;                ///< design state
+    std::vector<std::array<int, 2>> edges;     ///< boundary edges (outer loop and holes)
+    std::vector<std::array<int, 3>> triangles; ///< interior, from a CGAL CDT
 };
 
 /// Throws CGAL::Failure_exception naming the patch when a loop cannot be triangulated.
@@ -34,4 +34,4 @@ double crossing_depth(const std::vector<PatchMesh>& meshes, const Scaffold& scaf
 std::vector<double> side_of_plane(const std::vector<PatchMesh>& meshes, const Scaffold& scaffold,
                                   const FoldState& state, int i, int j);
 
-}  // namespace popup
+} // namespace popup

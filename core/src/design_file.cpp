@@ -178,7 +178,10 @@ Scaffold read_scaffold(const json& j)
     return s;
 }
 
-json write_point(const Vec3& p) { return json::array({p.x(), p.y(), p.z()}); }
+json write_point(const Vec3& p)
+{
+    return json::array({p.x(), p.y(), p.z()});
+}
 
 json write_loop(const Loop3& loop)
 {
@@ -188,7 +191,7 @@ json write_loop(const Loop3& loop)
     return out;
 }
 
-}  // namespace
+} // namespace
 
 Result<Scaffold> scaffold_from_json(const std::string& text)
 {
@@ -196,7 +199,7 @@ Result<Scaffold> scaffold_from_json(const std::string& text)
     json j;
     try {
         j = json::parse(text);
-    } catch (const json::exception& e) {  // syntax errors, and numbers beyond double range
+    } catch (const json::exception& e) { // syntax errors, and numbers beyond double range
         r.fail("bad_json", std::string("not valid JSON: ") + e.what(), "(file)");
         return r;
     }
@@ -271,4 +274,4 @@ void save_scaffold(const Scaffold& scaffold, const std::string& path)
         throw std::runtime_error("failed while writing design file '" + path + "'");
 }
 
-}  // namespace popup
+} // namespace popup

@@ -87,7 +87,10 @@ PatchMesh mesh_patch(const Patch& p)
     return mesh;
 }
 
-K::Point_3 to_cgal(const Vec3& x) { return {x.x(), x.y(), x.z()}; }
+K::Point_3 to_cgal(const Vec3& x)
+{
+    return {x.x(), x.y(), x.z()};
+}
 
 // Positions along the planes' common line where the boundary of a patch crosses the other plane,
 // paired into the chords the patch cuts from that line (even-odd).
@@ -171,7 +174,7 @@ double proximity_depth(const PatchMesh& mesh_a, const std::vector<Vec3>& va, con
     return deepest;
 }
 
-}  // namespace
+} // namespace
 
 std::vector<PatchMesh> mesh_patches(const Scaffold& scaffold)
 {
@@ -185,7 +188,8 @@ std::vector<PatchMesh> mesh_patches(const Scaffold& scaffold)
                                           e.line_number(),
                                           "patch " + std::to_string(p.id) +
                                               ": cannot triangulate its outline; are its loops "
-                                              "self-intersecting? " + e.message());
+                                              "self-intersecting? " +
+                                              e.message());
         }
     }
     return meshes;
@@ -257,11 +261,11 @@ double crossing_depth(const std::vector<PatchMesh>& meshes, const Scaffold& scaf
             if ((h.patch_a == scaffold.patches[i].id && h.patch_b == scaffold.patches[j].id) ||
                 (h.patch_a == scaffold.patches[j].id && h.patch_b == scaffold.patches[i].id))
                 shared.push_back(&h);
-        if (ni.cross(nj).norm() > 0.02)  // transversal approach only: stacking is allowed
-            near = std::max(proximity_depth(meshes[i], vi, scaffold.patches[j], state.poses[j],
-                                            di, clearance, shared, tolerance),
-                            proximity_depth(meshes[j], vj, scaffold.patches[i], state.poses[i],
-                                            dj, clearance, shared, tolerance));
+        if (ni.cross(nj).norm() > 0.02) // transversal approach only: stacking is allowed
+            near = std::max(proximity_depth(meshes[i], vi, scaffold.patches[j], state.poses[j], di,
+                                            clearance, shared, tolerance),
+                            proximity_depth(meshes[j], vj, scaffold.patches[i], state.poses[i], dj,
+                                            clearance, shared, tolerance));
     }
     const double depth = std::min(straddle(di), straddle(dj));
     if (depth <= tolerance)
@@ -271,12 +275,12 @@ double crossing_depth(const std::vector<PatchMesh>& meshes, const Scaffold& scaf
     if (line.norm() < 1e-12)
         return near;
     const Vec3 dir = line.normalized();
-    const double overlap = overlap_length(chord_ends(meshes[i], vi, di, dir),
-                                          chord_ends(meshes[j], vj, dj, dir));
+    const double overlap =
+        overlap_length(chord_ends(meshes[i], vi, di, dir), chord_ends(meshes[j], vj, dj, dir));
     if (overlap <= tolerance)
         return near;
     // The exact predicate has the last word on whether the two patches meet at all.
     return triangles_meet(meshes[i], vi, meshes[j], vj) ? std::max(depth, near) : near;
 }
 
-}  // namespace popup
+} // namespace popup

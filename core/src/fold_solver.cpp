@@ -22,7 +22,7 @@ Vec3 place(const BodyPose& pose, const Vec3& center, const Vec3& x)
     return pose.rotation * (x - center) + pose.position;
 }
 
-}  // namespace
+} // namespace
 
 FoldSolver::FoldSolver(const Scaffold& scaffold, const BodyGraph& graph,
                        const SimulationOptions& options)
@@ -36,7 +36,8 @@ FoldSolver::FoldSolver(const Scaffold& scaffold, const BodyGraph& graph,
             column_of_body_[bodies[k]] = int(6 * k);
 
     for (const Hinge& h : scaffold.hinges)
-        hinge_patches_.push_back({scaffold.patch_index(h.patch_a), scaffold.patch_index(h.patch_b)});
+        hinge_patches_.push_back(
+            {scaffold.patch_index(h.patch_a), scaffold.patch_index(h.patch_b)});
     hints_.resize(graph.components.size());
     undirected_.resize(graph.components.size());
     const Configuration design = design_configuration();
@@ -45,7 +46,7 @@ FoldSolver::FoldSolver(const Scaffold& scaffold, const BodyGraph& graph,
         BranchHint hint{scaffold.patch_index(h.patch_a), scaffold.patch_index(h.patch_b),
                         joint.hinge, h.direction == FoldDirection::mountain ? -1.0 : 1.0};
         if (std::abs(fold_sine(hint, design)) > 1e-9)
-            continue;  // not flat: the design state fixes the branch by itself
+            continue; // not flat: the design state fixes the branch by itself
         const int free_body = graph.is_base(joint.body_a) ? joint.body_b : joint.body_a;
         const int c = graph.component_of_body[free_body];
         if (h.direction == FoldDirection::unspecified)
@@ -151,7 +152,7 @@ void FoldSolver::apply_step(int c, Configuration& q, const Eigen::VectorXd& d) c
 double FoldSolver::hint_residual(const BranchHint& hint, const Configuration& q) const
 {
     const double weight = 0.1 * size_;
-    const double target = 0.02;  // sine of a small opening on the intended side
+    const double target = 0.02; // sine of a small opening on the intended side
     return weight * (hint.sign * fold_sine(hint, q) - target);
 }
 
@@ -192,8 +193,7 @@ void FoldSolver::linearize(int c, const Configuration& q, const std::vector<Bran
         for (const Vec3& x : joint.ends) {
             const Vec3 arm_a = q[joint.body_a].rotation * (x - graph_.center[joint.body_a]);
             const Vec3 arm_b = q[joint.body_b].rotation * (x - graph_.center[joint.body_b]);
-            const Vec3 r =
-                (arm_a + q[joint.body_a].position) - (arm_b + q[joint.body_b].position);
+            const Vec3 r = (arm_a + q[joint.body_a].position) - (arm_b + q[joint.body_b].position);
             Eigen::Matrix<double, 3, 6> Ja, Jb;
             Ja << -skew(arm_a) / size_, Mat3::Identity();
             Jb << skew(arm_b) / size_, -Mat3::Identity();
@@ -282,7 +282,7 @@ bool FoldSolver::least_squares(int c, Configuration& q, const std::vector<Branch
             break;
     }
     if (hints)
-        return true;  // the hinted pass only positions the guess; the plain pass must converge
+        return true; // the hinted pass only positions the guess; the plain pass must converge
     return worst <= tolerance_;
 }
 
@@ -384,7 +384,7 @@ void ComponentTrack::take_limit_at_end()
     const auto& bodies = solver_.graph().components[component_];
     std::vector<Configuration> nodes;
     for (int k = 1; k <= 4; ++k) {
-        const double t = k * h / std::abs(previous_step_);  // fraction of the way back
+        const double t = k * h / std::abs(previous_step_); // fraction of the way back
         Configuration q = current_;
         for (int b : bodies) {
             const Mat3 turn = previous_[b].rotation * current_[b].rotation.transpose();
@@ -399,8 +399,8 @@ void ComponentTrack::take_limit_at_end()
     for (int b : bodies) {
         Vec3 turn = Vec3::Zero(), position = Vec3::Zero();
         for (int k = 0; k < 4; ++k) {
-            turn += weights[k] *
-                    rotation_log(nodes[k][b].rotation * nodes[0][b].rotation.transpose());
+            turn +=
+                weights[k] * rotation_log(nodes[k][b].rotation * nodes[0][b].rotation.transpose());
             position += weights[k] * nodes[k][b].position;
         }
         current_[b].rotation = rotation_exp(turn) * nodes[0][b].rotation;
@@ -434,7 +434,7 @@ bool ComponentTrack::try_step(double next)
     for (int b : bodies) {
         const Mat3 turn = guess[b].rotation * current_[b].rotation.transpose();
         if (Eigen::AngleAxisd(turn).angle() > 0.5)
-            return false;  // a jump this large in one step means another branch
+            return false; // a jump this large in one step means another branch
     }
     if (at_design_)
         for (const BranchHint& hint : hints)
@@ -448,4 +448,4 @@ bool ComponentTrack::try_step(double next)
     return true;
 }
 
-}  // namespace popup
+} // namespace popup

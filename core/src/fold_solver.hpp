@@ -19,10 +19,10 @@ using Configuration = std::vector<BodyPose>;
 /// A fold that is flat at the design state and carries an intended direction: during the first
 /// step away from the design state it pulls the solution onto the intended branch.
 struct BranchHint {
-    int patch_a = 0;  ///< patch indices
+    int patch_a = 0; ///< patch indices
     int patch_b = 0;
     int hinge = 0;
-    double sign = 1.0;  ///< +1 valley, -1 mountain
+    double sign = 1.0; ///< +1 valley, -1 mountain
 };
 
 class FoldSolver {
@@ -40,8 +40,8 @@ public:
     /// Newton-corrects the bodies of component c at the base state already in q. With hints,
     /// first settles on the hinted side of each flat fold, then corrects without them.
     /// `to_round_off` keeps iterating past the tolerance while the residual still drops.
-    bool correct(int c, Configuration& q, const std::vector<BranchHint>& hints,
-                 int max_iterations, bool to_round_off = false) const;
+    bool correct(int c, Configuration& q, const std::vector<BranchHint>& hints, int max_iterations,
+                 bool to_round_off = false) const;
 
     /// Signed opening of a fold: sine of the angle by which patch b leaves patch a's plane,
     /// positive toward a's normal (valley side).
@@ -77,7 +77,6 @@ private:
     double cost(int c, const Configuration& q, const std::vector<BranchHint>* hints,
                 double* worst) const;
 
-
     const Scaffold& scaffold_;
     const BodyGraph& graph_;
     SimulationOptions options_;
@@ -86,7 +85,9 @@ private:
     std::vector<std::vector<BranchHint>> hints_;
     std::vector<std::vector<int>> undirected_;
     std::vector<int> column_of_body_;
-    std::vector<std::array<int, 2>> hinge_patches_;  ///< patch indices of each hinge  ///< first unknown of each free body within its component
+    std::vector<std::array<int, 2>>
+        hinge_patches_; ///< patch indices of each hinge  ///< first unknown of each free body
+                        ///< within its component
 };
 
 /// Continuation of one component from the design state toward a sequence of angles.
@@ -119,4 +120,4 @@ private:
     double locked_ = -1.0;
 };
 
-}  // namespace popup
+} // namespace popup

@@ -25,7 +25,7 @@ FreeMotion free_motion_of(const Scaffold& scaffold, const FoldSolver& solver,
         if ((pivots.array() > 1e-12 * scale).all())
             continue;
         const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(A);
-        const Eigen::VectorXd& values = eig.eigenvalues();  // ascending
+        const Eigen::VectorXd& values = eig.eigenvalues(); // ascending
         const double largest = std::max(values.maxCoeff(), 1.0);
         // Columns are in mm per mm of motion, so singular values are O(1) for a rigid design.
         const double threshold = 1e-12 * largest;
@@ -47,9 +47,9 @@ FreeMotion free_motion(const Scaffold& input, const FoldState& state)
 {
     Result<Scaffold> checked = validate_scaffold(input);
     if (!checked.ok)
-        throw std::invalid_argument("free_motion: invalid scaffold: " +
-                                    checked.diagnostics.front().subject + ": " +
-                                    checked.diagnostics.front().message);
+        throw std::invalid_argument(
+            "free_motion: invalid scaffold: " + checked.diagnostics.front().subject + ": " +
+            checked.diagnostics.front().message);
     if (state.poses.size() != checked.value.patches.size())
         throw std::invalid_argument("free_motion: the state has " +
                                     std::to_string(state.poses.size()) + " poses for " +
@@ -61,4 +61,4 @@ FreeMotion free_motion(const Scaffold& input, const FoldState& state)
     return free_motion_of(checked.value, solver, solver.configuration(state));
 }
 
-}  // namespace popup
+} // namespace popup

@@ -8,4 +8,4 @@ namespace popup {
 FreeMotion free_motion_of(const Scaffold& scaffold, const FoldSolver& solver,
                           const Configuration& q);
 
-}  // namespace popup
+} // namespace popup

@@ -10,7 +10,10 @@ const char* const kRoleNames[] = {"ground", "backdrop", "support", "top",
                                   "front",  "back",     "tab",     "other"};
 }
 
-const char* to_string(PatchRole role) { return kRoleNames[static_cast<int>(role)]; }
+const char* to_string(PatchRole role)
+{
+    return kRoleNames[static_cast<int>(role)];
+}
 
 bool parse_patch_role(const std::string& name, PatchRole& role)
 {
@@ -96,7 +99,7 @@ double signed_area(const Loop2& loop)
     }
     return 0.5 * a;
 }
-}  // namespace
+} // namespace
 
 double Patch::area() const
 {
@@ -114,4 +117,4 @@ Vec3 Patch::centroid() const
     return outer.empty() ? c : Vec3(c / double(outer.size()));
 }
 
-}  // namespace popup
+} // namespace popup

@@ -42,4 +42,4 @@ bool point_in_polygon_or_near(const Loop2& polygon, const Vec2& q, double tol)
     return inside && distance_to_boundary(polygon, q) > -tol;
 }
 
-}  // namespace popup
+} // namespace popup

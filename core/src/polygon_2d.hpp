@@ -17,4 +17,4 @@ bool point_in_polygon(const Loop2& polygon, const Vec2& q);
 /// tol < 0.
 bool point_in_polygon_or_near(const Loop2& polygon, const Vec2& q, double tol);
 
-}  // namespace popup
+} // namespace popup

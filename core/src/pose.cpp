@@ -23,4 +23,4 @@ Vec3 rotation_log(const Mat3& r)
     return aa.axis() * aa.angle();
 }
 
-}  // namespace popup
+} // namespace popup

@@ -55,7 +55,10 @@ std::string patch_subject(const Patch& p)
     return s.str();
 }
 
-bool finite(const Vec3& x) { return x.allFinite(); }
+bool finite(const Vec3& x)
+{
+    return x.allFinite();
+}
 
 // A point lies on a patch when it is in the patch plane and inside or on its outline, within tol.
 bool point_on_patch(const Patch& p, const Vec3& x, double tol)
@@ -71,14 +74,14 @@ bool point_on_patch(const Patch& p, const Vec3& x, double tol)
     return true;
 }
 
-}  // namespace
+} // namespace
 
 Result<Scaffold> validate_scaffold(Scaffold s)
 {
     Result<Scaffold> r;
     if (s.patches.empty()) {
-        r.fail("empty_scaffold", "the scaffold has no patches; it needs at least the two base patches",
-               "scaffold");
+        r.fail("empty_scaffold",
+               "the scaffold has no patches; it needs at least the two base patches", "scaffold");
         return r;
     }
     bool coordinates_ok = true;
@@ -189,7 +192,7 @@ Pose base_pose(double half_turn)
     p.rotation = axis_angle(Vec3::UnitY(), half_turn);
     return p;
 }
-}  // namespace
+} // namespace
 
 Pose ground_pose(const Scaffold& scaffold, double theta)
 {
@@ -201,4 +204,4 @@ Pose backdrop_pose(const Scaffold& scaffold, double theta)
     return base_pose(-0.5 * (theta - scaffold.design_angle));
 }
 
-}  // namespace popup
+} // namespace popup

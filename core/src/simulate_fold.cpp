@@ -36,7 +36,7 @@ std::string patch_list(const Scaffold& s, const BodyGraph& g, int component)
     return out.str();
 }
 
-}  // namespace
+} // namespace
 
 Loop3 posed_outline(const Patch& patch, const Pose& pose)
 {
@@ -103,8 +103,7 @@ Result<FoldSweep> simulate_fold(const Scaffold& input, const std::vector<double>
                     reached[(*run)[k]] = false;
                 const double at = track.locked_angle();
                 const bool closer = run == &closing;
-                if (sweep.locked_at < 0.0 ||
-                    (closer ? at > sweep.locked_at : at < sweep.locked_at))
+                if (sweep.locked_at < 0.0 || (closer ? at > sweep.locked_at : at < sweep.locked_at))
                     sweep.locked_at = at;
                 result.warn("motion_locked",
                             std::string("the motion locks at ") + degrees(at) + " while " +
@@ -139,4 +138,4 @@ Result<FoldSweep> simulate_fold(const Scaffold& input, const std::vector<double>
     return result;
 }
 
-}  // namespace popup
+} // namespace popup

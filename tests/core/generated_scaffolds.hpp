@@ -7,4 +7,4 @@ namespace popup::fixtures {
 /// by side along the central fold (benchmarks and scaling tests).
 Scaffold generated_scaffold(int patch_count);
 
-}  // namespace popup::fixtures
+} // namespace popup::fixtures

@@ -16,4 +16,4 @@ std::vector<SampleFile> sample_files()
     };
 }
 
-}  // namespace popup::fixtures
+} // namespace popup::fixtures

@@ -7,11 +7,11 @@
 namespace popup::fixtures {
 
 struct SampleFile {
-    std::string path;  ///< relative to the repository root
+    std::string path; ///< relative to the repository root
     Scaffold scaffold;
 };
 
 /// Every design file the repository ships, with the builder it comes from.
 std::vector<SampleFile> sample_files();
 
-}  // namespace popup::fixtures
+} // namespace popup::fixtures

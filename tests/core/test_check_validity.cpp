@@ -24,7 +24,7 @@ const Diagnostic* find_code(const ValidityReport& r, const std::string& code)
             return &d;
     return nullptr;
 }
-}  // namespace
+} // namespace
 
 TEST(CheckValidity, TentFoldIsValidWithTinyResiduals)
 {

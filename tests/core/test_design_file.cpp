@@ -20,7 +20,7 @@ std::string first_subject(const Result<Scaffold>& r)
 {
     return r.diagnostics.empty() ? "" : r.diagnostics.front().subject;
 }
-}  // namespace
+} // namespace
 
 TEST(DesignFile, RoundTripKeepsEveryCoordinateAndFold)
 {

@@ -12,8 +12,7 @@ TEST(SampleFiles, MatchTheirBuilders)
     for (const auto& sample : fixtures::sample_files()) {
         const Result<Scaffold> loaded = load_scaffold(sample.path);
         ASSERT_TRUE(loaded.ok) << sample.path << ": "
-                               << (loaded.diagnostics.empty() ? ""
-                                                              : loaded.diagnostics[0].message);
+                               << (loaded.diagnostics.empty() ? "" : loaded.diagnostics[0].message);
         EXPECT_EQ(scaffold_to_json(loaded.value), scaffold_to_json(sample.scaffold))
             << sample.path << " is stale: rerun build/tests/core/popup_write_samples .";
     }

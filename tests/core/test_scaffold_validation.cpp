@@ -15,7 +15,7 @@ bool has(const Result<Scaffold>& r, const std::string& code, const std::string& 
             return true;
     return false;
 }
-}  // namespace
+} // namespace
 
 TEST(ScaffoldValidation, AcceptsAWellFormedCard)
 {
@@ -61,7 +61,7 @@ TEST(ScaffoldValidation, HingeOffItsPatchIsNamed)
 {
     Scaffold s = fixtures::make_card();
     fixtures::add_tent_fold(s, 40, 60, 30, 40);
-    s.hinges[1].to.y() += 25.0;  // the foot hinge now runs past the slope's edge
+    s.hinges[1].to.y() += 25.0; // the foot hinge now runs past the slope's edge
     const Result<Scaffold> r = validate_scaffold(s);
     EXPECT_FALSE(r.ok);
     EXPECT_TRUE(has(r, "hinge_off_patch", "hinge 1"));

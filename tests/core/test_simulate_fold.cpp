@@ -9,9 +9,15 @@ using namespace popup;
 using fixtures::deg;
 
 namespace {
-Vec3 ground_direction(double theta) { return {std::sin(theta / 2), 0, std::cos(theta / 2)}; }
-Vec3 backdrop_direction(double theta) { return {-std::sin(theta / 2), 0, std::cos(theta / 2)}; }
-}  // namespace
+Vec3 ground_direction(double theta)
+{
+    return {std::sin(theta / 2), 0, std::cos(theta / 2)};
+}
+Vec3 backdrop_direction(double theta)
+{
+    return {-std::sin(theta / 2), 0, std::cos(theta / 2)};
+}
+} // namespace
 
 // docs/MATH.md, "Symmetric tent fold": apex height z(θ) = a cos(θ/2) + sqrt(s² − a² sin²(θ/2)).
 TEST(TentFold, ApexFollowsTheClosedFormOver181Angles)
@@ -27,7 +33,8 @@ TEST(TentFold, ApexFollowsTheClosedFormOver181Angles)
     const Vec3 apex0(0, y0, std::sqrt(s * s - a * a));
     for (const FoldState& st : r.value.states) {
         const double t = st.angle;
-        const double z = a * std::cos(t / 2) + std::sqrt(s * s - a * a * std::pow(std::sin(t / 2), 2));
+        const double z =
+            a * std::cos(t / 2) + std::sqrt(s * s - a * a * std::pow(std::sin(t / 2), 2));
         const Vec3 apex = fixtures::world_point(card, st, slopes[0], apex0);
         EXPECT_NEAR(apex.z(), z, 1e-9 * size) << "at " << t * 180 / M_PI << "°";
         EXPECT_NEAR(apex.x(), 0.0, 1e-9 * size);
@@ -49,8 +56,8 @@ TEST(StepFold, FlatAtBothEndsAndErectAt90)
     const double size = card.size();
     const Vec3 nose0(a - b, y0, 0), hinge0(a, y0, 0);
     for (const FoldState& st : r.value.states) {
-        const Vec3 expected = a * ground_direction(st.angle) + b * backdrop_direction(st.angle) +
-                              Vec3(0, y0, 0);
+        const Vec3 expected =
+            a * ground_direction(st.angle) + b * backdrop_direction(st.angle) + Vec3(0, y0, 0);
         EXPECT_LT((fixtures::world_point(card, st, step[0], nose0) - expected).norm(), 1e-9 * size)
             << "at " << st.angle * 180 / M_PI << "°";
         EXPECT_LT((fixtures::world_point(card, st, step[1], nose0) - expected).norm(), 1e-9 * size);

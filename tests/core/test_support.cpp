@@ -13,7 +13,7 @@ Vec3 on_base(double r, double y, double theta)
     const double s = std::sin(theta / 2), c = std::cos(theta / 2);
     return r >= 0 ? Vec3(r * s, y, r * c) : Vec3(r * s, y, -r * c);
 }
-}  // namespace
+} // namespace
 
 Scaffold make_card(double width, double depth)
 {
@@ -44,8 +44,8 @@ Scaffold make_card_at(double width, double depth, double theta)
     s.design_angle = theta;
     s.patches[0].outer = {on_base(0, 0, theta), on_base(depth, 0, theta),
                           on_base(depth, width, theta), on_base(0, width, theta)};
-    s.patches[1].outer = {on_base(-depth, 0, theta), on_base(0, 0, theta),
-                          on_base(0, width, theta), on_base(-depth, width, theta)};
+    s.patches[1].outer = {on_base(-depth, 0, theta), on_base(0, 0, theta), on_base(0, width, theta),
+                          on_base(-depth, width, theta)};
     for (Patch& p : s.patches)
         p.derive_frame();
     return s;
@@ -72,8 +72,7 @@ int add_quad(Scaffold& s, const Vec3& a, const Vec3& b, const Vec3& c, const Vec
     return p.id;
 }
 
-void add_hinge(Scaffold& s, int a, int b, const Vec3& from, const Vec3& to,
-               FoldDirection direction)
+void add_hinge(Scaffold& s, int a, int b, const Vec3& from, const Vec3& to, FoldDirection direction)
 {
     int id = 0;
     for (const Hinge& h : s.hinges)
@@ -86,7 +85,8 @@ std::vector<int> add_tent_fold(Scaffold& s, double y0, double width, double foot
     const double theta = s.design_angle;
     const double y1 = y0 + width;
     const double half_gap = foot * std::sin(theta / 2);
-    const double apex_z = foot * std::cos(theta / 2) + std::sqrt(slope * slope - half_gap * half_gap);
+    const double apex_z =
+        foot * std::cos(theta / 2) + std::sqrt(slope * slope - half_gap * half_gap);
     const Vec3 a0 = on_base(foot, y0, theta), a1 = on_base(foot, y1, theta);
     const Vec3 d0 = on_base(-foot, y0, theta), d1 = on_base(-foot, y1, theta);
     const Vec3 c0(0, y0, apex_z), c1(0, y1, apex_z);
@@ -167,4 +167,4 @@ Vec3 world_point(const Scaffold& s, const FoldState& state, int id, const Vec3& 
     return state.poses[s.patch_index(id)].apply(x);
 }
 
-}  // namespace popup::fixtures
+} // namespace popup::fixtures

@@ -8,7 +8,10 @@
 namespace popup::fixtures {
 
 constexpr double kPi = 3.14159265358979323846;
-inline double deg(double degrees) { return degrees * kPi / 180.0; }
+inline double deg(double degrees)
+{
+    return degrees * kPi / 180.0;
+}
 
 /// A card: ground (id 0) x in [0, depth], backdrop (id 1) x in [-depth, 0], y in [0, width],
 /// z = 0, design angle 180°.
@@ -53,4 +56,4 @@ double max_strain(const FoldSweep& sweep);
 /// World position of a design-state point of patch `id` in `state`.
 Vec3 world_point(const Scaffold& scaffold, const FoldState& state, int id, const Vec3& x);
 
-}  // namespace popup::fixtures
+} // namespace popup::fixtures

@@ -68,8 +68,8 @@ Scaffold sticking_out_tent_card()
 {
     Scaffold s = make_card(200, 60);
     s.name = "tent sticking out of the closed card";
-    add_tent_fold(s, 40, 60, 30, 40);  // closes to a + s = 70 mm on a 60 mm deep card
+    add_tent_fold(s, 40, 60, 30, 40); // closes to a + s = 70 mm on a 60 mm deep card
     return s;
 }
 
-}  // namespace popup::fixtures
+} // namespace popup::fixtures

@@ -4,11 +4,11 @@
 
 namespace popup::fixtures {
 
-Scaffold valid_tent_card();          ///< tent fold, valid in every respect
-Scaffold valid_multi_card();         ///< tent, step and v-fold side by side (the demo card)
-Scaffold broken_tent_card();         ///< slopes shorter than feet: locks while opening
-Scaffold five_bar_card();            ///< three linked patches between the bases: wobbles
-Scaffold colliding_walls_card();     ///< two walls that meet at 40° and pass through below
-Scaffold sticking_out_tent_card();   ///< apex 10 mm beyond the closed card
+Scaffold valid_tent_card();        ///< tent fold, valid in every respect
+Scaffold valid_multi_card();       ///< tent, step and v-fold side by side (the demo card)
+Scaffold broken_tent_card();       ///< slopes shorter than feet: locks while opening
+Scaffold five_bar_card();          ///< three linked patches between the bases: wobbles
+Scaffold colliding_walls_card();   ///< two walls that meet at 40° and pass through below
+Scaffold sticking_out_tent_card(); ///< apex 10 mm beyond the closed card
 
-}  // namespace popup::fixtures
+} // namespace popup::fixtures

@@ -8,7 +8,7 @@
 namespace popup {
 
 struct BrepOptions {
-    double thickness = 0.0;  ///< mm; > 0 makes thickened solids instead of faces
+    double thickness = 0.0; ///< mm; > 0 makes thickened solids instead of faces
 };
 
 /// Planar OCCT faces (or thickened solids) of every patch at `state`, as one compound in BREP
@@ -19,4 +19,4 @@ std::string patches_to_brep(const Scaffold& scaffold, const FoldState& state,
 /// The same for the design state.
 std::string design_to_brep(const Scaffold& scaffold, const BrepOptions& options = {});
 
-}  // namespace popup
+} // namespace popup

@@ -18,4 +18,4 @@ Result<Scaffold> load_scaffold(const std::string& path);
 /// Throws std::runtime_error when the file cannot be written.
 void save_scaffold(const Scaffold& scaffold, const std::string& path);
 
-}  // namespace popup
+} // namespace popup

@@ -21,10 +21,10 @@ struct Patch {
     int id = 0;
     std::string name;
     PatchRole role = PatchRole::other;
-    Loop3 outer;               ///< counter-clockwise seen from the normal side
-    std::vector<Loop3> holes;  ///< clockwise seen from the normal side
+    Loop3 outer;              ///< counter-clockwise seen from the normal side
+    std::vector<Loop3> holes; ///< clockwise seen from the normal side
 
-    Vec3 origin = Vec3::Zero();  ///< local frame, filled by `derive_frame`
+    Vec3 origin = Vec3::Zero(); ///< local frame, filled by `derive_frame`
     Vec3 u = Vec3::UnitX();
     Vec3 v = Vec3::UnitY();
     Vec3 normal = Vec3::UnitZ();
@@ -39,4 +39,4 @@ struct Patch {
     double area() const;
 };
 
-}  // namespace popup
+} // namespace popup

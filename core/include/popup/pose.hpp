@@ -30,4 +30,4 @@ Mat3 rotation_exp(const Vec3& w);
 /// Rotation vector w with rotation_exp(w) == r.
 Vec3 rotation_log(const Mat3& r);
 
-}  // namespace popup
+} // namespace popup

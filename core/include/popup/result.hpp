@@ -17,8 +17,7 @@ using Diagnostics = std::vector<Diagnostic>;
 
 /// A value plus the diagnostics gathered while computing it. `ok` is false when the value must
 /// not be trusted (the diagnostics then say why).
-template <class T>
-struct Result {
+template <class T> struct Result {
     T value{};
     bool ok = true;
     Diagnostics diagnostics;
@@ -34,4 +33,4 @@ struct Result {
     }
 };
 
-}  // namespace popup
+} // namespace popup

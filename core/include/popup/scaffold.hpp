@@ -19,7 +19,7 @@ struct Hinge {
     int id = 0;
     int patch_a = 0;
     int patch_b = 0;
-    Vec3 from = Vec3::Zero();  ///< design-state world coordinates (mm)
+    Vec3 from = Vec3::Zero(); ///< design-state world coordinates (mm)
     Vec3 to = Vec3::Zero();
     FoldDirection direction = FoldDirection::unspecified;
 };
@@ -37,13 +37,13 @@ struct Scaffold {
     std::vector<Patch> patches;
     std::vector<Hinge> hinges;
     std::vector<Glue> glue;
-    int ground = -1;                     ///< id of the ground base patch (x > 0 at 180°)
-    int backdrop = -1;                   ///< id of the backdrop base patch (x < 0 at 180°)
-    double design_angle = 3.14159265358979323846;  ///< fold angle of the stored state (radians)
-    double paper_thickness = 0.2;        ///< mm
+    int ground = -1;   ///< id of the ground base patch (x > 0 at 180°)
+    int backdrop = -1; ///< id of the backdrop base patch (x < 0 at 180°)
+    double design_angle = 3.14159265358979323846; ///< fold angle of the stored state (radians)
+    double paper_thickness = 0.2;                 ///< mm
 
     const Patch* find_patch(int id) const;
-    int patch_index(int id) const;  ///< -1 when absent
+    int patch_index(int id) const; ///< -1 when absent
     /// Diagonal of the design-state bounding box (mm): the scale of every tolerance.
     double size() const;
 };
@@ -56,4 +56,4 @@ Result<Scaffold> validate_scaffold(Scaffold scaffold);
 Pose ground_pose(const Scaffold& scaffold, double theta);
 Pose backdrop_pose(const Scaffold& scaffold, double theta);
 
-}  // namespace popup
+} // namespace popup

@@ -8,21 +8,21 @@ namespace popup {
 
 /// Poses of every patch at one fold angle.
 struct FoldState {
-    double angle = 0.0;           ///< radians
-    std::vector<Pose> poses;      ///< one per scaffold patch, in scaffold order
-    double hinge_residual = 0.0;  ///< largest hinge endpoint mismatch (mm)
-    double edge_strain = 0.0;     ///< largest relative change of a patch edge length
+    double angle = 0.0;          ///< radians
+    std::vector<Pose> poses;     ///< one per scaffold patch, in scaffold order
+    double hinge_residual = 0.0; ///< largest hinge endpoint mismatch (mm)
+    double edge_strain = 0.0;    ///< largest relative change of a patch edge length
 };
 
 struct FoldSweep {
-    std::vector<FoldState> states;  ///< one per requested angle, in the order requested
-    bool complete = false;          ///< every requested angle was reached
-    double locked_at = -1.0;        ///< angle (radians) where the motion stopped, if it did
+    std::vector<FoldState> states; ///< one per requested angle, in the order requested
+    bool complete = false;         ///< every requested angle was reached
+    double locked_at = -1.0;       ///< angle (radians) where the motion stopped, if it did
 };
 
 struct SimulationOptions {
-    double max_step = 0.0174532925199432958;  ///< largest continuation step (1°)
-    double min_step = 1e-7;                   ///< below this the motion is declared locked
+    double max_step = 0.0174532925199432958; ///< largest continuation step (1°)
+    double min_step = 1e-7;                  ///< below this the motion is declared locked
     int max_newton_iterations = 60;
 };
 
@@ -36,4 +36,4 @@ Result<FoldSweep> simulate_fold(const Scaffold& scaffold, const std::vector<doub
 /// World coordinates of a patch's outer loop in a given state.
 Loop3 posed_outline(const Patch& patch, const Pose& pose);
 
-}  // namespace popup
+} // namespace popup
