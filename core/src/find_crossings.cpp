@@ -207,17 +207,22 @@ std::vector<std::array<int, 2>> candidate_pairs(const std::vector<PatchMesh>& me
         boxes[i].min().array() -= margin;
         boxes[i].max().array() += margin;
     }
-    // Sweep along x: boxes sorted by their lower x bound.
+    // Sweep and prune along the axis the boxes spread most on (mechanisms line the fold).
+    Eigen::AlignedBox3d centres;
+    for (const auto& box : boxes)
+        centres.extend(box.center());
+    int axis = 0;
+    centres.diagonal().maxCoeff(&axis);
     std::vector<int> order(n);
     for (int i = 0; i < n; ++i)
         order[i] = i;
     std::sort(order.begin(), order.end(),
-              [&](int a, int b) { return boxes[a].min().x() < boxes[b].min().x(); });
+              [&](int a, int b) { return boxes[a].min()[axis] < boxes[b].min()[axis]; });
     std::vector<std::array<int, 2>> pairs;
     for (int a = 0; a < n; ++a)
         for (int b = a + 1; b < n; ++b) {
             const int i = order[a], j = order[b];
-            if (boxes[j].min().x() > boxes[i].max().x())
+            if (boxes[j].min()[axis] > boxes[i].max()[axis])
                 break;
             if (body_of_patch[i] != body_of_patch[j] && boxes[i].intersects(boxes[j]))
                 pairs.push_back({std::min(i, j), std::max(i, j)});

@@ -139,13 +139,14 @@ double FoldSolver::fold_sine(const BranchHint& hint, const Configuration& q) con
     return len > 0.0 ? normal.dot(away) / len : 0.0;
 }
 
-void FoldSolver::apply_step(int c, Configuration& q, const Eigen::VectorXd& d) const
+template <class Vector>
+void FoldSolver::apply_step(int c, Configuration& q, const Vector& d) const
 {
     const auto& bodies = graph_.components[c];
     for (size_t k = 0; k < bodies.size(); ++k) {
         BodyPose& p = q[bodies[k]];
-        p.rotation = rotation_exp(d.segment<3>(6 * k) / size_) * p.rotation;
-        p.position += d.segment<3>(6 * k + 3);
+        p.rotation = rotation_exp(d.template segment<3>(6 * k) / size_) * p.rotation;
+        p.position += d.template segment<3>(6 * k + 3);
     }
 }
 
@@ -177,12 +178,13 @@ double FoldSolver::cost(int c, const Configuration& q, const std::vector<BranchH
     return total;
 }
 
-void FoldSolver::linearize(int c, const Configuration& q, const std::vector<BranchHint>* hints,
-                           Eigen::MatrixXd& A, Eigen::VectorXd& g) const
+template <class Matrix, class Vector>
+void FoldSolver::linearize_into(int c, const Configuration& q,
+                                const std::vector<BranchHint>* hints, Matrix& A, Vector& g) const
 {
     const int n = int(6 * graph_.components[c].size());
-    A.setZero(n, n);
-    g.setZero(n);
+    A.setZero();
+    g.setZero();
     // Each hinge end touches at most two bodies: assemble JᵀJ and Jᵀr from 3x6 blocks.
     for (int j : graph_.component_joints[c]) {
         const Joint& joint = graph_.joints[j];
@@ -201,19 +203,19 @@ void FoldSolver::linearize(int c, const Configuration& q, const std::vector<Bran
             if (free_a) {
                 const Eigen::Matrix<double, 6, 6> aa = Ja.transpose() * Ja;
                 const Eigen::Matrix<double, 6, 1> ga = Ja.transpose() * r;
-                A.block<6, 6>(ca, ca) += aa;
-                g.segment<6>(ca) += ga;
+                A.template block<6, 6>(ca, ca) += aa;
+                g.template segment<6>(ca) += ga;
             }
             if (free_b) {
                 const Eigen::Matrix<double, 6, 6> bb = Jb.transpose() * Jb;
                 const Eigen::Matrix<double, 6, 1> gb = Jb.transpose() * r;
-                A.block<6, 6>(cb, cb) += bb;
-                g.segment<6>(cb) += gb;
+                A.template block<6, 6>(cb, cb) += bb;
+                g.template segment<6>(cb) += gb;
             }
             if (free_a && free_b) {
                 const Eigen::Matrix<double, 6, 6> ab = Ja.transpose() * Jb;
-                A.block<6, 6>(ca, cb) += ab;
-                A.block<6, 6>(cb, ca) += ab.transpose();
+                A.template block<6, 6>(ca, cb) += ab;
+                A.template block<6, 6>(cb, ca) += ab.transpose();
             }
         }
     }
@@ -235,17 +237,28 @@ void FoldSolver::linearize(int c, const Configuration& q, const std::vector<Bran
     }
 }
 
-bool FoldSolver::least_squares(int c, Configuration& q, const std::vector<BranchHint>* hints,
-                               int max_iterations, bool to_round_off) const
+void FoldSolver::linearize(int c, const Configuration& q, const std::vector<BranchHint>* hints,
+                           Eigen::MatrixXd& A, Eigen::VectorXd& g) const
 {
+    const int n = int(6 * graph_.components[c].size());
+    A.resize(n, n);
+    g.resize(n);
+    linearize_into(c, q, hints, A, g);
+}
+
+template <int N>
+bool FoldSolver::least_squares_sized(int c, Configuration& q,
+                                     const std::vector<BranchHint>* hints, int max_iterations,
+                                     bool to_round_off) const
+{
+    using Matrix = Eigen::Matrix<double, N, N>;
+    using Vector = Eigen::Matrix<double, N, 1>;
     const auto& bodies = graph_.components[c];
     const int n = int(6 * bodies.size());
-    if (n == 0)
-        return true;
     // Buffers reused across iterations: a sweep runs this thousands of times.
-    Eigen::MatrixXd A, M;
-    Eigen::VectorXd g, d(n);
-    Eigen::LLT<Eigen::MatrixXd> llt(n);
+    Matrix A(n, n), M(n, n);
+    Vector g(n), d(n);
+    Eigen::LLT<Matrix> llt(n);
     std::vector<BodyPose> saved(bodies.size());
     double worst = 0.0;
     double current = cost(c, q, hints, &worst);
@@ -253,7 +266,7 @@ bool FoldSolver::least_squares(int c, Configuration& q, const std::vector<Branch
     for (int it = 0; it < max_iterations; ++it) {
         if (!hints && !to_round_off && worst <= tolerance_)
             return true;
-        linearize(c, q, hints, A, g);
+        linearize_into(c, q, hints, A, g);
         bool improved = false;
         while (lambda < 1e10) {
             M = A;
@@ -284,6 +297,48 @@ bool FoldSolver::least_squares(int c, Configuration& q, const std::vector<Branch
     if (hints)
         return true; // the hinted pass only positions the guess; the plain pass must converge
     return worst <= tolerance_;
+}
+
+bool FoldSolver::least_squares(int c, Configuration& q, const std::vector<BranchHint>* hints,
+                               int max_iterations, bool to_round_off) const
+{
+    // Most mechanisms are one or two free bodies: fixed-size algebra avoids heap traffic there.
+    switch (graph_.components[c].size()) {
+    case 0:
+        return true;
+    case 1:
+        return least_squares_sized<6>(c, q, hints, max_iterations, to_round_off);
+    case 2:
+        return least_squares_sized<12>(c, q, hints, max_iterations, to_round_off);
+    default:
+        return least_squares_sized<Eigen::Dynamic>(c, q, hints, max_iterations, to_round_off);
+    }
+}
+
+template <int N>
+bool FoldSolver::rigid_sized(int c, const Configuration& q) const
+{
+    const int n = int(6 * graph_.components[c].size());
+    Eigen::Matrix<double, N, N> A(n, n);
+    Eigen::Matrix<double, N, 1> g(n);
+    linearize_into(c, q, nullptr, A, g);
+    const Eigen::Matrix<double, N, 1> pivots = A.ldlt().vectorD();
+    const double scale = std::max(pivots.cwiseAbs().maxCoeff(), 1.0);
+    return (pivots.array() > 1e-12 * scale).all();
+}
+
+bool FoldSolver::rigid(int c, const Configuration& q) const
+{
+    switch (graph_.components[c].size()) {
+    case 0:
+        return true;
+    case 1:
+        return rigid_sized<6>(c, q);
+    case 2:
+        return rigid_sized<12>(c, q);
+    default:
+        return rigid_sized<Eigen::Dynamic>(c, q);
+    }
 }
 
 bool FoldSolver::correct(int c, Configuration& q, const std::vector<BranchHint>& hints,

@@ -57,6 +57,9 @@ public:
     /// Jacobian of component c's hinge constraints with respect to its bodies' motions
     /// (rotation columns scaled by the model size so every column is in mm).
     Eigen::MatrixXd jacobian(int c, const Configuration& q) const;
+    /// No free motion of component c at q with the base held still: the pivoted LDLᵀ of JᵀJ
+    /// has no pivot below 1e-12 of the largest (columns are in mm, so pivots are O(1)).
+    bool rigid(int c, const Configuration& q) const;
     /// The component's constraints lose rank at q (a branch point or a free motion).
     bool singular(int c, const Configuration& q) const;
 
@@ -70,7 +73,16 @@ private:
                            Eigen::MatrixXd& J) const;
     bool least_squares(int c, Configuration& q, const std::vector<BranchHint>* hints,
                        int max_iterations, bool to_round_off) const;
-    void apply_step(int c, Configuration& q, const Eigen::VectorXd& d) const;
+    template <int N>
+    bool rigid_sized(int c, const Configuration& q) const;
+    template <int N>
+    bool least_squares_sized(int c, Configuration& q, const std::vector<BranchHint>* hints,
+                             int max_iterations, bool to_round_off) const;
+    template <class Vector>
+    void apply_step(int c, Configuration& q, const Vector& d) const;
+    template <class Matrix, class Vector>
+    void linearize_into(int c, const Configuration& q, const std::vector<BranchHint>* hints,
+                        Matrix& A, Vector& g) const;
     double hint_residual(const BranchHint& hint, const Configuration& q) const;
     /// Sum of squared residuals (hinge ends, and hints when given); `worst` gets the largest
     /// hinge coordinate mismatch.

@@ -15,15 +15,12 @@ FreeMotion free_motion_of(const Scaffold& scaffold, const FoldSolver& solver,
     FreeMotion motion;
     std::set<int> moving_bodies;
     for (size_t c = 0; c < g.components.size(); ++c) {
+        if (solver.rigid(int(c), q))
+            continue;
+        // Only a component that can move pays for the eigenvectors that say which bodies move.
         Eigen::MatrixXd A;
         Eigen::VectorXd gradient;
         solver.linearize(int(c), q, nullptr, A, gradient);
-        // Pivoted LDLᵀ of the semidefinite JᵀJ reveals a rank drop cheaply; only then pay for
-        // the eigenvectors that say which bodies move.
-        const Eigen::VectorXd pivots = A.ldlt().vectorD();
-        const double scale = std::max(pivots.cwiseAbs().maxCoeff(), 1.0);
-        if ((pivots.array() > 1e-12 * scale).all())
-            continue;
         const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(A);
         const Eigen::VectorXd& values = eig.eigenvalues(); // ascending
         const double largest = std::max(values.maxCoeff(), 1.0);
