@@ -196,24 +196,33 @@ void FoldSolver::linearize_into(int c, const Configuration& q,
             const Vec3 arm_a = q[joint.body_a].rotation * (x - graph_.center[joint.body_a]);
             const Vec3 arm_b = q[joint.body_b].rotation * (x - graph_.center[joint.body_b]);
             const Vec3 r = (arm_a + q[joint.body_a].position) - (arm_b + q[joint.body_b].position);
-            Eigen::Matrix<double, 3, 6> Ja, Jb;
-            Ja << -skew(arm_a) / size_, Mat3::Identity();
-            Jb << skew(arm_b) / size_, -Mat3::Identity();
-            // Fixed-size temporaries keep Eigen off its general (allocating) product path.
+            // With a = arm_a/size, b = arm_b/size the blocks are Ja = [-[a]x, I] and
+            // Jb = [[b]x, -I]; their products reduce to 3x3 terms (docs/MATH.md, Solver).
+            const Vec3 a = arm_a / size_;
+            const Vec3 b = arm_b / size_;
+            const Mat3 I = Mat3::Identity();
             if (free_a) {
-                const Eigen::Matrix<double, 6, 6> aa = Ja.transpose() * Ja;
-                const Eigen::Matrix<double, 6, 1> ga = Ja.transpose() * r;
-                A.template block<6, 6>(ca, ca) += aa;
-                g.template segment<6>(ca) += ga;
+                const Mat3 Sa = -skew(a);
+                A.template block<3, 3>(ca, ca) += a.squaredNorm() * I - a * a.transpose();
+                A.template block<3, 3>(ca, ca + 3) += Sa.transpose();
+                A.template block<3, 3>(ca + 3, ca) += Sa;
+                A.template block<3, 3>(ca + 3, ca + 3) += I;
+                g.template segment<3>(ca) += a.cross(r);
+                g.template segment<3>(ca + 3) += r;
             }
             if (free_b) {
-                const Eigen::Matrix<double, 6, 6> bb = Jb.transpose() * Jb;
-                const Eigen::Matrix<double, 6, 1> gb = Jb.transpose() * r;
-                A.template block<6, 6>(cb, cb) += bb;
-                g.template segment<6>(cb) += gb;
+                const Mat3 Sb = skew(b);
+                A.template block<3, 3>(cb, cb) += b.squaredNorm() * I - b * b.transpose();
+                A.template block<3, 3>(cb, cb + 3) -= Sb.transpose();
+                A.template block<3, 3>(cb + 3, cb) -= Sb;
+                A.template block<3, 3>(cb + 3, cb + 3) += I;
+                g.template segment<3>(cb) -= b.cross(r);
+                g.template segment<3>(cb + 3) -= r;
             }
             if (free_a && free_b) {
-                const Eigen::Matrix<double, 6, 6> ab = Ja.transpose() * Jb;
+                // Jaᵀ Jb = [[a]x[b]x, -[a]x; [b]x, -I] and its transpose.
+                Eigen::Matrix<double, 6, 6> ab;
+                ab << skew(a) * skew(b), -skew(a), skew(b), -I;
                 A.template block<6, 6>(ca, cb) += ab;
                 A.template block<6, 6>(cb, ca) += ab.transpose();
             }
