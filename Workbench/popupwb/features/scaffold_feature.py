@@ -15,6 +15,7 @@ import FreeCAD
 import Part
 
 from popupwb.core import popupcore
+from popupwb.stateless_proxy import StatelessProxy
 
 TYPE = "PopUp::Scaffold"
 VERSION = "1"
@@ -72,7 +73,7 @@ def is_scaffold(obj):
     return getattr(getattr(obj, "Proxy", None), "TYPE", None) == TYPE
 
 
-class ScaffoldFeature:
+class ScaffoldFeature(StatelessProxy):
     """Proxy of a Part::FeaturePython showing a design file at a fold angle."""
 
     TYPE = TYPE
@@ -183,17 +184,3 @@ class ScaffoldFeature:
             f"{obj.Label}: {len(scaffold.patches)} patches at {angle:g}° in "
             f"{1000.0 * (time.perf_counter() - start):.1f} ms\n"
         )
-
-    # Proxy state: nothing. Everything lives in properties; both protocols for FreeCAD 0.20
-    # (__getstate__/__setstate__) and later versions (dumps/loads).
-    def __getstate__(self):
-        return None
-
-    def __setstate__(self, state):
-        return None
-
-    def dumps(self):
-        return self.__getstate__()
-
-    def loads(self, state):
-        return self.__setstate__(state)

@@ -1,6 +1,7 @@
 """View provider of a Scaffold: its icon, and faces coloured by the role of their patch."""
 
 import popupwb
+from popupwb.stateless_proxy import StatelessProxy
 
 # Paper-like tints per patch role (RGB 0..1); the base patches stay closest to white card.
 ROLE_COLOURS = {
@@ -15,7 +16,7 @@ ROLE_COLOURS = {
 }
 
 
-class ScaffoldViewProvider:
+class ScaffoldViewProvider(StatelessProxy):
     """Proxy of the Scaffold's Gui::ViewProviderPartExt. Keeps no state."""
 
     def __init__(self, vobj):
@@ -65,15 +66,3 @@ class ScaffoldViewProvider:
             colours.extend([colour + (0.0,)] * len(child.Faces))
         if list(vobj.DiffuseColor) != colours:
             vobj.DiffuseColor = colours
-
-    def __getstate__(self):
-        return None
-
-    def __setstate__(self, state):
-        return None
-
-    def dumps(self):
-        return self.__getstate__()
-
-    def loads(self, state):
-        return self.__setstate__(state)
