@@ -139,8 +139,7 @@ double FoldSolver::fold_sine(const BranchHint& hint, const Configuration& q) con
     return len > 0.0 ? normal.dot(away) / len : 0.0;
 }
 
-template <class Vector>
-void FoldSolver::apply_step(int c, Configuration& q, const Vector& d) const
+template <class Vector> void FoldSolver::apply_step(int c, Configuration& q, const Vector& d) const
 {
     const auto& bodies = graph_.components[c];
     for (size_t k = 0; k < bodies.size(); ++k) {
@@ -179,8 +178,8 @@ double FoldSolver::cost(int c, const Configuration& q, const std::vector<BranchH
 }
 
 template <class Matrix, class Vector>
-void FoldSolver::linearize_into(int c, const Configuration& q,
-                                const std::vector<BranchHint>* hints, Matrix& A, Vector& g) const
+void FoldSolver::linearize_into(int c, const Configuration& q, const std::vector<BranchHint>* hints,
+                                Matrix& A, Vector& g) const
 {
     const int n = int(6 * graph_.components[c].size());
     A.setZero();
@@ -256,9 +255,8 @@ void FoldSolver::linearize(int c, const Configuration& q, const std::vector<Bran
 }
 
 template <int N>
-bool FoldSolver::least_squares_sized(int c, Configuration& q,
-                                     const std::vector<BranchHint>* hints, int max_iterations,
-                                     bool to_round_off) const
+bool FoldSolver::least_squares_sized(int c, Configuration& q, const std::vector<BranchHint>* hints,
+                                     int max_iterations, bool to_round_off) const
 {
     using Matrix = Eigen::Matrix<double, N, N>;
     using Vector = Eigen::Matrix<double, N, 1>;
@@ -324,8 +322,7 @@ bool FoldSolver::least_squares(int c, Configuration& q, const std::vector<Branch
     }
 }
 
-template <int N>
-bool FoldSolver::rigid_sized(int c, const Configuration& q) const
+template <int N> bool FoldSolver::rigid_sized(int c, const Configuration& q) const
 {
     const int n = int(6 * graph_.components[c].size());
     Eigen::Matrix<double, N, N> A(n, n);

@@ -73,13 +73,11 @@ private:
                            Eigen::MatrixXd& J) const;
     bool least_squares(int c, Configuration& q, const std::vector<BranchHint>* hints,
                        int max_iterations, bool to_round_off) const;
-    template <int N>
-    bool rigid_sized(int c, const Configuration& q) const;
+    template <int N> bool rigid_sized(int c, const Configuration& q) const;
     template <int N>
     bool least_squares_sized(int c, Configuration& q, const std::vector<BranchHint>* hints,
                              int max_iterations, bool to_round_off) const;
-    template <class Vector>
-    void apply_step(int c, Configuration& q, const Vector& d) const;
+    template <class Vector> void apply_step(int c, Configuration& q, const Vector& d) const;
     template <class Matrix, class Vector>
     void linearize_into(int c, const Configuration& q, const std::vector<BranchHint>* hints,
                         Matrix& A, Vector& g) const;

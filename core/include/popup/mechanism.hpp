@@ -1,0 +1,33 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "popup/base_patch_pair.hpp"
+#include "popup/result.hpp"
+#include "popup/scaffold.hpp"
+
+namespace popup {
+
+/// What a mechanism added to a scaffold: its patches (ids, in order) and the base patch pairs it
+/// offers for nesting further mechanisms.
+struct MechanismParts {
+    std::string name;
+    std::vector<int> patches;
+    std::vector<BasePatchPair> offered;
+};
+
+/// Placement shared by every mechanism: where along the host hinge it starts and how wide it is.
+struct Placement1D {
+    double offset = 0.0;  ///< from the host pair's origin along its hinge (mm)
+    double width = 40.0;  ///< extent along the hinge (mm)
+};
+
+/// Checks that [offset, offset + width] fits the host hinge; adds a named error otherwise.
+void check_placement(const std::string& mechanism, const BasePatchPair& host, const Placement1D& p,
+                     Diagnostics& errors);
+
+/// Adds the named error "NAME: PARAM = VALUE mm, must be RANGE".
+void range_error(Diagnostics& errors, const std::string& mechanism, const std::string& parameter,
+                 double value, const std::string& unit, const std::string& range);
+
+}  // namespace popup

@@ -1,0 +1,32 @@
+#include "popup/mechanism.hpp"
+
+#include <sstream>
+
+namespace popup {
+
+void range_error(Diagnostics& errors, const std::string& mechanism, const std::string& parameter,
+                 double value, const std::string& unit, const std::string& range)
+{
+    std::ostringstream m;
+    m << mechanism << ": " << parameter << " = " << value << (unit.empty() ? "" : " ") << unit
+      << ", must be " << range;
+    errors.push_back({"bad_parameter", m.str(), mechanism + "." + parameter});
+}
+
+void check_placement(const std::string& mechanism, const BasePatchPair& host, const Placement1D& p,
+                     Diagnostics& errors)
+{
+    std::ostringstream range;
+    if (!(p.width > 0 && p.width <= host.length)) {
+        range << "> 0 and <= " << host.length << " mm (the length of " << host.name << ")";
+        range_error(errors, mechanism, "Width", p.width, "mm", range.str());
+        return;
+    }
+    if (!(p.offset >= 0 && p.offset + p.width <= host.length)) {
+        range << ">= 0 and <= " << host.length - p.width << " mm (" << host.name << " is "
+              << host.length << " mm long, the mechanism " << p.width << " mm wide)";
+        range_error(errors, mechanism, "Offset", p.offset, "mm", range.str());
+    }
+}
+
+}  // namespace popup

@@ -1,0 +1,31 @@
+#pragma once
+// Internal: adds a mechanism's patches, hinges and glue to a scaffold, from coordinates in the
+// host pair's local frame (x toward the host's ground side, y along its hinge, z up).
+#include <string>
+#include <vector>
+
+#include "popup/mechanism.hpp"
+
+namespace popup {
+
+class MechanismBuilder {
+public:
+    MechanismBuilder(Scaffold& scaffold, const BasePatchPair& host, std::string name);
+
+    /// A planar patch from local points (counter-clockwise seen from its printed side).
+    int patch(const std::vector<Vec3>& local, PatchRole role, const std::string& part);
+    void hinge(int a, int b, const Vec3& local_from, const Vec3& local_to,
+               FoldDirection direction = FoldDirection::unspecified);
+    void glue(int a, int b);
+    Vec3 world(const Vec3& local) const { return host_.to_world(local.x(), local.y(), local.z()); }
+    void offer(const BasePatchPair& pair) { parts_.offered.push_back(pair); }
+    const BasePatchPair& host() const { return host_; }
+    MechanismParts finish() { return parts_; }
+
+private:
+    Scaffold& scaffold_;
+    BasePatchPair host_;
+    MechanismParts parts_;
+};
+
+}  // namespace popup

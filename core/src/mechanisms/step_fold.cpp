@@ -1,0 +1,44 @@
+#include "popup/mechanisms/step_fold.hpp"
+
+#include <sstream>
+
+#include "mechanism_builder.hpp"
+
+namespace popup {
+
+Result<MechanismParts> add_step_fold(Scaffold& scaffold, const BasePatchPair& host,
+                                     const StepFoldParams& p, const std::string& name)
+{
+    Result<MechanismParts> r;
+    Diagnostics& e = r.diagnostics;
+    check_placement(name, host, p, e);
+    std::ostringstream gmax, bmax;
+    gmax << "> 0 and < " << host.ground_depth << " mm (the depth of the host's ground)";
+    bmax << "> 0 and < " << host.backdrop_depth << " mm (the depth of the host's backdrop)";
+    if (!(p.run_ground > 0 && p.run_ground < host.ground_depth))
+        range_error(e, name, "RunGround", p.run_ground, "mm", gmax.str());
+    if (!(p.run_backdrop > 0 && p.run_backdrop < host.backdrop_depth))
+        range_error(e, name, "RunBackdrop", p.run_backdrop, "mm", bmax.str());
+    if (!e.empty()) {
+        r.ok = false;
+        return r;
+    }
+    const Vec2 A = p.run_ground * host.ground_direction();
+    const Vec2 D = p.run_backdrop * host.backdrop_direction();
+    const Vec2 C = A + D;  // the parallelogram's fourth corner (docs/MATH.md)
+    MechanismBuilder m(scaffold, host, name);
+    const double y0 = p.offset, y1 = p.offset + p.width;
+    auto at = [](const Vec2& q, double y) { return Vec3(q.x(), y, q.y()); };
+    const int riser =
+        m.patch({at(C, y0), at(A, y0), at(A, y1), at(C, y1)}, PatchRole::front, "riser");
+    const int tread = m.patch({at(D, y0), at(C, y0), at(C, y1), at(D, y1)}, PatchRole::top, "tread");
+    // Flat on an open host the fold can pop either way: riser and tread lift toward the host's
+    // printed side and the nose is a mountain (the parallelogram branch).
+    m.hinge(host.ground, riser, at(A, y0), at(A, y1), FoldDirection::valley);
+    m.hinge(host.backdrop, tread, at(D, y0), at(D, y1), FoldDirection::valley);
+    m.hinge(riser, tread, at(C, y0), at(C, y1), FoldDirection::mountain);
+    r.value = m.finish();
+    return r;
+}
+
+}  // namespace popup

@@ -1,0 +1,71 @@
+#include "popup/mechanisms/tent_fold.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "mechanism_builder.hpp"
+
+namespace popup {
+
+double tent_backdrop_slope(const TentFoldParams& p) { return p.foot + p.slope - p.foot_backdrop; }
+
+Result<MechanismParts> add_tent_fold(Scaffold& scaffold, const BasePatchPair& host,
+                                     const TentFoldParams& p, const std::string& name)
+{
+    Result<MechanismParts> r;
+    Diagnostics& e = r.diagnostics;
+    check_placement(name, host, p, e);
+    std::ostringstream gmax, bmax;
+    gmax << "> 0 and < " << host.ground_depth << " mm (the depth of the host's ground)";
+    bmax << "> 0 and < " << host.backdrop_depth << " mm (the depth of the host's backdrop)";
+    if (!(p.foot > 0 && p.foot < host.ground_depth))
+        range_error(e, name, "Foot", p.foot, "mm", gmax.str());
+    if (!(p.foot_backdrop > 0 && p.foot_backdrop < host.backdrop_depth))
+        range_error(e, name, "FootBackdrop", p.foot_backdrop, "mm", bmax.str());
+    const Vec2 g = host.ground_direction(), b = host.backdrop_direction();
+    const Vec2 A = p.foot * g, D = p.foot_backdrop * b;
+    const double gap = (A - D).norm();
+    if (e.empty()) {
+        // The slopes meet above the feet when |s1 − s2| < |AD| < s1 + s2, s2 = a1 + s1 − a2.
+        const double lowest = std::max((gap - p.foot + p.foot_backdrop) / 2,
+                                       p.foot_backdrop - p.foot);
+        if (!(p.slope > lowest && std::isfinite(p.slope))) {
+            std::ostringstream m;
+            m << "> " << lowest << " mm so both slopes reach the apex (the backdrop slope is "
+              << "Foot + Slope − FootBackdrop)";
+            range_error(e, name, "Slope", p.slope, "mm", m.str());
+        } else if (!(std::abs(p.foot - p.foot_backdrop) < gap)) {
+            range_error(e, name, "FootBackdrop", p.foot_backdrop, "mm",
+                        "closer to Foot: the slopes cannot meet at the design state");
+        }
+    }
+    if (!e.empty()) {
+        r.ok = false;
+        return r;
+    }
+    const double s1 = p.slope, s2 = tent_backdrop_slope(p);
+    // Apex: on the circles |C − A| = s1 and |C − D| = s2, on the open side of AD.
+    const Vec2 along = (D - A) / gap;
+    const double t = (s1 * s1 - s2 * s2 + gap * gap) / (2 * gap);
+    const double h = std::sqrt(std::max(0.0, s1 * s1 - t * t));
+    Vec2 normal(-along.y(), along.x());
+    if (normal.y() < 0)
+        normal = -normal;
+    const Vec2 C = A + t * along + h * normal;
+
+    MechanismBuilder m(scaffold, host, name);
+    const double y0 = p.offset, y1 = p.offset + p.width;
+    auto at = [](const Vec2& q, double y) { return Vec3(q.x(), y, q.y()); };
+    const int slope_g =
+        m.patch({at(A, y0), at(A, y1), at(C, y1), at(C, y0)}, PatchRole::support, "slope_ground");
+    const int slope_b = m.patch({at(C, y0), at(C, y1), at(D, y1), at(D, y0)}, PatchRole::support,
+                                "slope_backdrop");
+    m.hinge(host.ground, slope_g, at(A, y0), at(A, y1));
+    m.hinge(host.backdrop, slope_b, at(D, y0), at(D, y1));
+    m.hinge(slope_g, slope_b, at(C, y0), at(C, y1));
+    r.value = m.finish();
+    return r;
+}
+
+}  // namespace popup

@@ -1,0 +1,198 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "popup/card.hpp"
+#include "popup/check_validity.hpp"
+#include "popup/mechanisms/box_fold.hpp"
+#include "popup/mechanisms/step_fold.hpp"
+#include "popup/mechanisms/tent_fold.hpp"
+#include "popup/mechanisms/v_fold.hpp"
+#include "popup/simulate_fold.hpp"
+#include "test_support.hpp"
+
+using namespace popup;
+
+namespace {
+Scaffold card(double width = 240, double depth = 140)
+{
+    CardParams p;
+    p.width = width;
+    p.depth = depth;
+    return make_card(p).value;
+}
+
+std::string first_message(const ValidityReport& r)
+{
+    return r.diagnostics.empty() ? "" : r.diagnostics.front().message;
+}
+
+template <class Params>
+Params placed(Params p, double offset, double width)
+{
+    p.offset = offset;
+    p.width = width;
+    return p;
+}
+}  // namespace
+
+TEST(CardMechanisms, SymmetricTentIsValidAndFollowsTheClosedForm)
+{
+    Scaffold s = card();
+    TentFoldParams p = placed(TentFoldParams{}, 40, 60);
+    const auto parts = add_tent_fold(s, central_fold(s), p);
+    ASSERT_TRUE(parts.ok);
+    ASSERT_EQ(parts.value.patches.size(), 2u);
+    const ValidityReport r = check_validity(s);
+    EXPECT_TRUE(r.valid()) << first_message(r);
+    const auto sweep = simulate_fold(s, fixtures::angle_range(180, 0, 19));
+    const double a = p.foot, sl = p.slope;
+    for (const FoldState& st : sweep.value.states) {
+        const double z = a * std::cos(st.angle / 2) +
+                         std::sqrt(sl * sl - a * a * std::pow(std::sin(st.angle / 2), 2));
+        const Vec3 apex = fixtures::world_point(s, st, parts.value.patches[0],
+                                                {0, 40, std::sqrt(sl * sl - a * a)});
+        EXPECT_NEAR(apex.z(), z, 1e-9 * s.size());
+    }
+}
+
+TEST(CardMechanisms, AsymmetricTentFoldsFlat)
+{
+    Scaffold s = card();
+    TentFoldParams p = placed(TentFoldParams{}, 40, 60);
+    p.foot = 30;
+    p.foot_backdrop = 20;
+    p.slope = 40;
+    EXPECT_DOUBLE_EQ(tent_backdrop_slope(p), 50.0);
+    ASSERT_TRUE(add_tent_fold(s, central_fold(s), p).ok);
+    const ValidityReport r = check_validity(s);
+    EXPECT_TRUE(r.valid()) << first_message(r);
+}
+
+TEST(CardMechanisms, StepAndVFoldAreValid)
+{
+    Scaffold s = card();
+    ASSERT_TRUE(add_step_fold(s, central_fold(s), placed(StepFoldParams{}, 20, 50)).ok);
+    VFoldParams v;
+    v.offset = 120;
+    ASSERT_TRUE(add_v_fold(s, central_fold(s), v).ok);
+    const ValidityReport r = check_validity(s);
+    EXPECT_TRUE(r.valid()) << first_message(r);
+}
+
+TEST(BoxFold, IsValidAndItsFrontPopsOutward)
+{
+    Scaffold s = card();
+    const auto box = add_box_fold(s, central_fold(s), placed(BoxFoldParams{}, 80, 60));
+    ASSERT_TRUE(box.ok);
+    EXPECT_EQ(box.value.patches.size(), 9u);
+    EXPECT_EQ(box.value.offered.size(), 3u);
+    const ValidityReport r = check_validity(s);
+    EXPECT_TRUE(r.valid()) << first_message(r);
+    // The crease between FL and FR leaves the box's front (y = 80) toward smaller y.
+    const auto sweep = simulate_fold(s, {fixtures::deg(90)});
+    const int fl = box.value.patches[5];
+    const Vec3 crease = fixtures::world_point(s, sweep.value.states[0], fl, {0, 80, 15});
+    EXPECT_LT(crease.y(), 80.0 - 1.0);
+}
+
+TEST(BoxFold, WithoutFrontAndBackItShears)
+{
+    Scaffold s = card();
+    BoxFoldParams p = placed(BoxFoldParams{}, 80, 60);
+    p.front = p.back = false;
+    ASSERT_TRUE(add_box_fold(s, central_fold(s), p).ok);
+    const ValidityReport r = check_validity(s);
+    EXPECT_FALSE(r.stable);
+}
+
+TEST(Nesting, TentOnBoxOnBoxAndStepOnTheSide)
+{
+    Scaffold s = card(240, 140);
+    const auto lower = add_box_fold(s, central_fold(s), placed(BoxFoldParams{}, 60, 100));
+    ASSERT_TRUE(lower.ok);
+    BoxFoldParams upper_params = placed(BoxFoldParams{}, 20, 60);
+    upper_params.depth_ground = upper_params.depth_backdrop = 20;
+    upper_params.height = 20;
+    const auto upper = add_box_fold(s, lower.value.offered[0], upper_params, "Upper");
+    ASSERT_TRUE(upper.ok) << upper.diagnostics.front().message;
+    TentFoldParams tent = placed(TentFoldParams{}, 10, 40);
+    tent.foot = tent.foot_backdrop = 10;
+    tent.slope = 14;
+    ASSERT_TRUE(add_tent_fold(s, upper.value.offered[0], tent).ok);
+    StepFoldParams step = placed(StepFoldParams{}, 10, 60);
+    step.run_ground = 15;
+    step.run_backdrop = 15;
+    ASSERT_TRUE(add_step_fold(s, lower.value.offered[1], step).ok);
+    const ValidityReport r = check_validity(s);
+    EXPECT_TRUE(r.valid()) << first_message(r);
+}
+
+TEST(MechanismParameters, BadValuesAreNamedAndLeaveTheScaffoldAlone)
+{
+    const Scaffold base = card();
+    const BasePatchPair host = central_fold(base);
+    auto expect_error = [&](auto add, const std::string& parameter) {
+        Scaffold s = base;
+        const auto r = add(s);
+        EXPECT_FALSE(r.ok) << parameter;
+        ASSERT_FALSE(r.diagnostics.empty()) << parameter;
+        EXPECT_NE(r.diagnostics.front().subject.find(parameter), std::string::npos)
+            << r.diagnostics.front().subject << " / " << parameter;
+        EXPECT_NE(r.diagnostics.front().message.find("must be"), std::string::npos);
+        EXPECT_EQ(s.patches.size(), base.patches.size());
+        EXPECT_EQ(s.hinges.size(), base.hinges.size());
+    };
+    for (double bad : {0.0, -3.0, std::nan(""), 1e9}) {
+        expect_error([&](Scaffold& s) {
+            TentFoldParams p = placed(TentFoldParams{}, 40, 60);
+            p.foot = bad;
+            return add_tent_fold(s, host, p);
+        }, "Foot");
+        expect_error([&](Scaffold& s) {
+            StepFoldParams p = placed(StepFoldParams{}, 40, 60);
+            p.run_backdrop = bad;
+            return add_step_fold(s, host, p);
+        }, "RunBackdrop");
+        expect_error([&](Scaffold& s) {
+            BoxFoldParams p = placed(BoxFoldParams{}, 40, 60);
+            p.height = bad;
+            return add_box_fold(s, host, p);
+        }, "Height");
+        expect_error([&](Scaffold& s) {
+            VFoldParams p;
+            p.spine = bad;
+            return add_v_fold(s, host, p);
+        }, "Spine");
+        expect_error([&](Scaffold& s) {
+            return add_box_fold(s, host, placed(BoxFoldParams{}, 40, bad));
+        }, "Width");
+    }
+    // Inconsistent: slopes too short to meet.
+    expect_error([&](Scaffold& s) {
+        TentFoldParams p = placed(TentFoldParams{}, 40, 60);
+        p.slope = 25;
+        return add_tent_fold(s, host, p);
+    }, "Slope");
+    expect_error([&](Scaffold& s) {
+        return add_step_fold(s, host, placed(StepFoldParams{}, 200, 60));
+    }, "Offset");
+}
+
+TEST(Combinations, BoxFoldsTooCloseCollideAndApartPass)
+{
+    auto two_boxes = [](double gap) {
+        Scaffold s = card(300, 140);
+        BoxFoldParams p = placed(BoxFoldParams{}, 40, 60);
+        p.depth_ground = p.depth_backdrop = p.height = 40;
+        add_box_fold(s, central_fold(s), p, "BoxA");
+        p.offset = 100 + gap;
+        add_box_fold(s, central_fold(s), p, "BoxB");
+        return check_validity(s);
+    };
+    // Closed, each front and back crease reaches d/2 = 40 mm beyond its box (thesis §4.2.2).
+    const ValidityReport close = two_boxes(10);
+    EXPECT_FALSE(close.intersection_free);
+    const ValidityReport apart = two_boxes(90);
+    EXPECT_TRUE(apart.valid()) << first_message(apart);
+}
