@@ -10,6 +10,7 @@
 #include <CGAL/exceptions.h>
 #include <Standard_Failure.hxx>
 
+#include "binding_support.hpp"
 #include "popup/brep_export.hpp"
 #include "popup/check_validity.hpp"
 #include "popup/design_file.hpp"
@@ -17,6 +18,7 @@
 
 namespace py = pybind11;
 using namespace popup;
+using namespace popup::bindings;
 
 namespace {
 
@@ -24,25 +26,6 @@ namespace {
 PyObject* design_error = nullptr;
 PyObject* occt_error = nullptr;
 PyObject* cgal_error = nullptr;
-
-struct DesignFailure : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
-std::string join(const Diagnostics& diagnostics)
-{
-    std::ostringstream s;
-    for (size_t i = 0; i < diagnostics.size(); ++i)
-        s << (i ? "; " : "") << diagnostics[i].subject << ": " << diagnostics[i].message;
-    return s.str();
-}
-
-Scaffold unwrap(Result<Scaffold> r)
-{
-    if (!r.ok)
-        throw DesignFailure(join(r.diagnostics));
-    return std::move(r.value);
-}
 
 py::array_t<double> loop_array(const Loop3& loop)
 {
@@ -137,6 +120,7 @@ PYBIND11_MODULE(popupcore, m)
             PyErr_SetString(cgal_error, e.what());
         }
     });
+    bind_mechanisms(m);
     m.def("_raise_native", &raise_native, py::arg("kind"), py::arg("message"),
           "Test hook: throws a native exception of family 'std', 'invalid_argument', 'occt' or "
           "'cgal' so the translators can be checked.");
@@ -189,7 +173,9 @@ PYBIND11_MODULE(popupcore, m)
         .def_readonly("backdrop", &Scaffold::backdrop)
         .def_readonly("design_angle", &Scaffold::design_angle)
         .def_readonly("paper_thickness", &Scaffold::paper_thickness)
-        .def("size", &Scaffold::size, "Diagonal of the design-state bounding box (mm).");
+        .def("size", &Scaffold::size, "Diagonal of the design-state bounding box (mm).")
+        .def(
+            "copy", [](const Scaffold& s) { return Scaffold(s); }, "An independent copy.");
 
     m.def(
         "scaffold_from_json", [](const std::string& t) { return unwrap(scaffold_from_json(t)); },

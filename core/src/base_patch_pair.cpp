@@ -21,4 +21,4 @@ Vec3 BasePatchPair::on_base(double r, double y) const
     return to_world(s * d.x(), y, s * d.y());
 }
 
-}  // namespace popup
+} // namespace popup

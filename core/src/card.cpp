@@ -62,4 +62,4 @@ BasePatchPair central_fold(const Scaffold& card)
     return pair;
 }
 
-}  // namespace popup
+} // namespace popup

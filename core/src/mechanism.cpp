@@ -29,4 +29,4 @@ void check_placement(const std::string& mechanism, const BasePatchPair& host, co
     }
 }
 
-}  // namespace popup
+} // namespace popup

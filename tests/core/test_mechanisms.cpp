@@ -27,14 +27,13 @@ std::string first_message(const ValidityReport& r)
     return r.diagnostics.empty() ? "" : r.diagnostics.front().message;
 }
 
-template <class Params>
-Params placed(Params p, double offset, double width)
+template <class Params> Params placed(Params p, double offset, double width)
 {
     p.offset = offset;
     p.width = width;
     return p;
 }
-}  // namespace
+} // namespace
 
 TEST(CardMechanisms, SymmetricTentIsValidAndFollowsTheClosedForm)
 {
@@ -144,39 +143,49 @@ TEST(MechanismParameters, BadValuesAreNamedAndLeaveTheScaffoldAlone)
         EXPECT_EQ(s.hinges.size(), base.hinges.size());
     };
     for (double bad : {0.0, -3.0, std::nan(""), 1e9}) {
-        expect_error([&](Scaffold& s) {
-            TentFoldParams p = placed(TentFoldParams{}, 40, 60);
-            p.foot = bad;
-            return add_tent_fold(s, host, p);
-        }, "Foot");
-        expect_error([&](Scaffold& s) {
-            StepFoldParams p = placed(StepFoldParams{}, 40, 60);
-            p.run_backdrop = bad;
-            return add_step_fold(s, host, p);
-        }, "RunBackdrop");
-        expect_error([&](Scaffold& s) {
-            BoxFoldParams p = placed(BoxFoldParams{}, 40, 60);
-            p.height = bad;
-            return add_box_fold(s, host, p);
-        }, "Height");
-        expect_error([&](Scaffold& s) {
-            VFoldParams p;
-            p.spine = bad;
-            return add_v_fold(s, host, p);
-        }, "Spine");
-        expect_error([&](Scaffold& s) {
-            return add_box_fold(s, host, placed(BoxFoldParams{}, 40, bad));
-        }, "Width");
+        expect_error(
+            [&](Scaffold& s) {
+                TentFoldParams p = placed(TentFoldParams{}, 40, 60);
+                p.foot = bad;
+                return add_tent_fold(s, host, p);
+            },
+            "Foot");
+        expect_error(
+            [&](Scaffold& s) {
+                StepFoldParams p = placed(StepFoldParams{}, 40, 60);
+                p.run_backdrop = bad;
+                return add_step_fold(s, host, p);
+            },
+            "RunBackdrop");
+        expect_error(
+            [&](Scaffold& s) {
+                BoxFoldParams p = placed(BoxFoldParams{}, 40, 60);
+                p.height = bad;
+                return add_box_fold(s, host, p);
+            },
+            "Height");
+        expect_error(
+            [&](Scaffold& s) {
+                VFoldParams p;
+                p.spine = bad;
+                return add_v_fold(s, host, p);
+            },
+            "Spine");
+        expect_error(
+            [&](Scaffold& s) { return add_box_fold(s, host, placed(BoxFoldParams{}, 40, bad)); },
+            "Width");
     }
     // Inconsistent: slopes too short to meet.
-    expect_error([&](Scaffold& s) {
-        TentFoldParams p = placed(TentFoldParams{}, 40, 60);
-        p.slope = 25;
-        return add_tent_fold(s, host, p);
-    }, "Slope");
-    expect_error([&](Scaffold& s) {
-        return add_step_fold(s, host, placed(StepFoldParams{}, 200, 60));
-    }, "Offset");
+    expect_error(
+        [&](Scaffold& s) {
+            TentFoldParams p = placed(TentFoldParams{}, 40, 60);
+            p.slope = 25;
+            return add_tent_fold(s, host, p);
+        },
+        "Slope");
+    expect_error(
+        [&](Scaffold& s) { return add_step_fold(s, host, placed(StepFoldParams{}, 200, 60)); },
+        "Offset");
 }
 
 TEST(Combinations, BoxFoldsTooCloseCollideAndApartPass)

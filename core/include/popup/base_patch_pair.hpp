@@ -11,15 +11,15 @@ namespace popup {
 /// bisector of the opening), x = y × z toward the ground side.
 struct BasePatchPair {
     std::string name;
-    int ground = -1;    ///< patch id on the local x > 0 side
-    int backdrop = -1;  ///< patch id on the local x < 0 side
+    int ground = -1;   ///< patch id on the local x > 0 side
+    int backdrop = -1; ///< patch id on the local x < 0 side
     Vec3 origin = Vec3::Zero();
     Vec3 axis = Vec3::UnitY();
     Vec3 up = Vec3::UnitZ();
-    double opening = 3.14159265358979323846;  ///< angle between the two patches (radians)
-    double length = 0.0;          ///< usable hinge length from origin (mm)
-    double ground_depth = 0.0;    ///< how far the ground patch reaches from the hinge (mm)
-    double backdrop_depth = 0.0;  ///< same for the backdrop patch
+    double opening = 3.14159265358979323846; ///< angle between the two patches (radians)
+    double length = 0.0;                     ///< usable hinge length from origin (mm)
+    double ground_depth = 0.0;   ///< how far the ground patch reaches from the hinge (mm)
+    double backdrop_depth = 0.0; ///< same for the backdrop patch
 
     Vec3 x_axis() const { return axis.cross(up); }
     /// World point of local (x, y, z).
@@ -35,4 +35,4 @@ struct BasePatchPair {
     Vec3 on_base(double r, double y) const;
 };
 
-}  // namespace popup
+} // namespace popup

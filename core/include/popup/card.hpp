@@ -8,8 +8,8 @@ namespace popup {
 /// A folded card: two pages of `depth` on either side of a central fold of length `width`, open
 /// flat at the design state (thesis §4.3 frame: fold along y from the origin, ground at x > 0).
 struct CardParams {
-    double width = 210.0;  ///< along the central fold (mm)
-    double depth = 148.0;  ///< each page, from the fold to its edge (mm)
+    double width = 210.0; ///< along the central fold (mm)
+    double depth = 148.0; ///< each page, from the fold to its edge (mm)
     double paper_thickness = 0.2;
 };
 
@@ -20,4 +20,4 @@ Result<Scaffold> make_card(const CardParams& params);
 /// The central fold as a base patch pair.
 BasePatchPair central_fold(const Scaffold& card);
 
-}  // namespace popup
+} // namespace popup

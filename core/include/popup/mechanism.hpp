@@ -18,8 +18,8 @@ struct MechanismParts {
 
 /// Placement shared by every mechanism: where along the host hinge it starts and how wide it is.
 struct Placement1D {
-    double offset = 0.0;  ///< from the host pair's origin along its hinge (mm)
-    double width = 40.0;  ///< extent along the hinge (mm)
+    double offset = 0.0; ///< from the host pair's origin along its hinge (mm)
+    double width = 40.0; ///< extent along the hinge (mm)
 };
 
 /// Checks that [offset, offset + width] fits the host hinge; adds a named error otherwise.
@@ -30,4 +30,4 @@ void check_placement(const std::string& mechanism, const BasePatchPair& host, co
 void range_error(Diagnostics& errors, const std::string& mechanism, const std::string& parameter,
                  double value, const std::string& unit, const std::string& range);
 
-}  // namespace popup
+} // namespace popup

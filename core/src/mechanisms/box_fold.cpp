@@ -37,12 +37,15 @@ Result<MechanismParts> add_box_fold(Scaffold& scaffold, const BasePatchPair& hos
     MechanismBuilder m(scaffold, host, name);
     // Local section at the design state: C on x = 0 from the hinge up to the top, L at x = g,
     // R at x = −b, the top at z = c. Outlines wind so normals face out of the box.
-    const int C = m.patch({{0, y0, 0}, {0, y1, 0}, {0, y1, c}, {0, y0, c}}, PatchRole::support, "C");
-    const int L = m.patch({{g, y0, 0}, {g, y1, 0}, {g, y1, c}, {g, y0, c}}, PatchRole::support, "L");
+    const int C =
+        m.patch({{0, y0, 0}, {0, y1, 0}, {0, y1, c}, {0, y0, c}}, PatchRole::support, "C");
+    const int L =
+        m.patch({{g, y0, 0}, {g, y1, 0}, {g, y1, c}, {g, y0, c}}, PatchRole::support, "L");
     const int R =
         m.patch({{-b, y0, 0}, {-b, y0, c}, {-b, y1, c}, {-b, y1, 0}}, PatchRole::support, "R");
     const int TG = m.patch({{0, y0, c}, {g, y0, c}, {g, y1, c}, {0, y1, c}}, PatchRole::top, "TG");
-    const int TB = m.patch({{-b, y0, c}, {0, y0, c}, {0, y1, c}, {-b, y1, c}}, PatchRole::top, "TB");
+    const int TB =
+        m.patch({{-b, y0, c}, {0, y0, c}, {0, y1, c}, {-b, y1, c}}, PatchRole::top, "TB");
     m.hinge(host.ground, L, {g, y0, 0}, {g, y1, 0});
     m.hinge(host.backdrop, R, {-b, y0, 0}, {-b, y1, 0});
     m.hinge(host.ground, C, {0, y0, 0}, {0, y1, 0});
@@ -114,4 +117,4 @@ Result<MechanismParts> add_box_fold(Scaffold& scaffold, const BasePatchPair& hos
     return r;
 }
 
-}  // namespace popup
+} // namespace popup

@@ -4,15 +4,13 @@
 
 namespace popup {
 
-MechanismBuilder::MechanismBuilder(Scaffold& scaffold, const BasePatchPair& host,
-                                   std::string name)
+MechanismBuilder::MechanismBuilder(Scaffold& scaffold, const BasePatchPair& host, std::string name)
     : scaffold_(scaffold), host_(host)
 {
     parts_.name = std::move(name);
 }
 
-int MechanismBuilder::patch(const std::vector<Vec3>& local, PatchRole role,
-                            const std::string& part)
+int MechanismBuilder::patch(const std::vector<Vec3>& local, PatchRole role, const std::string& part)
 {
     Patch p;
     p.id = 0;
@@ -37,6 +35,9 @@ void MechanismBuilder::hinge(int a, int b, const Vec3& local_from, const Vec3& l
     scaffold_.hinges.push_back({id, a, b, world(local_from), world(local_to), direction});
 }
 
-void MechanismBuilder::glue(int a, int b) { scaffold_.glue.push_back({a, b}); }
+void MechanismBuilder::glue(int a, int b)
+{
+    scaffold_.glue.push_back({a, b});
+}
 
-}  // namespace popup
+} // namespace popup

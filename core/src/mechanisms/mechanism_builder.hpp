@@ -28,4 +28,4 @@ private:
     MechanismParts parts_;
 };
 
-}  // namespace popup
+} // namespace popup

@@ -25,13 +25,14 @@ Result<MechanismParts> add_step_fold(Scaffold& scaffold, const BasePatchPair& ho
     }
     const Vec2 A = p.run_ground * host.ground_direction();
     const Vec2 D = p.run_backdrop * host.backdrop_direction();
-    const Vec2 C = A + D;  // the parallelogram's fourth corner (docs/MATH.md)
+    const Vec2 C = A + D; // the parallelogram's fourth corner (docs/MATH.md)
     MechanismBuilder m(scaffold, host, name);
     const double y0 = p.offset, y1 = p.offset + p.width;
     auto at = [](const Vec2& q, double y) { return Vec3(q.x(), y, q.y()); };
     const int riser =
         m.patch({at(C, y0), at(A, y0), at(A, y1), at(C, y1)}, PatchRole::front, "riser");
-    const int tread = m.patch({at(D, y0), at(C, y0), at(C, y1), at(D, y1)}, PatchRole::top, "tread");
+    const int tread =
+        m.patch({at(D, y0), at(C, y0), at(C, y1), at(D, y1)}, PatchRole::top, "tread");
     // Flat on an open host the fold can pop either way: riser and tread lift toward the host's
     // printed side and the nose is a mountain (the parallelogram branch).
     m.hinge(host.ground, riser, at(A, y0), at(A, y1), FoldDirection::valley);
@@ -41,4 +42,4 @@ Result<MechanismParts> add_step_fold(Scaffold& scaffold, const BasePatchPair& ho
     return r;
 }
 
-}  // namespace popup
+} // namespace popup

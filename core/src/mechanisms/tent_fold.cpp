@@ -8,7 +8,10 @@
 
 namespace popup {
 
-double tent_backdrop_slope(const TentFoldParams& p) { return p.foot + p.slope - p.foot_backdrop; }
+double tent_backdrop_slope(const TentFoldParams& p)
+{
+    return p.foot + p.slope - p.foot_backdrop;
+}
 
 Result<MechanismParts> add_tent_fold(Scaffold& scaffold, const BasePatchPair& host,
                                      const TentFoldParams& p, const std::string& name)
@@ -28,8 +31,8 @@ Result<MechanismParts> add_tent_fold(Scaffold& scaffold, const BasePatchPair& ho
     const double gap = (A - D).norm();
     if (e.empty()) {
         // The slopes meet above the feet when |s1 − s2| < |AD| < s1 + s2, s2 = a1 + s1 − a2.
-        const double lowest = std::max((gap - p.foot + p.foot_backdrop) / 2,
-                                       p.foot_backdrop - p.foot);
+        const double lowest =
+            std::max((gap - p.foot + p.foot_backdrop) / 2, p.foot_backdrop - p.foot);
         if (!(p.slope > lowest && std::isfinite(p.slope))) {
             std::ostringstream m;
             m << "> " << lowest << " mm so both slopes reach the apex (the backdrop slope is "
@@ -59,8 +62,8 @@ Result<MechanismParts> add_tent_fold(Scaffold& scaffold, const BasePatchPair& ho
     auto at = [](const Vec2& q, double y) { return Vec3(q.x(), y, q.y()); };
     const int slope_g =
         m.patch({at(A, y0), at(A, y1), at(C, y1), at(C, y0)}, PatchRole::support, "slope_ground");
-    const int slope_b = m.patch({at(C, y0), at(C, y1), at(D, y1), at(D, y0)}, PatchRole::support,
-                                "slope_backdrop");
+    const int slope_b =
+        m.patch({at(C, y0), at(C, y1), at(D, y1), at(D, y0)}, PatchRole::support, "slope_backdrop");
     m.hinge(host.ground, slope_g, at(A, y0), at(A, y1));
     m.hinge(host.backdrop, slope_b, at(D, y0), at(D, y1));
     m.hinge(slope_g, slope_b, at(C, y0), at(C, y1));
@@ -68,4 +71,4 @@ Result<MechanismParts> add_tent_fold(Scaffold& scaffold, const BasePatchPair& ho
     return r;
 }
 
-}  // namespace popup
+} // namespace popup

@@ -34,10 +34,10 @@ Result<MechanismParts> add_v_fold(Scaffold& scaffold, const BasePatchPair& host,
     }
     if (e.empty()) {
         // Extent along the host hinge: from O to the farthest of A, B and P.
-        const double lo = std::min({0.0, p.run * std::cos(p.hinge_angle),
-                                    p.spine * std::cos(p.spine_angle)});
-        const double hi = std::max({0.0, p.run * std::cos(p.hinge_angle),
-                                    p.spine * std::cos(p.spine_angle)});
+        const double lo =
+            std::min({0.0, p.run * std::cos(p.hinge_angle), p.spine * std::cos(p.spine_angle)});
+        const double hi =
+            std::max({0.0, p.run * std::cos(p.hinge_angle), p.spine * std::cos(p.spine_angle)});
         std::ostringstream m;
         m << ">= " << -lo << " mm and <= " << host.length - hi << " mm (the v-fold spans "
           << hi - lo << " mm of " << host.name << ")";
@@ -65,4 +65,4 @@ Result<MechanismParts> add_v_fold(Scaffold& scaffold, const BasePatchPair& host,
     return r;
 }
 
-}  // namespace popup
+} // namespace popup

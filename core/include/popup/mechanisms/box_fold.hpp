@@ -10,15 +10,15 @@ namespace popup {
 /// foldability conditions g + l = c + t_g and b + r = c + t_b hold by construction. Offers its top
 /// and its two sides as base patch pairs. Needs a host open flat at the design state.
 struct BoxFoldParams : Placement1D {
-    double depth_ground = 30.0;    ///< g = t_g (mm)
-    double depth_backdrop = 30.0;  ///< b = t_b (mm)
-    double height = 30.0;          ///< c = l = r (mm)
-    bool front = true;             ///< FL, FR (without front and back the box shears)
-    bool back = true;              ///< BL, BR
+    double depth_ground = 30.0;   ///< g = t_g (mm)
+    double depth_backdrop = 30.0; ///< b = t_b (mm)
+    double height = 30.0;         ///< c = l = r (mm)
+    bool front = true;            ///< FL, FR (without front and back the box shears)
+    bool back = true;             ///< BL, BR
 };
 
 Result<MechanismParts> add_box_fold(Scaffold& scaffold, const BasePatchPair& host,
                                     const BoxFoldParams& params,
                                     const std::string& name = "BoxFold");
 
-}  // namespace popup
+} // namespace popup

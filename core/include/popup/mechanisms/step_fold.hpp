@@ -8,12 +8,12 @@ namespace popup {
 /// as long as run_backdrop and the tread as run_ground, so the four hinges always form a
 /// parallelogram: flat when the host is open flat, erect at 90°.
 struct StepFoldParams : Placement1D {
-    double run_ground = 30.0;    ///< |S1| (mm)
-    double run_backdrop = 20.0;  ///< |S2| (mm)
+    double run_ground = 30.0;   ///< |S1| (mm)
+    double run_backdrop = 20.0; ///< |S2| (mm)
 };
 
 Result<MechanismParts> add_step_fold(Scaffold& scaffold, const BasePatchPair& host,
                                      const StepFoldParams& params,
                                      const std::string& name = "StepFold");
 
-}  // namespace popup
+} // namespace popup

@@ -8,9 +8,9 @@ namespace popup {
 /// apex. The backdrop slope is derived so the tent folds flat (|T1| + |T3| = |T2| + |T4|):
 /// slope_backdrop = foot + slope − foot_backdrop.
 struct TentFoldParams : Placement1D {
-    double foot = 30.0;           ///< |T1|, on the host's ground (mm)
-    double foot_backdrop = 30.0;  ///< |T2|, on the host's backdrop (mm)
-    double slope = 40.0;          ///< |T3|, the ground-side slope (mm)
+    double foot = 30.0;          ///< |T1|, on the host's ground (mm)
+    double foot_backdrop = 30.0; ///< |T2|, on the host's backdrop (mm)
+    double slope = 40.0;         ///< |T3|, the ground-side slope (mm)
 };
 
 double tent_backdrop_slope(const TentFoldParams& params);
@@ -20,4 +20,4 @@ Result<MechanismParts> add_tent_fold(Scaffold& scaffold, const BasePatchPair& ho
                                      const TentFoldParams& params,
                                      const std::string& name = "TentFold");
 
-}  // namespace popup
+} // namespace popup

@@ -8,14 +8,14 @@ namespace popup {
 /// hinge, and to each other along the spine O-P. At the design state P lies in the host's
 /// bisecting plane at `spine` from O, `spine_angle` above the host's hinge.
 struct VFoldParams {
-    double offset = 0.0;                        ///< O along the host hinge (mm)
-    double run = 50.0;                          ///< |OA| = |OB| (mm)
-    double hinge_angle = 0.78539816339744831;   ///< α, radians (thesis: 45°)
-    double spine = 55.0;                        ///< |OP| (mm)
-    double spine_angle = 1.0471975511965976;    ///< γ, radians
+    double offset = 0.0;                      ///< O along the host hinge (mm)
+    double run = 50.0;                        ///< |OA| = |OB| (mm)
+    double hinge_angle = 0.78539816339744831; ///< α, radians (thesis: 45°)
+    double spine = 55.0;                      ///< |OP| (mm)
+    double spine_angle = 1.0471975511965976;  ///< γ, radians
 };
 
 Result<MechanismParts> add_v_fold(Scaffold& scaffold, const BasePatchPair& host,
                                   const VFoldParams& params, const std::string& name = "VFold");
 
-}  // namespace popup
+} // namespace popup

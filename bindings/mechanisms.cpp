@@ -1,0 +1,107 @@
+// Bindings of the card and the mechanism generators: declarations only.
+#include <pybind11/eigen.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "binding_support.hpp"
+#include "popup/card.hpp"
+#include "popup/mechanisms/box_fold.hpp"
+#include "popup/mechanisms/step_fold.hpp"
+#include "popup/mechanisms/tent_fold.hpp"
+#include "popup/mechanisms/v_fold.hpp"
+
+namespace py = pybind11;
+using namespace popup;
+
+namespace {
+
+// Mechanism errors already name the mechanism and the parameter in their message.
+MechanismParts added(Result<MechanismParts> r)
+{
+    if (!r.ok) {
+        std::string text;
+        for (const Diagnostic& d : r.diagnostics)
+            text += (text.empty() ? "" : "; ") + d.message;
+        throw bindings::DesignFailure(text);
+    }
+    return std::move(r.value);
+}
+
+template <class Params, class Add>
+void def_generator(py::module_& m, const char* function, Add add, const char* doc)
+{
+    m.def(
+        function,
+        [add](Scaffold& s, const BasePatchPair& host, const Params& p, const std::string& name) {
+            return added(add(s, host, p, name));
+        },
+        py::arg("scaffold"), py::arg("host"), py::arg("params"), py::arg("name"), doc);
+}
+
+}  // namespace
+
+void bind_mechanisms(py::module_& m)
+{
+    py::class_<CardParams>(m, "CardParams")
+        .def(py::init<>())
+        .def_readwrite("width", &CardParams::width)
+        .def_readwrite("depth", &CardParams::depth)
+        .def_readwrite("paper_thickness", &CardParams::paper_thickness);
+    m.def(
+        "make_card", [](const CardParams& p) { return bindings::unwrap(make_card(p)); },
+        py::arg("params"), "A card open flat: ground id 0, backdrop id 1 (DesignError if bad).");
+
+    py::class_<BasePatchPair>(m, "BasePatchPair")
+        .def_readonly("name", &BasePatchPair::name)
+        .def_readonly("ground", &BasePatchPair::ground)
+        .def_readonly("backdrop", &BasePatchPair::backdrop)
+        .def_readonly("origin", &BasePatchPair::origin)
+        .def_readonly("axis", &BasePatchPair::axis)
+        .def_readonly("up", &BasePatchPair::up)
+        .def_readonly("opening", &BasePatchPair::opening)
+        .def_readonly("length", &BasePatchPair::length)
+        .def_readonly("ground_depth", &BasePatchPair::ground_depth)
+        .def_readonly("backdrop_depth", &BasePatchPair::backdrop_depth);
+    m.def("central_fold", &central_fold, py::arg("card"), "The card's central fold as a pair.");
+
+    py::class_<MechanismParts>(m, "MechanismParts")
+        .def_readonly("name", &MechanismParts::name)
+        .def_readonly("patches", &MechanismParts::patches)
+        .def_readonly("offered", &MechanismParts::offered);
+
+    py::class_<Placement1D>(m, "Placement1D")
+        .def_readwrite("offset", &Placement1D::offset)
+        .def_readwrite("width", &Placement1D::width);
+    py::class_<TentFoldParams, Placement1D>(m, "TentFoldParams")
+        .def(py::init<>())
+        .def_readwrite("foot", &TentFoldParams::foot)
+        .def_readwrite("foot_backdrop", &TentFoldParams::foot_backdrop)
+        .def_readwrite("slope", &TentFoldParams::slope);
+    m.def("tent_backdrop_slope", &tent_backdrop_slope, py::arg("params"));
+    py::class_<StepFoldParams, Placement1D>(m, "StepFoldParams")
+        .def(py::init<>())
+        .def_readwrite("run_ground", &StepFoldParams::run_ground)
+        .def_readwrite("run_backdrop", &StepFoldParams::run_backdrop);
+    py::class_<VFoldParams>(m, "VFoldParams")
+        .def(py::init<>())
+        .def_readwrite("offset", &VFoldParams::offset)
+        .def_readwrite("run", &VFoldParams::run)
+        .def_readwrite("hinge_angle", &VFoldParams::hinge_angle)
+        .def_readwrite("spine", &VFoldParams::spine)
+        .def_readwrite("spine_angle", &VFoldParams::spine_angle);
+    py::class_<BoxFoldParams, Placement1D>(m, "BoxFoldParams")
+        .def(py::init<>())
+        .def_readwrite("depth_ground", &BoxFoldParams::depth_ground)
+        .def_readwrite("depth_backdrop", &BoxFoldParams::depth_backdrop)
+        .def_readwrite("height", &BoxFoldParams::height)
+        .def_readwrite("front", &BoxFoldParams::front)
+        .def_readwrite("back", &BoxFoldParams::back);
+
+    def_generator<TentFoldParams>(m, "add_tent_fold", &add_tent_fold,
+                                  "Adds a tent fold on `host`; DesignError names a bad parameter.");
+    def_generator<StepFoldParams>(m, "add_step_fold", &add_step_fold,
+                                  "Adds a parallelogram step fold on `host`.");
+    def_generator<VFoldParams>(m, "add_v_fold", &add_v_fold, "Adds a type-2 v-fold on `host`.");
+    def_generator<BoxFoldParams>(m, "add_box_fold", &add_box_fold,
+                                 "Adds a box fold; its parts offer the top and both sides.");
+}
