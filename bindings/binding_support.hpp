@@ -23,14 +23,13 @@ inline std::string join(const Diagnostics& diagnostics)
 }
 
 /// The value, or DesignFailure with every diagnostic.
-template <class T>
-T unwrap(Result<T> r)
+template <class T> T unwrap(Result<T> r)
 {
     if (!r.ok)
         throw DesignFailure(join(r.diagnostics));
     return std::move(r.value);
 }
 
-}  // namespace popup::bindings
+} // namespace popup::bindings
 
 void bind_mechanisms(pybind11::module_& m);

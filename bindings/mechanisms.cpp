@@ -38,7 +38,7 @@ void def_generator(py::module_& m, const char* function, Add add, const char* do
         py::arg("scaffold"), py::arg("host"), py::arg("params"), py::arg("name"), doc);
 }
 
-}  // namespace
+} // namespace
 
 void bind_mechanisms(py::module_& m)
 {

@@ -29,4 +29,18 @@ void check_placement(const std::string& mechanism, const BasePatchPair& host, co
     }
 }
 
+std::vector<std::pair<std::string, std::string>>
+placement_conflicts(const std::vector<MechanismParts>& mechanisms)
+{
+    std::vector<std::pair<std::string, std::string>> conflicts;
+    for (size_t i = 0; i < mechanisms.size(); ++i)
+        for (size_t j = i + 1; j < mechanisms.size(); ++j) {
+            const MechanismParts& a = mechanisms[i];
+            const MechanismParts& b = mechanisms[j];
+            if (a.host == b.host && a.sweep_from < b.sweep_to && b.sweep_from < a.sweep_to)
+                conflicts.push_back({a.name, b.name});
+        }
+    return conflicts;
+}
+
 } // namespace popup

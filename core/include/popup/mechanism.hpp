@@ -14,7 +14,16 @@ struct MechanismParts {
     std::string name;
     std::vector<int> patches;
     std::vector<BasePatchPair> offered;
+    std::string host;        ///< name of the base patch pair it stands on
+    double sweep_from = 0.0; ///< interval along the host hinge it occupies at any fold angle
+    double sweep_to = 0.0;   ///< (mm from the host's origin; thesis §4.2.2)
 };
+
+/// The thesis's sufficient placement condition (§4.2.2) as a fast pre-check: two mechanisms on
+/// the same host whose swept intervals along its hinge overlap may collide. Returns the pairs
+/// of mechanism names that do. The simulator has the last word.
+std::vector<std::pair<std::string, std::string>>
+placement_conflicts(const std::vector<MechanismParts>& mechanisms);
 
 /// Placement shared by every mechanism: where along the host hinge it starts and how wide it is.
 struct Placement1D {

@@ -7,6 +7,20 @@
 
 namespace popup {
 
+BoxSection box_fold_section(const BoxFoldParams& p, double opening)
+{
+    // Sides stay parallel to C, which stays on the bisector; the end crease's foot sits where the
+    // two end panels (rectangles g × c) meet (docs/MATH.md, Box fold).
+    const double d = opening / 2, g = p.depth_ground;
+    BoxSection s;
+    s.top = {0, p.height};
+    s.side_ground_top = Vec2(g * std::sin(d), g * std::cos(d) + p.height);
+    s.side_backdrop_top = Vec2(-g * std::sin(d), g * std::cos(d) + p.height);
+    s.crease_foot = {0, g * std::cos(d)};
+    s.crease_out = g * std::cos(d);
+    return s;
+}
+
 Result<MechanismParts> add_box_fold(Scaffold& scaffold, const BasePatchPair& host,
                                     const BoxFoldParams& p, const std::string& name)
 {
@@ -28,6 +42,13 @@ Result<MechanismParts> add_box_fold(Scaffold& scaffold, const BasePatchPair& hos
         range_error(e, name, "DepthBackdrop", p.depth_backdrop, "mm", bmax.str());
     if (!(p.height > 0 && p.height <= 2000))
         range_error(e, name, "Height", p.height, "mm", "> 0 and <= 2000 mm");
+    if (e.empty() && (p.front || p.back) && p.depth_backdrop != p.depth_ground) {
+        std::ostringstream m;
+        m << "equal to DepthGround (" << p.depth_ground
+          << " mm) while the box has front or back panels: otherwise C turns away from the page "
+             "and the box cannot close (docs/MATH.md, Box fold)";
+        range_error(e, name, "DepthBackdrop", p.depth_backdrop, "mm", m.str());
+    }
     if (!e.empty()) {
         r.ok = false;
         return r;
@@ -113,6 +134,9 @@ Result<MechanismParts> add_box_fold(Scaffold& scaffold, const BasePatchPair& hos
     side_r.ground_depth = c;
     side_r.backdrop_depth = host.backdrop_depth - b;
     m.offer(side_r);
+    // Closed, each end crease stands out of its end by the box's half depth (thesis §4.2.2).
+    const double reach = (p.front || p.back) ? g : 0.0;
+    m.sweeps(y0 - (p.front ? reach : 0.0), y1 + (p.back ? reach : 0.0));
     r.value = m.finish();
     return r;
 }

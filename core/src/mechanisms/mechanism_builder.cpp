@@ -8,6 +8,7 @@ MechanismBuilder::MechanismBuilder(Scaffold& scaffold, const BasePatchPair& host
     : scaffold_(scaffold), host_(host)
 {
     parts_.name = std::move(name);
+    parts_.host = host.name;
 }
 
 int MechanismBuilder::patch(const std::vector<Vec3>& local, PatchRole role, const std::string& part)

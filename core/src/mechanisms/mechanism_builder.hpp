@@ -19,6 +19,12 @@ public:
     void glue(int a, int b);
     Vec3 world(const Vec3& local) const { return host_.to_world(local.x(), local.y(), local.z()); }
     void offer(const BasePatchPair& pair) { parts_.offered.push_back(pair); }
+    /// The interval along the host hinge the mechanism occupies over its whole motion.
+    void sweeps(double from, double to)
+    {
+        parts_.sweep_from = from;
+        parts_.sweep_to = to;
+    }
     const BasePatchPair& host() const { return host_; }
     MechanismParts finish() { return parts_; }
 

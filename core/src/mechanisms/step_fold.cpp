@@ -1,10 +1,19 @@
 #include "popup/mechanisms/step_fold.hpp"
 
+#include <cmath>
 #include <sstream>
 
 #include "mechanism_builder.hpp"
 
 namespace popup {
+
+Vec2 step_nose(const StepFoldParams& p, double opening)
+{
+    // The parallelogram's fourth corner: a·g + b·b (docs/MATH.md).
+    const Vec2 g(std::sin(opening / 2), std::cos(opening / 2));
+    const Vec2 b(-g.x(), g.y());
+    return p.run_ground * g + p.run_backdrop * b;
+}
 
 Result<MechanismParts> add_step_fold(Scaffold& scaffold, const BasePatchPair& host,
                                      const StepFoldParams& p, const std::string& name)
@@ -38,6 +47,7 @@ Result<MechanismParts> add_step_fold(Scaffold& scaffold, const BasePatchPair& ho
     m.hinge(host.ground, riser, at(A, y0), at(A, y1), FoldDirection::valley);
     m.hinge(host.backdrop, tread, at(D, y0), at(D, y1), FoldDirection::valley);
     m.hinge(riser, tread, at(C, y0), at(C, y1), FoldDirection::mountain);
+    m.sweeps(y0, y1); // it moves only across the hinge
     r.value = m.finish();
     return r;
 }

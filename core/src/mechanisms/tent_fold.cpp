@@ -13,6 +13,25 @@ double tent_backdrop_slope(const TentFoldParams& p)
     return p.foot + p.slope - p.foot_backdrop;
 }
 
+Vec2 tent_apex(const TentFoldParams& p, double opening)
+{
+    const Vec2 g(std::sin(opening / 2), std::cos(opening / 2));
+    const Vec2 b(-g.x(), g.y());
+    const Vec2 A = p.foot * g, D = p.foot_backdrop * b;
+    const double s1 = p.slope, s2 = tent_backdrop_slope(p);
+    const double gap = (D - A).norm();
+    if (gap < 1e-12 * (p.foot + p.slope))
+        return A + s1 * g; // closed with equal feet: the limit along the page
+    // On the circles |C − A| = s1 and |C − D| = s2, on the open side of AD (docs/MATH.md).
+    const Vec2 along = (D - A) / gap;
+    const double t = (s1 * s1 - s2 * s2 + gap * gap) / (2 * gap);
+    const double h = std::sqrt(std::max(0.0, s1 * s1 - t * t));
+    Vec2 normal(-along.y(), along.x());
+    if (normal.y() < 0)
+        normal = -normal;
+    return A + t * along + h * normal;
+}
+
 Result<MechanismParts> add_tent_fold(Scaffold& scaffold, const BasePatchPair& host,
                                      const TentFoldParams& p, const std::string& name)
 {
@@ -47,15 +66,7 @@ Result<MechanismParts> add_tent_fold(Scaffold& scaffold, const BasePatchPair& ho
         r.ok = false;
         return r;
     }
-    const double s1 = p.slope, s2 = tent_backdrop_slope(p);
-    // Apex: on the circles |C − A| = s1 and |C − D| = s2, on the open side of AD.
-    const Vec2 along = (D - A) / gap;
-    const double t = (s1 * s1 - s2 * s2 + gap * gap) / (2 * gap);
-    const double h = std::sqrt(std::max(0.0, s1 * s1 - t * t));
-    Vec2 normal(-along.y(), along.x());
-    if (normal.y() < 0)
-        normal = -normal;
-    const Vec2 C = A + t * along + h * normal;
+    const Vec2 C = tent_apex(p, host.opening);
 
     MechanismBuilder m(scaffold, host, name);
     const double y0 = p.offset, y1 = p.offset + p.width;
@@ -67,6 +78,7 @@ Result<MechanismParts> add_tent_fold(Scaffold& scaffold, const BasePatchPair& ho
     m.hinge(host.ground, slope_g, at(A, y0), at(A, y1));
     m.hinge(host.backdrop, slope_b, at(D, y0), at(D, y1));
     m.hinge(slope_g, slope_b, at(C, y0), at(C, y1));
+    m.sweeps(y0, y1); // it moves only across the hinge
     r.value = m.finish();
     return r;
 }

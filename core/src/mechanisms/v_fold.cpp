@@ -8,6 +8,30 @@
 
 namespace popup {
 
+Vec3 v_fold_tip(const VFoldParams& p, double design_opening, double opening)
+{
+    // P = (0, p_y, p_z) on |P| = L and |P − A(φ)| = |P0 − A(φ_d)|: a line meets a circle
+    // (docs/MATH.md, V-fold); the root is the one the design state sits on.
+    const double X = p.run * std::sin(p.hinge_angle), Y = p.run * std::cos(p.hinge_angle);
+    const double L = p.spine;
+    const Vec2 p0(L * std::cos(p.spine_angle), L * std::sin(p.spine_angle));
+    auto roots = [&](double phi, Vec2& plus, Vec2& minus) {
+        const double c = X * std::cos(phi / 2);
+        // K = p_y·Y + p_z·X cos(φ/2) is the same at every φ: take it at the design state.
+        const double K = Y * p0.x() + X * std::cos(design_opening / 2) * p0.y();
+        const double n2 = Y * Y + c * c;
+        const double disc = std::sqrt(std::max(0.0, n2 * L * L - K * K));
+        plus = Vec2(K * Y - c * disc, K * c + Y * disc) / n2;
+        minus = Vec2(K * Y + c * disc, K * c - Y * disc) / n2;
+    };
+    Vec2 plus, minus;
+    roots(design_opening, plus, minus);
+    const bool take_plus = (plus - p0).norm() <= (minus - p0).norm();
+    roots(opening, plus, minus);
+    const Vec2 tip = take_plus ? plus : minus;
+    return {0.0, p.offset + tip.x(), tip.y()};
+}
+
 Result<MechanismParts> add_v_fold(Scaffold& scaffold, const BasePatchPair& host,
                                   const VFoldParams& p, const std::string& name)
 {
@@ -61,6 +85,15 @@ Result<MechanismParts> add_v_fold(Scaffold& scaffold, const BasePatchPair& host,
     m.hinge(host.ground, wing_g, O, A);
     m.hinge(host.backdrop, wing_b, O, B);
     m.hinge(wing_g, wing_b, O, P);
+    // P travels along the hinge as the host closes: sample its closed form for the sweep.
+    double lo = std::min({0.0, along, P.y() - p.offset}),
+           hi = std::max({0.0, along, P.y() - p.offset});
+    for (int k = 0; k <= 90; ++k) {
+        const double y = v_fold_tip(p, host.opening, host.opening * k / 90).y() - p.offset;
+        lo = std::min(lo, y);
+        hi = std::max(hi, y);
+    }
+    m.sweeps(p.offset + lo, p.offset + hi);
     r.value = m.finish();
     return r;
 }

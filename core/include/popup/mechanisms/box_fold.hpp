@@ -17,6 +17,16 @@ struct BoxFoldParams : Placement1D {
     bool back = true;             ///< BL, BR
 };
 
+/// Closed form of a box fold's section when its host is open at `opening` (equal depths).
+struct BoxSection {
+    Vec2 top;               ///< top of C, (x, z) in the host's section
+    Vec2 side_ground_top;   ///< top edge of L
+    Vec2 side_backdrop_top; ///< top edge of R
+    Vec2 crease_foot;       ///< foot of the end panels' crease, (x, z)
+    double crease_out = 0;  ///< how far that crease stands out of the box's end (mm)
+};
+BoxSection box_fold_section(const BoxFoldParams& params, double opening);
+
 Result<MechanismParts> add_box_fold(Scaffold& scaffold, const BasePatchPair& host,
                                     const BoxFoldParams& params,
                                     const std::string& name = "BoxFold");

@@ -12,6 +12,9 @@ struct StepFoldParams : Placement1D {
     double run_backdrop = 20.0; ///< |S2| (mm)
 };
 
+/// Closed form: the nose (riser-tread hinge) in the host's section when it is open at `opening`.
+Vec2 step_nose(const StepFoldParams& params, double opening);
+
 Result<MechanismParts> add_step_fold(Scaffold& scaffold, const BasePatchPair& host,
                                      const StepFoldParams& params,
                                      const std::string& name = "StepFold");

@@ -15,6 +15,9 @@ struct TentFoldParams : Placement1D {
 
 double tent_backdrop_slope(const TentFoldParams& params);
 
+/// Closed form: the apex in the host's section (x, z) when the host is open at `opening`.
+Vec2 tent_apex(const TentFoldParams& params, double opening);
+
 /// Adds the tent to the scaffold, or nothing with errors naming the parameter and its range.
 Result<MechanismParts> add_tent_fold(Scaffold& scaffold, const BasePatchPair& host,
                                      const TentFoldParams& params,

@@ -15,6 +15,10 @@ struct VFoldParams {
     double spine_angle = 1.0471975511965976;  ///< γ, radians
 };
 
+/// Closed form: the tip P in the host's local frame (x, y along the hinge from the host's origin,
+/// z) when the host, built open at `design_opening`, is open at `opening`.
+Vec3 v_fold_tip(const VFoldParams& params, double design_opening, double opening);
+
 Result<MechanismParts> add_v_fold(Scaffold& scaffold, const BasePatchPair& host,
                                   const VFoldParams& params, const std::string& name = "VFold");
 

@@ -1,0 +1,157 @@
+// Closed forms of the mechanisms against the simulator, and the §4.2.2 placement pre-check
+// against the full validity check.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "popup/card.hpp"
+#include "popup/check_validity.hpp"
+#include "popup/mechanisms/box_fold.hpp"
+#include "popup/mechanisms/step_fold.hpp"
+#include "popup/mechanisms/tent_fold.hpp"
+#include "popup/mechanisms/v_fold.hpp"
+#include "popup/simulate_fold.hpp"
+#include "test_support.hpp"
+
+using namespace popup;
+
+namespace {
+Scaffold card(double width = 300, double depth = 140)
+{
+    CardParams p;
+    p.width = width;
+    p.depth = depth;
+    return make_card(p).value;
+}
+
+// World position of a design-state point of a patch over a 0..180° sweep, against `expected`.
+template <class Expected>
+void expect_track(const Scaffold& s, int patch, const Vec3& point, Expected expected)
+{
+    const auto sweep = simulate_fold(s, fixtures::angle_range(180, 0, 181));
+    ASSERT_TRUE(sweep.value.complete);
+    for (const FoldState& st : sweep.value.states) {
+        const Vec3 at = fixtures::world_point(s, st, patch, point);
+        EXPECT_LT((at - expected(st.angle)).norm(), 1e-9 * s.size())
+            << "at " << st.angle * 180 / M_PI << "°";
+    }
+}
+}  // namespace
+
+TEST(ClosedForm, AsymmetricTentApexMatchesTheSimulator)
+{
+    Scaffold s = card();
+    TentFoldParams p;
+    p.offset = 40;
+    p.width = 50;
+    p.foot = 35;
+    p.foot_backdrop = 20;
+    p.slope = 45;
+    const auto parts = add_tent_fold(s, central_fold(s), p);
+    ASSERT_TRUE(parts.ok);
+    const Vec2 apex0 = tent_apex(p, M_PI);
+    expect_track(s, parts.value.patches[0], {apex0.x(), 40, apex0.y()}, [&](double t) {
+        const Vec2 a = tent_apex(p, t);
+        return Vec3(a.x(), 40, a.y());
+    });
+}
+
+TEST(ClosedForm, StepNoseMatchesTheSimulator)
+{
+    Scaffold s = card();
+    StepFoldParams p;
+    p.offset = 40;
+    p.width = 50;
+    p.run_ground = 25;
+    p.run_backdrop = 40;
+    const auto parts = add_step_fold(s, central_fold(s), p);
+    ASSERT_TRUE(parts.ok);
+    const Vec2 nose0 = step_nose(p, M_PI);
+    expect_track(s, parts.value.patches[0], {nose0.x(), 90, nose0.y()}, [&](double t) {
+        const Vec2 n = step_nose(p, t);
+        return Vec3(n.x(), 90, n.y());
+    });
+}
+
+TEST(ClosedForm, VFoldTipMatchesTheSimulator)
+{
+    Scaffold s = card();
+    VFoldParams p;
+    p.offset = 60;
+    p.run = 50;
+    p.hinge_angle = fixtures::deg(40);
+    p.spine = 60;
+    p.spine_angle = fixtures::deg(70);
+    const auto parts = add_v_fold(s, central_fold(s), p);
+    ASSERT_TRUE(parts.ok);
+    expect_track(s, parts.value.patches[0], v_fold_tip(p, M_PI, M_PI),
+                 [&](double t) { return v_fold_tip(p, M_PI, t); });
+}
+
+TEST(ClosedForm, BoxTopAndEndCreaseMatchTheSimulator)
+{
+    Scaffold s = card();
+    BoxFoldParams p;
+    p.offset = 80;
+    p.width = 60;
+    p.depth_ground = p.depth_backdrop = 35;
+    p.height = 25;
+    const auto parts = add_box_fold(s, central_fold(s), p);
+    ASSERT_TRUE(parts.ok);
+    const int L = parts.value.patches[1], FL = parts.value.patches[5];
+    expect_track(s, L, {35, 110, 25}, [&](double t) {
+        const Vec2 q = box_fold_section(p, t).side_ground_top;
+        return Vec3(q.x(), 110, q.y());
+    });
+    expect_track(s, FL, {0, 80, 0}, [&](double t) {
+        const BoxSection b = box_fold_section(p, t);
+        return Vec3(b.crease_foot.x(), 80 - b.crease_out, b.crease_foot.y());
+    });
+}
+
+TEST(BoxFold, UnequalDepthsWithEndPanelsAreRefused)
+{
+    // With end panels C must stay square to the line between the sides' feet, which lies in the
+    // page when the card closes unless the depths are equal (docs/MATH.md).
+    Scaffold s = card();
+    BoxFoldParams p;
+    p.offset = 80;
+    p.width = 60;
+    p.depth_ground = 30;
+    p.depth_backdrop = 20;
+    const auto r = add_box_fold(s, central_fold(s), p);
+    EXPECT_FALSE(r.ok);
+    EXPECT_EQ(r.diagnostics.front().subject, "BoxFold.DepthBackdrop");
+}
+
+TEST(PlacementPreCheck, AgreesWithTheSimulatorOnBoxesAndVFolds)
+{
+    struct Case {
+        double gap;
+        bool v_fold_next;
+    };
+    for (const Case c : {Case{10, false}, Case{30, false}, Case{39, false}, Case{41, false},
+                         Case{90, false}, Case{5, true}, Case{60, true}}) {
+        Scaffold s = card();
+        BoxFoldParams box;
+        box.offset = 40;
+        box.width = 60;
+        box.depth_ground = box.depth_backdrop = box.height = 40;
+        std::vector<MechanismParts> parts{add_box_fold(s, central_fold(s), box, "BoxA").value};
+        if (c.v_fold_next) {
+            VFoldParams v;
+            v.offset = 140 + c.gap;
+            v.run = 40;
+            v.spine = 45;
+            parts.push_back(add_v_fold(s, central_fold(s), v, "VFold").value);
+        } else {
+            box.offset = 100 + c.gap;
+            parts.push_back(add_box_fold(s, central_fold(s), box, "BoxB").value);
+        }
+        const bool predicted = !placement_conflicts(parts).empty();
+        const ValidityReport r = check_validity(s);
+        EXPECT_EQ(predicted, !r.intersection_free)
+            << "gap " << c.gap << (c.v_fold_next ? " (v-fold)" : " (box)") << ": pre-check "
+            << predicted << ", simulator " << !r.intersection_free;
+    }
+}
