@@ -1,5 +1,21 @@
 """Headless constructors of PopUp objects: what commands, macros and tests call."""
 
+from popupwb.make.make_card import make_card
+from popupwb.make.make_mechanisms import (
+    make_box_fold,
+    make_mechanism,
+    make_step_fold,
+    make_tent_fold,
+    make_v_fold,
+)
 from popupwb.make.make_scaffold import make_scaffold
 
-__all__ = ["make_scaffold"]
+__all__ = [
+    "make_box_fold",
+    "make_card",
+    "make_mechanism",
+    "make_scaffold",
+    "make_step_fold",
+    "make_tent_fold",
+    "make_v_fold",
+]
