@@ -8,6 +8,7 @@
 #include "popup/mechanisms/box_fold.hpp"
 #include "popup/mechanisms/step_fold.hpp"
 #include "popup/mechanisms/tent_fold.hpp"
+#include "popup/mechanisms/v_box_fold.hpp"
 #include "popup/mechanisms/v_fold.hpp"
 
 namespace py = pybind11;
@@ -67,7 +68,13 @@ void bind_mechanisms(py::module_& m)
     py::class_<MechanismParts>(m, "MechanismParts")
         .def_readonly("name", &MechanismParts::name)
         .def_readonly("patches", &MechanismParts::patches)
-        .def_readonly("offered", &MechanismParts::offered);
+        .def_readonly("offered", &MechanismParts::offered)
+        .def_readonly("host", &MechanismParts::host)
+        .def_readonly("sweep_from", &MechanismParts::sweep_from)
+        .def_readonly("sweep_to", &MechanismParts::sweep_to);
+    m.def("placement_conflicts", &placement_conflicts, py::arg("mechanisms"),
+          "Thesis §4.2.2 pre-check: pairs of mechanism names on one host whose swept intervals "
+          "overlap.");
 
     py::class_<Placement1D>(m, "Placement1D")
         .def_readwrite("offset", &Placement1D::offset)
@@ -97,6 +104,25 @@ void bind_mechanisms(py::module_& m)
         .def_readwrite("front", &BoxFoldParams::front)
         .def_readwrite("back", &BoxFoldParams::back);
 
+    py::class_<VBoxFoldParams>(m, "VBoxFoldParams")
+        .def(py::init<>())
+        .def_readwrite("offset", &VBoxFoldParams::offset)
+        .def_readwrite("side", &VBoxFoldParams::side)
+        .def_readwrite("height", &VBoxFoldParams::height)
+        .def_readwrite("wall_angle", &VBoxFoldParams::wall_angle);
+    py::class_<BoxSection>(m, "BoxSection")
+        .def_readonly("top", &BoxSection::top)
+        .def_readonly("side_ground_top", &BoxSection::side_ground_top)
+        .def_readonly("side_backdrop_top", &BoxSection::side_backdrop_top)
+        .def_readonly("crease_foot", &BoxSection::crease_foot)
+        .def_readonly("crease_out", &BoxSection::crease_out);
+    m.def("tent_apex", &tent_apex, py::arg("params"), py::arg("opening"),
+          "Closed form: apex (x, z) in the host's section at that opening.");
+    m.def("step_nose", &step_nose, py::arg("params"), py::arg("opening"));
+    m.def("v_fold_tip", &v_fold_tip, py::arg("params"), py::arg("design_opening"),
+          py::arg("opening"));
+    m.def("box_fold_section", &box_fold_section, py::arg("params"), py::arg("opening"));
+
     def_generator<TentFoldParams>(m, "add_tent_fold", &add_tent_fold,
                                   "Adds a tent fold on `host`; DesignError names a bad parameter.");
     def_generator<StepFoldParams>(m, "add_step_fold", &add_step_fold,
@@ -104,4 +130,6 @@ void bind_mechanisms(py::module_& m)
     def_generator<VFoldParams>(m, "add_v_fold", &add_v_fold, "Adds a type-2 v-fold on `host`.");
     def_generator<BoxFoldParams>(m, "add_box_fold", &add_box_fold,
                                  "Adds a box fold; its parts offer the top and both sides.");
+    def_generator<VBoxFoldParams>(m, "add_v_box_fold", &add_v_box_fold,
+                                  "Adds a type-1 v-fold (v-box) on a host open flat.");
 }

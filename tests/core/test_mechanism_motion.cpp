@@ -36,7 +36,7 @@ void expect_track(const Scaffold& s, int patch, const Vec3& point, Expected expe
             << "at " << st.angle * 180 / M_PI << "°";
     }
 }
-}  // namespace
+} // namespace
 
 TEST(ClosedForm, AsymmetricTentApexMatchesTheSimulator)
 {

@@ -7,6 +7,7 @@
 #include "popup/mechanisms/box_fold.hpp"
 #include "popup/mechanisms/step_fold.hpp"
 #include "popup/mechanisms/tent_fold.hpp"
+#include "popup/mechanisms/v_box_fold.hpp"
 #include "popup/mechanisms/v_fold.hpp"
 #include "popup/simulate_fold.hpp"
 #include "test_support.hpp"
@@ -204,4 +205,39 @@ TEST(Combinations, BoxFoldsTooCloseCollideAndApartPass)
     EXPECT_FALSE(close.intersection_free);
     const ValidityReport apart = two_boxes(90);
     EXPECT_TRUE(apart.valid()) << first_message(apart);
+}
+
+TEST(VBoxFold, IsValidAndLeansOutOfItsFrontWhenClosed)
+{
+    Scaffold s = card();
+    VBoxFoldParams p;
+    p.offset = 60;
+    p.side = 40;
+    p.height = 30;
+    const auto parts = add_v_box_fold(s, central_fold(s), p);
+    ASSERT_TRUE(parts.ok);
+    EXPECT_EQ(parts.value.patches.size(), 6u);
+    const ValidityReport r = check_validity(s);
+    EXPECT_TRUE(r.valid()) << first_message(r);
+    // Closed, the front top corner lies height/√2 in front of the front corner (thesis Fig 4.9,
+    // mirrored: our front faces −y).
+    const auto sweep = simulate_fold(s, {0.0});
+    const Vec3 top =
+        fixtures::world_point(s, sweep.value.states[0], parts.value.patches[0], {0, 60, 30});
+    EXPECT_NEAR(top.y(), 60 - 30 / std::sqrt(2.0), 1e-9 * s.size());
+    EXPECT_NEAR(parts.value.sweep_from, 60 - 30 / std::sqrt(2.0), 1e-9);
+}
+
+TEST(VBoxFold, TopGluedToTheBackWallIsNotFoldable)
+{
+    Scaffold s = card();
+    VBoxFoldParams p;
+    p.offset = 60;
+    const auto parts = add_v_box_fold(s, central_fold(s), p);
+    ASSERT_TRUE(parts.ok);
+    const int BR = parts.value.patches[3], TB = parts.value.patches[5];
+    s.glue.push_back({TB, BR});
+    const ValidityReport r = check_validity(s);
+    EXPECT_FALSE(r.foldable);
+    EXPECT_GT(r.locked_at * 180 / M_PI, 170.0);
 }

@@ -1,0 +1,85 @@
+#include "popup/mechanisms/v_box_fold.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "mechanism_builder.hpp"
+#include "popup/mechanisms/v_fold.hpp"
+
+namespace popup {
+
+Result<MechanismParts> add_v_box_fold(Scaffold& scaffold, const BasePatchPair& host,
+                                      const VBoxFoldParams& p, const std::string& name)
+{
+    Result<MechanismParts> r;
+    Diagnostics& e = r.diagnostics;
+    if (std::abs(host.opening - M_PI) > 1e-9) {
+        std::ostringstream m;
+        m << name << ": host " << host.name << " is open " << host.opening * 180 / M_PI
+          << "° at the design state; a v-box needs a host open flat (180°)";
+        e.push_back({"bad_host", m.str(), name + ".Host"});
+    }
+    if (!(p.wall_angle > 0 && p.wall_angle < M_PI / 2))
+        range_error(e, name, "WallAngle", p.wall_angle * 180 / M_PI, "°", "> 0° and < 90°");
+    if (!(p.height > 0 && p.height <= 2000))
+        range_error(e, name, "Height", p.height, "mm", "> 0 and <= 2000 mm");
+    if (e.empty()) {
+        const double reach = p.side * std::sin(p.wall_angle);
+        const double depth = std::min(host.ground_depth, host.backdrop_depth);
+        if (!(p.side > 0 && reach < depth)) {
+            std::ostringstream m;
+            m << "> 0 mm with Side·sin(WallAngle) < " << depth << " mm (the host's depth)";
+            range_error(e, name, "Side", p.side, "mm", m.str());
+        }
+    }
+    const double along = p.side * std::cos(p.wall_angle);
+    if (e.empty() && !(p.offset >= 0 && p.offset + 2 * along <= host.length)) {
+        std::ostringstream m;
+        m << ">= 0 and <= " << host.length - 2 * along << " mm (the v-box is " << 2 * along
+          << " mm long on " << host.name << ")";
+        range_error(e, name, "Offset", p.offset, "mm", m.str());
+    }
+    if (!e.empty()) {
+        r.ok = false;
+        return r;
+    }
+    const double across = p.side * std::sin(p.wall_angle), h = p.height, y0 = p.offset;
+    const Vec3 F(0, y0, 0), Sg(across, y0 + along, 0), Bk(0, y0 + 2 * along, 0),
+        Sb(-across, y0 + along, 0);
+    auto up = [&](const Vec3& q) { return Vec3(q.x(), q.y(), h); };
+    MechanismBuilder m(scaffold, host, name);
+    // Walls wind so their normals face out of the box; the top faces up.
+    const int FL = m.patch({F, Sg, up(Sg), up(F)}, PatchRole::front, "FL");
+    const int FR = m.patch({Sb, F, up(F), up(Sb)}, PatchRole::front, "FR");
+    const int BL = m.patch({Sg, Bk, up(Bk), up(Sg)}, PatchRole::back, "BL");
+    const int BR = m.patch({Bk, Sb, up(Sb), up(Bk)}, PatchRole::back, "BR");
+    const int TG = m.patch({up(F), up(Sg), up(Bk)}, PatchRole::top, "TG");
+    const int TB = m.patch({up(F), up(Bk), up(Sb)}, PatchRole::top, "TB");
+    m.hinge(host.ground, FL, F, Sg);
+    m.hinge(host.backdrop, FR, F, Sb);
+    m.hinge(FL, FR, F, up(F));
+    m.hinge(FL, BL, Sg, up(Sg));
+    m.hinge(FR, BR, Sb, up(Sb));
+    m.hinge(BL, BR, Bk, up(Bk));
+    m.hinge(FL, TG, up(F), up(Sg));
+    m.hinge(FR, TB, up(F), up(Sb));
+    // Flat at the design state: the top creases down into the box (the lower of two branches
+    // the simulator finds; both close to the same footprint).
+    m.hinge(TG, TB, up(F), up(Bk), FoldDirection::valley);
+    // The front spine is a v-fold tip (spine angle 90°): it leans out of the front when closing.
+    VFoldParams spine;
+    spine.offset = y0;
+    spine.run = p.side;
+    spine.hinge_angle = p.wall_angle;
+    spine.spine = h;
+    spine.spine_angle = M_PI / 2;
+    double lo = y0;
+    for (int k = 0; k <= 90; ++k)
+        lo = std::min(lo, v_fold_tip(spine, M_PI, M_PI * k / 90).y());
+    m.sweeps(lo, y0 + 2 * along);
+    r.value = m.finish();
+    return r;
+}
+
+}  // namespace popup
