@@ -6,6 +6,7 @@
 #include "binding_support.hpp"
 #include "popup/card.hpp"
 #include "popup/mechanisms/box_fold.hpp"
+#include "popup/mechanisms/floating_layer.hpp"
 #include "popup/mechanisms/step_fold.hpp"
 #include "popup/mechanisms/tent_fold.hpp"
 #include "popup/mechanisms/v_box_fold.hpp"
@@ -104,6 +105,11 @@ void bind_mechanisms(py::module_& m)
         .def_readwrite("front", &BoxFoldParams::front)
         .def_readwrite("back", &BoxFoldParams::back);
 
+    py::class_<FloatingLayerParams, Placement1D>(m, "FloatingLayerParams")
+        .def(py::init<>())
+        .def_readwrite("height", &FloatingLayerParams::height)
+        .def_readwrite("support", &FloatingLayerParams::support)
+        .def_readwrite("overhang", &FloatingLayerParams::overhang);
     py::class_<VBoxFoldParams>(m, "VBoxFoldParams")
         .def(py::init<>())
         .def_readwrite("offset", &VBoxFoldParams::offset)
@@ -130,6 +136,8 @@ void bind_mechanisms(py::module_& m)
     def_generator<VFoldParams>(m, "add_v_fold", &add_v_fold, "Adds a type-2 v-fold on `host`.");
     def_generator<BoxFoldParams>(m, "add_box_fold", &add_box_fold,
                                  "Adds a box fold; its parts offer the top and both sides.");
+    def_generator<FloatingLayerParams>(m, "add_floating_layer", &add_floating_layer,
+                                       "Adds a floating layer; its platform is offered first.");
     def_generator<VBoxFoldParams>(m, "add_v_box_fold", &add_v_box_fold,
                                   "Adds a type-1 v-fold (v-box) on a host open flat.");
 }

@@ -5,6 +5,7 @@
 #include "popup/card.hpp"
 #include "popup/check_validity.hpp"
 #include "popup/mechanisms/box_fold.hpp"
+#include "popup/mechanisms/floating_layer.hpp"
 #include "popup/mechanisms/step_fold.hpp"
 #include "popup/mechanisms/tent_fold.hpp"
 #include "popup/mechanisms/v_box_fold.hpp"
@@ -240,4 +241,53 @@ TEST(VBoxFold, TopGluedToTheBackWallIsNotFoldable)
     const ValidityReport r = check_validity(s);
     EXPECT_FALSE(r.foldable);
     EXPECT_GT(r.locked_at * 180 / M_PI, 170.0);
+}
+
+TEST(FloatingLayer, PlatformStaysParallelToEachBaseAtItsHeight)
+{
+    Scaffold s = card();
+    FloatingLayerParams p;
+    p.offset = 60;
+    p.width = 80;
+    p.height = 25;
+    p.support = 20;
+    p.overhang = 15;
+    const auto layer = add_floating_layer(s, central_fold(s), p);
+    ASSERT_TRUE(layer.ok);
+    ASSERT_EQ(layer.value.offered.size(), 3u);
+    EXPECT_DOUBLE_EQ(layer.value.offered[0].ground_depth, 35.0);
+    const ValidityReport r = check_validity(s);
+    EXPECT_TRUE(r.valid()) << first_message(r);
+    // The platform's ground half stays parallel to the ground; C keeps the crease on the
+    // bisector, so its outer edge is at c·ẑ + 35·g(θ): c·sin(θ/2) above the ground.
+    const int TG = layer.value.patches[3];
+    const auto sweep = simulate_fold(s, fixtures::angle_range(180, 0, 37));
+    for (const FoldState& st : sweep.value.states) {
+        const double h = st.angle / 2;
+        const Vec3 edge = fixtures::world_point(s, st, TG, {35, 70, 25});
+        const Vec3 ground_normal(-std::cos(h), 0, std::sin(h));
+        const Vec3 ground_dir(std::sin(h), 0, std::cos(h));
+        EXPECT_NEAR(edge.dot(ground_normal), 25.0 * std::sin(h), 1e-9 * s.size());
+        EXPECT_NEAR(edge.dot(ground_dir), 35.0 + 25.0 * std::cos(h), 1e-9 * s.size());
+        const Vec3 other = fixtures::world_point(s, st, TG, {35, 120, 25});
+        EXPECT_NEAR((other - edge).dot(ground_normal), 0.0, 1e-9 * s.size());
+    }
+}
+
+TEST(FloatingLayer, CarriesATentOnItsPlatform)
+{
+    Scaffold s = card();
+    FloatingLayerParams p;
+    p.offset = 60;
+    p.width = 80;
+    const auto layer = add_floating_layer(s, central_fold(s), p);
+    ASSERT_TRUE(layer.ok);
+    TentFoldParams t;
+    t.offset = 20;
+    t.width = 40;
+    t.foot = t.foot_backdrop = 12;
+    t.slope = 16;
+    ASSERT_TRUE(add_tent_fold(s, layer.value.offered[0], t).ok);
+    const ValidityReport r = check_validity(s);
+    EXPECT_TRUE(r.valid()) << first_message(r);
 }

@@ -26,6 +26,7 @@ public:
         parts_.sweep_to = to;
     }
     const BasePatchPair& host() const { return host_; }
+    const std::string& name() const { return parts_.name; }
     MechanismParts finish() { return parts_; }
 
 private:

@@ -82,4 +82,4 @@ Result<MechanismParts> add_v_box_fold(Scaffold& scaffold, const BasePatchPair& h
     return r;
 }
 
-}  // namespace popup
+} // namespace popup

@@ -10,14 +10,14 @@ namespace popup {
 /// each other along the top diagonal (TB is NOT joined to BR, nor TG to BL: the top must fold).
 /// The thesis fixes the walls at 45° to the hinge; `wall_angle` generalises it.
 struct VBoxFoldParams {
-    double offset = 0.0;                      ///< front corner along the host hinge (mm)
-    double side = 40.0;                       ///< wall length along the host (mm)
-    double height = 30.0;                     ///< wall height at the design state (mm)
-    double wall_angle = 0.78539816339744831;  ///< β between each wall and the hinge (radians)
+    double offset = 0.0;                     ///< front corner along the host hinge (mm)
+    double side = 40.0;                      ///< wall length along the host (mm)
+    double height = 30.0;                    ///< wall height at the design state (mm)
+    double wall_angle = 0.78539816339744831; ///< β between each wall and the hinge (radians)
 };
 
 Result<MechanismParts> add_v_box_fold(Scaffold& scaffold, const BasePatchPair& host,
                                       const VBoxFoldParams& params,
                                       const std::string& name = "VBoxFold");
 
-}  // namespace popup
+} // namespace popup

@@ -1,0 +1,22 @@
+#pragma once
+#include "popup/mechanism.hpp"
+
+namespace popup {
+
+/// Floating layer (parallel fold, thesis §2.3 and §4.3.5): a platform `height` above the open
+/// host whose halves stay parallel to the host's patches at every fold angle (at height·sin(θ/2)
+/// from them), on two supports standing `support` from the hinge; the platform overhangs each
+/// support by `overhang`. Two step folds (support +
+/// platform half) meet over the hinge on a backbone, and end panels keep the platform from
+/// shearing (docs/MATH.md, Box fold). The platform is offered as a base patch pair.
+struct FloatingLayerParams : Placement1D {
+    double height = 25.0;    ///< h (mm)
+    double support = 20.0;   ///< distance of each support from the host hinge (mm)
+    double overhang = 15.0;  ///< platform beyond each support (mm)
+};
+
+Result<MechanismParts> add_floating_layer(Scaffold& scaffold, const BasePatchPair& host,
+                                          const FloatingLayerParams& params,
+                                          const std::string& name = "FloatingLayer");
+
+}  // namespace popup

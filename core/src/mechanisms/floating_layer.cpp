@@ -1,0 +1,46 @@
+#include "popup/mechanisms/floating_layer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "parallel_box.hpp"
+
+namespace popup {
+
+Result<MechanismParts> add_floating_layer(Scaffold& scaffold, const BasePatchPair& host,
+                                          const FloatingLayerParams& p, const std::string& name)
+{
+    Result<MechanismParts> r;
+    Diagnostics& e = r.diagnostics;
+    check_placement(name, host, p, e);
+    if (std::abs(host.opening - M_PI) > 1e-9) {
+        std::ostringstream m;
+        m << name << ": host " << host.name << " is open " << host.opening * 180 / M_PI
+          << "° at the design state; a floating layer needs a host open flat (180°)";
+        e.push_back({"bad_host", m.str(), name + ".Host"});
+    }
+    const double depth = std::min(host.ground_depth, host.backdrop_depth);
+    std::ostringstream smax;
+    smax << "> 0 and < " << depth << " mm (the host's depth)";
+    if (!(p.support > 0 && p.support < depth))
+        range_error(e, name, "Support", p.support, "mm", smax.str());
+    if (!(p.height > 0 && p.height <= 2000))
+        range_error(e, name, "Height", p.height, "mm", "> 0 and <= 2000 mm");
+    if (!(p.overhang >= 0 && p.overhang <= 2000))
+        range_error(e, name, "Overhang", p.overhang, "mm", ">= 0 and <= 2000 mm");
+    if (!e.empty()) {
+        r.ok = false;
+        return r;
+    }
+    MechanismBuilder m(scaffold, host, name);
+    ParallelSection section;
+    section.ground = section.backdrop = p.support;
+    section.height = p.height;
+    section.overhang = p.overhang;
+    build_parallel_box(m, p.offset, p.offset + p.width, section);
+    r.value = m.finish();
+    return r;
+}
+
+}  // namespace popup
