@@ -155,3 +155,28 @@ TEST(PlacementPreCheck, AgreesWithTheSimulatorOnBoxesAndVFolds)
             << predicted << ", simulator " << !r.intersection_free;
     }
 }
+
+// docs/MATH.md, "Vertical translation": the printed P_y = −h sin α cos δ (thesis eq 4.5) only
+// holds at the ends; the simulator follows −h sin α cos δ / √(cos²α + sin²α cos²δ).
+TEST(ClosedForm, VerticalSpineTipCorrectsThesisEquation45)
+{
+    Scaffold s = card();
+    VFoldParams p;
+    p.offset = 60;
+    p.run = 50;
+    p.hinge_angle = fixtures::deg(35);
+    p.spine = 40;
+    p.spine_angle = M_PI / 2;
+    const auto parts = add_v_fold(s, central_fold(s), p);
+    ASSERT_TRUE(parts.ok);
+    const double h = p.spine, a = p.hinge_angle;
+    double worst_thesis = 0.0;
+    expect_track(s, parts.value.patches[0], {0, 60, h}, [&](double t) {
+        const double c = std::cos(t / 2);
+        const double py = -h * std::sin(a) * c /
+                          std::sqrt(std::pow(std::cos(a), 2) + std::pow(std::sin(a) * c, 2));
+        worst_thesis = std::max(worst_thesis, std::abs(py + h * std::sin(a) * c));
+        return Vec3(0, 60 + py, std::sqrt(h * h - py * py));
+    });
+    EXPECT_GT(worst_thesis, 1.0); // the printed form is off by more than a millimetre mid-way
+}
