@@ -5,7 +5,10 @@ import FreeCADGui
 
 class PopUpWorkbench(FreeCADGui.Workbench):
     MenuText = "PopUp"
-    ToolTip = "Paper pop-up design: load designs, fold them, check their validity"
+    ToolTip = (
+        "Paper pop-up design: cards with nested mechanisms (tent, step, v-fold, box, v-box), "
+        "folded on a slider, checked for validity; design files"
+    )
 
     def __init__(self):
         import popupwb

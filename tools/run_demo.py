@@ -1,12 +1,15 @@
 #!/usr/bin/python3
-"""`make demo`: check the bundled demo card, build a FreeCAD document of it and render a picture.
+"""`make demo`: the issue-3 pop-up card built from mechanism features, and the bundled design file.
 
     /usr/bin/python3 tools/run_demo.py --build build --out out/demo
 
 Steps: (a) copy resources/samples/demo_card.json into the output folder, (b) check its validity
-(validity_report.json / .txt), (c) build demo_card.FCStd with three Scaffold objects at fold
-angles 180, 90 and 30 degrees side by side (headless FreeCAD in a subprocess), (d) render
-demo_card.png with the FreeCAD GUI under Xvfb, (e) list the outputs and the verdict.
+(validity_report.json / .txt), (c) build demo_card.FCStd with three Scaffold objects of it at fold
+angles 180, 90 and 30 degrees side by side, (d) build card.FCStd: an A4 PopUpCard carrying a box
+fold with a tent fold and a floating layer on its top and a step fold on its side, and a v-fold
+and a v-box beside the box, all made with popupwb.make, and check it (card_validity.json / .txt), (e) render
+demo_card.png and card_180.png, card_90.png, card_30.png with the FreeCAD GUI under Xvfb (one
+run), (f) list the outputs and the verdicts. (c) and (d) run headless FreeCAD in subprocesses.
 FreeCAD runs with a sandboxed user home (<build>/sandbox/home) whose Mod/PopUp links to the
 workbench, so nothing is read from or written to the user's own FreeCAD setup.
 """
@@ -156,8 +159,83 @@ def build_document(build, design, out, env):
     return fcstd, proc.stdout.strip()
 
 
-# FreeCAD GUI macro; its status (ok + share of non-white pixels, or the error) goes to a file
-# because the GUI's exit code does not reflect what the macro did.
+# Runs in a separate /usr/bin/python3 (FreeCAD's console mode); argv: fcstd, report json, txt.
+BUILD_CARD = textwrap.dedent(
+    """
+    import json
+    import sys
+    import FreeCAD
+    from popupwb import make
+    from popupwb.validity import format_report, run_check
+
+    fcstd, json_path, txt_path = sys.argv[1:4]
+    doc = FreeCAD.newDocument("PopUpCard")
+    card = make.make_card(doc, preset="A4", name="Card")
+    box = make.make_box_fold(
+        card, offset=60, width=100, depth_ground=30, depth_backdrop=30, height=30, name="Box"
+    )
+    tent = make.make_tent_fold(
+        box, "Box.top", offset=10, width=40, foot=10, foot_backdrop=10, slope=14, name="Tent"
+    )
+    layer = make.make_floating_layer(
+        box, "Box.top", offset=58, width=35, height=10, support=8, overhang=5, name="Layer"
+    )
+    step = make.make_step_fold(
+        box, "Box.side_ground", offset=10, width=60, run_ground=15, run_backdrop=15, name="Step"
+    )
+    v_fold = make.make_v_fold(
+        card, "central fold", offset=25, run=40, hinge_angle=45, spine=45, spine_angle=60,
+        name="VFold",
+    )
+    v_box = make.make_v_box_fold(
+        card, "central fold", offset=185, side=10, height=8, wall_angle=45, name="VBox"
+    )
+    doc.recompute()
+    features = [card, box, tent, layer, step, v_fold, v_box]
+    broken = [f"{o.Label}: {o.getStatusString()}" for o in features if "Invalid" in o.State]
+    if broken:
+        sys.exit("features in error: " + "; ".join(broken))
+    report = run_check(card)
+    with open(json_path, "w", encoding="utf-8") as f:
+        json.dump(report, f, indent=2)
+        f.write("\\n")
+    with open(txt_path, "w", encoding="utf-8") as f:
+        f.write(format_report(report).rstrip("\\n") + "\\n")
+    doc.saveAs(fcstd)
+    for obj in features:
+        print("%s: %d faces" % (obj.Label, len(obj.Shape.Faces)))
+    """
+)
+
+
+def build_card(build, out, env):
+    """(d) card.FCStd from mechanism features, and its validity report; returns (paths, report)."""
+    paths = [os.path.join(out, name) for name in ("card.FCStd", "card_validity.json")]
+    paths.append(os.path.join(out, "card_validity.txt"))
+    for stale in paths:
+        if os.path.exists(stale):
+            os.remove(stale)
+    proc = subprocess.run(
+        [PYTHON, "-c", BUILD_CARD, *paths],
+        env=env,
+        cwd=out,
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    if proc.returncode != 0 or not all(os.path.isfile(p) for p in paths):
+        detail = (proc.stderr.strip() or proc.stdout.strip()).splitlines()[-15:]
+        raise DemoError(
+            f"(d) build card: exit {proc.returncode}:\n  " + "\n  ".join(detail or ["no output"])
+        )
+    with open(paths[1], encoding="utf-8") as f:
+        report = json.load(f)
+    return paths, report, proc.stdout.strip()
+
+
+# FreeCAD GUI macro rendering every picture in one run; its status (ok + share of non-white pixels
+# per picture, or the error) goes to a file because the GUI's exit code does not reflect what the
+# macro did.
 RENDER_MACRO = textwrap.dedent(
     """
     import json
@@ -167,33 +245,58 @@ RENDER_MACRO = textwrap.dedent(
     import FreeCADGui as Gui
     from PySide2 import QtCore, QtGui
 
-    FCSTD = {fcstd!r}
-    PNG = {png!r}
+    JOBS = json.loads({jobs!r})
     STATUS = {status!r}
-    status = {{"ok": False}}
-    try:
-        doc = FreeCAD.openDocument(FCSTD)
-        Gui.updateGui()
-        for obj in doc.Objects:
-            obj.ViewObject.Visibility = True  # saved headless: every object opens hidden
-        view = Gui.getDocument(doc.Name).ActiveView
-        view.viewIsometric()
-        # In the exact isometric view the half-open card's ground is seen edge-on: turn the
-        # camera a little about the vertical axis.
-        d = view.getViewDirection()
-        c, s = math.cos(math.radians({turn})), math.sin(math.radians({turn}))
-        view.setViewDirection((c * d.x - s * d.y, s * d.x + c * d.y, d.z))
-        view.fitAll()
-        view.saveImage(PNG, {width}, {height}, "White")
-        image = QtGui.QImage(PNG)
-        inked = total = 0
+    status = {{"ok": False, "inked": {{}}}}
+
+
+    def inked(path):
+        image = QtGui.QImage(path)
+        count = total = 0
         for y in range(0, image.height(), 4):
             for x in range(0, image.width(), 4):
                 total += 1
                 if QtGui.QColor(image.pixel(x, y)).lightness() < 235:
-                    inked += 1
-        status = {{"ok": True, "inked": inked / max(total, 1)}}
-        FreeCAD.closeDocument(doc.Name)
+                    count += 1
+        return count / max(total, 1)
+
+
+    def camera(view, kind):
+        if kind == "isometric":
+            view.viewIsometric()
+            # In the exact isometric view the half-open card's ground is seen edge-on: turn the
+            # camera a little about the vertical axis.
+            d = view.getViewDirection()
+            c, s = math.cos(math.radians({turn})), math.sin(math.radians({turn}))
+            view.setViewDirection((c * d.x - s * d.y, s * d.x + c * d.y, d.z))
+        else:
+            # In front of the card (-y), above it (+z) and a little to the ground side (+x),
+            # with z up on the screen: the same camera for every fold angle.
+            back = FreeCAD.Vector(*kind).normalize()
+            right = FreeCAD.Vector(0, 0, 1).cross(back).normalize()
+            up = back.cross(right)
+            view.setCameraOrientation(FreeCAD.Rotation(right, up, back, "ZYX"))
+
+
+    try:
+        for job in JOBS:
+            doc = FreeCAD.openDocument(job["fcstd"])
+            Gui.updateGui()
+            for obj in doc.Objects:
+                obj.ViewObject.Visibility = True  # saved headless: every object opens hidden
+            view = Gui.getDocument(doc.Name).ActiveView
+            for shot in job["shots"]:
+                if shot.get("fold_angle") is not None:
+                    doc.getObject(shot["object"]).FoldAngle = shot["fold_angle"]
+                    doc.recompute()
+                Gui.updateGui()
+                camera(view, shot["camera"])
+                view.fitAll()
+                Gui.updateGui()
+                view.saveImage(shot["png"], {width}, {height}, "White")
+                status["inked"][shot["png"]] = inked(shot["png"])
+            FreeCAD.closeDocument(doc.Name)
+        status["ok"] = True
     except Exception:
         status = {{"ok": False, "error": traceback.format_exc()}}
     finally:
@@ -202,26 +305,39 @@ RENDER_MACRO = textwrap.dedent(
         QtCore.QTimer.singleShot(0, Gui.getMainWindow().close)
     """
 )
+# Direction from the card towards the eye, per fold angle: in front of the card (-y), above it
+# (+z), lower as the card closes so that the light still reaches inside.
+CARD_CAMERAS = {180.0: (0.15, -1.0, 0.9), 90.0: (0.15, -1.0, 0.9), 30.0: (0.05, -0.45, 1.0)}
 
 
-def render_png(build, fcstd, out, env):
-    """(d) Isometric picture of the three cards from the real FreeCAD GUI under Xvfb."""
+def render_pngs(build, demo_fcstd, card_fcstd, out, env):
+    """(e) demo_card.png (the three Scaffolds) and card_<angle>.png, from the real FreeCAD GUI."""
     for tool in ("xvfb-run", "freecad"):
         if shutil.which(tool) is None:
-            raise DemoError(f"(d) render PNG: '{tool}' not found (run 'make deps')")
-    png = os.path.join(out, "demo_card.png")
+            raise DemoError(f"(e) render PNGs: '{tool}' not found (run 'make deps')")
+    demo_png = os.path.join(out, "demo_card.png")
+    card_pngs = [os.path.join(out, f"card_{round(a)}.png") for a in FOLD_ANGLES]
+    jobs = [
+        {"fcstd": demo_fcstd, "shots": [{"png": demo_png, "camera": "isometric"}]},
+        {
+            "fcstd": card_fcstd,
+            "shots": [
+                {"png": png, "object": "Card", "fold_angle": angle, "camera": CARD_CAMERAS[angle]}
+                for png, angle in zip(card_pngs, FOLD_ANGLES)
+            ],
+        },
+    ]
     work = os.path.join(build, "sandbox", "demo")
     os.makedirs(work, exist_ok=True)
     macro = os.path.join(work, "render_demo.FCMacro")
     status_path = os.path.join(work, "render_status.json")
-    for stale in (png, status_path):
+    for stale in [demo_png, *card_pngs, status_path]:
         if os.path.exists(stale):
             os.remove(stale)
     with open(macro, "w", encoding="utf-8") as f:
         f.write(
             RENDER_MACRO.format(
-                fcstd=fcstd,
-                png=png,
+                jobs=json.dumps(jobs),
                 status=status_path,
                 width=IMAGE_SIZE[0],
                 height=IMAGE_SIZE[1],
@@ -240,23 +356,25 @@ def render_png(build, fcstd, out, env):
     ]
     proc = subprocess.run(cmd, env=env, cwd=work, capture_output=True, text=True)
     if proc.returncode == 124:
-        raise DemoError(f"(d) render PNG: the FreeCAD GUI did not finish in {GUI_TIMEOUT} s")
+        raise DemoError(f"(e) render PNGs: the FreeCAD GUI did not finish in {GUI_TIMEOUT} s")
     try:
         with open(status_path, encoding="utf-8") as f:
             status = json.load(f)
     except (OSError, ValueError):
         tail = (proc.stderr.strip() or proc.stdout.strip()).splitlines()[-10:]
         raise DemoError(
-            f"(d) render PNG: the macro did not run (freecad exit {proc.returncode}):\n  "
+            f"(e) render PNGs: the macro did not run (freecad exit {proc.returncode}):\n  "
             + "\n  ".join(tail or ["no output"])
         )
     if not status.get("ok"):
-        raise DemoError("(d) render PNG: macro failed:\n" + status.get("error", "unknown error"))
-    if not os.path.isfile(png):
-        raise DemoError(f"(d) render PNG: {png} was not written")
-    if status["inked"] < 0.01:
-        raise DemoError(f"(d) render PNG: {png} is blank ({status['inked']:.2%} non-white)")
-    return png
+        raise DemoError("(e) render PNGs: macro failed:\n" + status.get("error", "unknown error"))
+    for png in [demo_png, *card_pngs]:
+        if not os.path.isfile(png):
+            raise DemoError(f"(e) render PNGs: {png} was not written")
+        share = status["inked"].get(png, 0.0)
+        if share < 0.01:
+            raise DemoError(f"(e) render PNGs: {png} is blank ({share:.2%} non-white)")
+    return [demo_png, *card_pngs]
 
 
 def main(argv=None):
@@ -282,8 +400,13 @@ def main(argv=None):
         print(f"(c) document built: {fcstd}", flush=True)
         if summary:
             print(textwrap.indent(summary, "      "), flush=True)
-        png = render_png(build, fcstd, out, env)
-        print(f"(d) picture rendered: {png}", flush=True)
+        card_files, card_report, card_summary = build_card(build, out, env)
+        verdict = "VALID" if card_report["valid"] else "INVALID"
+        print(f"(d) card built and checked: {card_files[0]} ({verdict})", flush=True)
+        if card_summary:
+            print(textwrap.indent(card_summary, "      "), flush=True)
+        pngs = render_pngs(build, fcstd, card_files[0], out, env)
+        print(f"(e) pictures rendered: {', '.join(os.path.basename(p) for p in pngs)}", flush=True)
     except DemoError as e:
         print(f"run_demo: FAILED {e}", file=sys.stderr)
         return 1
@@ -292,17 +415,18 @@ def main(argv=None):
         return 1
 
     print("\nOutputs:")
-    for path in [design, *report_files, fcstd, png]:
+    for path in [design, *report_files, fcstd, *card_files, *pngs]:
         print(f"  {path}")
-    verdicts = ", ".join(
-        f"{k} {'yes' if report[k] else 'NO'}"
-        for k in ("foldable", "stable", "intersection_free", "enclosed")
-    )
-    print(f"\nVerdict: {'VALID' if report['valid'] else 'INVALID'} ({verdicts})")
-    if not report["valid"]:
-        print(
-            "run_demo: FAILED the demo card must be valid; see validity_report.txt", file=sys.stderr
+    failed = False
+    for name, result in (("demo_card.json", report), ("card.FCStd", card_report)):
+        verdicts = ", ".join(
+            f"{k} {'yes' if result[k] else 'NO'}"
+            for k in ("foldable", "stable", "intersection_free", "enclosed")
         )
+        print(f"Verdict {name}: {'VALID' if result['valid'] else 'INVALID'} ({verdicts})")
+        failed = failed or not result["valid"]
+    if failed:
+        print("run_demo: FAILED the demo cards must be valid; see the reports", file=sys.stderr)
         return 1
     return 0
 

@@ -1,7 +1,7 @@
 """The `popup` command line: check a pop-up design without opening FreeCAD's GUI.
 
     popup check design.json [--json] [--samples N] [--clearance MM]
-    popup check card.FCStd                  # the first PopUp Scaffold object's design file
+    popup check card.FCStd                  # the first PopUp Scaffold's design or PopUpCard
     popup --version
 
 Exit status: 0 the design is valid, 1 it is not (the report says why), 2 the input could not be
@@ -96,9 +96,23 @@ def _import_freecad():
 
 
 def _find_scaffold(doc):
+    """The first Scaffold or PopUpCard object of `doc` (None if there is neither)."""
+    from popupwb.assembly import is_card
     from popupwb.features.scaffold_feature import is_scaffold
 
-    return next((obj for obj in doc.Objects if is_scaffold(obj)), None)
+    return next((obj for obj in doc.Objects if is_scaffold(obj) or is_card(obj)), None)
+
+
+def _card_design(path, card):
+    """The assembled scaffold of a PopUpCard and its mechanisms; a part that does not build makes
+    the input unusable (the message is the feature's error)."""
+    from popupwb.assembly import assembly_of
+
+    built = assembly_of(card)
+    problems = ([built.card_error] if built.card_error else []) + list(built.errors.values())
+    if problems:
+        raise InputError(f"{path}: {problems[0]}")
+    return built.scaffold.copy(), {"object": card.Name}
 
 
 def _load_json_design(popupcore, path, label):
@@ -109,7 +123,7 @@ def _load_json_design(popupcore, path, label):
 
 
 def _load_fcstd_design(popupcore, path):
-    """Loads the design of the first Scaffold object in an .FCStd file."""
+    """Loads the design of the first Scaffold or PopUpCard object in an .FCStd file."""
     with _stdout_to_stderr():
         FreeCAD = _import_freecad()
         try:
@@ -125,7 +139,9 @@ def _load_fcstd_design(popupcore, path):
                         f"{path}: object '{orphans[0]}' looks like a PopUp Scaffold but its "
                         "proxy did not load (install the workbench: make install-dev)"
                     )
-                raise InputError(f"{path}: no PopUp Scaffold object in this document")
+                raise InputError(f"{path}: no PopUp Scaffold or PopUpCard object in this document")
+            if "DesignFile" not in obj.PropertiesList:
+                return _card_design(path, obj)
             design = str(obj.DesignFile)
             what = f"{path}: {obj.Label}.DesignFile"
             if not design:
@@ -207,7 +223,9 @@ def build_parser():
         description="Simulate the fold from open (180 deg) to closed (0 deg) and report the "
         "validity verdicts: foldable, stable, intersection-free, enclosed.",
     )
-    check.add_argument("design", help="design file (.json) or FreeCAD document with a Scaffold")
+    check.add_argument(
+        "design", help="design file (.json) or FreeCAD document with a Scaffold or a PopUpCard"
+    )
     check.add_argument("--json", action="store_true", help="print the report as one JSON object")
     check.add_argument(
         "--samples",

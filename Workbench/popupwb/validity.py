@@ -1,10 +1,12 @@
-"""Validity check of Scaffold objects, and the text report shared with the command-line tool.
+"""Validity check of Scaffold and PopUpCard objects, and the text report shared with the
+command-line tool.
 
 format_report() and format_diagnostic() need neither FreeCAD nor popupcore (plain Python can use
 them); run_check() imports both when called.
 """
 
 import math
+import re
 
 _VERDICTS = (
     ("foldable", "foldable"),
@@ -12,6 +14,7 @@ _VERDICTS = (
     ("intersection_free", "intersection-free"),
     ("enclosed", "enclosed"),
 )
+_PATCH_ID = re.compile(r"\bpatch (\d+)\b")
 
 
 def format_diagnostic(diagnostic):
@@ -56,28 +59,22 @@ def format_report(report):
 
 
 def run_check(obj, samples=181, clearance=0.0):
-    """Checks a Scaffold object's design with popupcore.check_validity.
+    """Checks a Scaffold's or a PopUpCard's design with popupcore.check_validity.
 
     Writes obj.Valid and obj.Diagnostics, prints the report to the report view and returns the
     report dict (ValidityReport.to_dict() plus "object": obj.Name). A design that does not load
-    gives an INVALID report with one "design_error" finding instead of an exception.
+    (or, for a card, a mechanism that does not build) gives an INVALID report with a
+    "design_error" finding instead of an exception. For a card, in the GUI, the faces of the
+    patches the findings name turn red.
     """
     import FreeCAD
 
-    from popupwb.core import popupcore
-    from popupwb.features.scaffold_feature import scaffold_of
+    from popupwb import assembly
 
-    try:
-        report = popupcore.check_validity(
-            scaffold_of(obj), samples=samples, clearance=clearance
-        ).to_dict()
-    except ValueError as error:
-        report = {
-            "valid": False,
-            "diagnostics": [
-                {"code": "design_error", "message": str(error), "subject": "DesignFile"}
-            ],
-        }
+    if assembly.is_card(obj):
+        report = _check_card(obj, samples, clearance)
+    else:
+        report = _check_scaffold(obj, samples, clearance)
     report["object"] = obj.Name
     obj.Diagnostics = [format_diagnostic(d) for d in report["diagnostics"]]
     obj.Valid = bool(report["valid"])
@@ -86,4 +83,55 @@ def run_check(obj, samples=181, clearance=0.0):
     FreeCAD.Console.PrintMessage(f"{obj.Label}: " + "\n".join(summary) + "\n")
     for line in obj.Diagnostics:
         FreeCAD.Console.PrintWarning(f"{obj.Label}: {line}\n")
+    return report
+
+
+def _design_error(message, subject):
+    return {"code": "design_error", "message": message, "subject": subject}
+
+
+def _check_scaffold(obj, samples, clearance):
+    from popupwb.core import popupcore
+    from popupwb.features.scaffold_feature import scaffold_of
+
+    try:
+        return popupcore.check_validity(
+            scaffold_of(obj), samples=samples, clearance=clearance
+        ).to_dict()
+    except ValueError as error:
+        return {"valid": False, "diagnostics": [_design_error(str(error), "DesignFile")]}
+
+
+def offending_patches(report):
+    """Ids of the patches the report's findings name ("patch 7 (Box001.TG)")."""
+    ids = set()
+    for d in report.get("diagnostics") or []:
+        for text in (d.get("subject") or "", d.get("message") or ""):
+            ids.update(int(m) for m in _PATCH_ID.findall(text))
+    return ids
+
+
+def _check_card(card, samples, clearance):
+    """The card's whole assembly; mechanisms that do not build are findings of their own."""
+    import FreeCAD
+
+    from popupwb import assembly
+    from popupwb.core import popupcore
+
+    built = assembly.assembly_of(card)
+    if built.card_error:
+        return {"valid": False, "diagnostics": [_design_error(built.card_error, card.Label)]}
+    report = popupcore.check_validity(
+        built.scaffold, samples=samples, clearance=clearance
+    ).to_dict()
+    doc = card.Document
+    for name, message in built.errors.items():
+        report["diagnostics"].append(_design_error(message, doc.getObject(name).Label))
+    report["valid"] = bool(report["valid"]) and not built.errors
+    card.CheckedDesign = built.digest
+    if FreeCAD.GuiUp:
+        from popupwb.viewproviders import patch_colours
+
+        patch_colours.highlight(card, built.digest, offending_patches(report))
+        patch_colours.colour_card_and_mechanisms(card)
     return report

@@ -1,8 +1,9 @@
 """GUI smoke test: the PopUp workbench in the real FreeCAD GUI under Xvfb.
 
 Writes a macro that activates the workbench, loads resources/samples/demo_card.json as a Scaffold,
-runs PopUp_CheckValidity, saves an isometric screenshot and writes a JSON result; runs FreeCAD on it
-and checks the result. Run by ctest (gui_smoke) with /usr/bin/python3; by hand:
+runs PopUp_CheckValidity, saves an isometric screenshot; then builds a card with every mechanism
+through the toolbar commands, edits one in its task panel, checks and animates the card, saves a
+second screenshot; writes a JSON result. Runs FreeCAD on it and checks the result. Run by ctest (gui_smoke) with /usr/bin/python3; by hand:
 
     /usr/bin/python3 tests/gui/run_gui_smoke.py      # POPUP_BUILD_DIR defaults to ./build
 
@@ -27,11 +28,23 @@ OUT_DIR = os.path.join(SANDBOX, "gui_smoke")
 GUI_HOME = os.path.join(SANDBOX, "gui_home")
 SAMPLE = os.path.join(SOURCE_DIR, "resources", "samples", "demo_card.json")
 WORKBENCH_DIR = os.path.join(SOURCE_DIR, "Workbench")
-COMMANDS = ["PopUp_LoadDesign", "PopUp_CheckValidity"]
+COMMANDS = [
+    "PopUp_Card",
+    "PopUp_TentFold",
+    "PopUp_StepFold",
+    "PopUp_VFold",
+    "PopUp_BoxFold",
+    "PopUp_VBoxFold",
+    "PopUp_FloatingLayer",
+    "PopUp_CheckValidity",
+    "PopUp_Animate",
+    "PopUp_LoadDesign",
+]
 WIDTH, HEIGHT = 800, 600
 
 MACRO = r"""
 import json
+import os
 import traceback
 
 import FreeCAD
@@ -42,9 +55,10 @@ CONFIG = json.loads(%(config)r)
 result = {"errors": [], "workbench": None, "command_ran": False}
 
 
-def count_non_white(path):
+def count_non_white(path, prefix="", target=None):
+    target = result if target is None else target
     image = QtGui.QImage(path)
-    result["image_size"] = [image.width(), image.height()]
+    target[prefix + "image_size"] = [image.width(), image.height()]
     non_white = tinted = 0
     for y in range(image.height()):
         for x in range(image.width()):
@@ -53,8 +67,166 @@ def count_non_white(path):
                 non_white += 1
                 red, green, blue = rgb >> 16, (rgb >> 8) & 0xFF, rgb & 0xFF
                 tinted += max(red, green, blue) - min(red, green, blue) > 12
-    result["non_white_pixels"] = non_white
-    result["tinted_pixels"] = tinted  # not grey: role colours reached the screen
+    target[prefix + "non_white_pixels"] = non_white
+    target[prefix + "tinted_pixels"] = tinted  # not grey: role colours reached the screen
+
+
+def report_view_text():
+    window = Gui.getMainWindow()
+    dock = window.findChild(QtGui.QDockWidget, "Report view")
+    widget = dock.widget() if dock else None
+    return widget.toPlainText() if hasattr(widget, "toPlainText") else ""
+
+
+def wait_until(condition, timeout_ms=60000):
+    # Runs the event loop (timers, repaints) until condition() or the timeout; True if met.
+    timer = QtCore.QElapsedTimer()
+    timer.start()
+    while not condition():
+        if timer.elapsed() > timeout_ms:
+            return False
+        QtCore.QCoreApplication.processEvents(QtCore.QEventLoop.AllEvents, 50)
+    return True
+
+
+def mechanisms():
+    # The card commands, the task panel, the validity check and the animation.
+    from popupwb import assembly
+    from popupwb.commands import animate, check_validity
+    from popupwb.taskpanels import mechanism_panel
+    from popupwb.viewproviders.patch_colours import OFFENDING
+
+    out = result["mechanisms"] = {}
+    before = report_view_text()
+    doc = FreeCAD.newDocument("GuiSmokeCard")
+    Gui.runCommand("PopUp_Card")
+    cards = [o for o in doc.Objects if assembly.is_card(o)]
+    out["card_made"] = len(cards) == 1 and cards[0].Preset == "A5"
+    card = cards[0]
+    card.Preset = "A4"
+    doc.recompute()
+
+    def add(command, host):
+        Gui.Selection.clearSelection()
+        Gui.Selection.addSelection(host)
+        known = set(o.Name for o in doc.Objects)
+        Gui.runCommand(command)
+        new = [o for o in doc.Objects if o.Name not in known]
+        out[command] = bool(new) and new[0].Host == host and new[0].Shape.isValid()
+        return new[0] if new else None
+
+    box = add("PopUp_BoxFold", card)
+    tent = add("PopUp_TentFold", box)
+    step = add("PopUp_StepFold", box)
+    layer = add("PopUp_FloatingLayer", box)
+    v_fold = add("PopUp_VFold", card)
+    v_box = add("PopUp_VBoxFold", card)
+    # The values of the demo card (valid): the commands fit their defaults to the host alone.
+    values = {
+        box: dict(Offset=60, Width=100, DepthGround=30, DepthBackdrop=30, Height=30),
+        tent: dict(Offset=10, Width=40, Foot=10, FootBackdrop=10, Slope=14),
+        step: dict(Offset=10, Width=60, RunGround=15, RunBackdrop=15),
+        layer: dict(Offset=58, Width=35, Height=10, Support=8, Overhang=5),
+        v_box: dict(Offset=185, Side=10, Height=8, WallAngle=45),
+        v_fold: dict(Offset=25, Run=40, HingeAngle=45, Spine=45, SpineAngle=60),
+    }
+    for obj, properties in values.items():
+        for name, value in properties.items():
+            setattr(obj, name, value)
+    step.HostPair = box.Label + ".side_ground"
+    doc.recompute()
+    objects = [card, box, tent, step, layer, v_fold, v_box]
+    out["states"] = {o.Name: list(o.State) for o in objects}
+    out["faces"] = {o.Name: len(o.Shape.Faces) for o in objects}
+    out["colours"] = {o.Name: len(o.ViewObject.DiffuseColor) for o in objects}
+    out["children"] = [c.Name for c in card.ViewObject.Proxy.claimChildren()]
+    out["icons"] = [os.path.basename(o.ViewObject.Proxy.getIcon()) for o in objects]
+
+    # The task panel: live edit, the error of a bad value, OK commits one undo step.
+    foot_before = tent.Foot.Value
+    Gui.ActiveDocument.setEdit(tent.Name, 0)
+    Gui.updateGui()
+    panel = mechanism_panel.last_panel
+    out["panel_open"] = Gui.Control.activeDialog() and panel is not None and panel.obj is tent
+    wait_until(lambda: False, 200)  # the report view appends queued messages on events
+    log_before_error = report_view_text()  # the bad value's traceback is expected
+    panel.set_value("Foot", -3.0)
+    out["panel_error"] = panel.status_text()
+    panel.set_value("Foot", 9.0)
+    wait_until(lambda: False, 200)
+    log_after_error = report_view_text()
+    out["panel_ok"] = panel.status_text()
+    out["panel_applied"] = tent.Foot.Value == 9.0 and "Invalid" not in tent.State
+    Gui.Control.activeDialog() and panel.accept()
+    Gui.updateGui()
+    out["panel_closed"] = not Gui.Control.activeDialog()
+    Gui.ActiveDocument.setEdit(tent.Name, 0)
+    mechanism_panel.last_panel.set_value("Slope", 40.0)
+    mechanism_panel.last_panel.reject()
+    Gui.updateGui()
+    out["panel_cancel_restores"] = tent.Slope.Value != 40.0 and not Gui.Control.activeDialog()
+
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(tent)  # a mechanism stands for its card
+    Gui.runCommand("PopUp_CheckValidity")
+    out["checked"] = [r["object"] for r in check_validity.last_reports] == [card.Name]
+    out["valid"] = card.Valid
+    out["diagnostics"] = list(card.Diagnostics)
+
+    view = Gui.ActiveDocument.ActiveView
+    card.FoldAngle = 100.0
+    doc.recompute()
+    view.setViewDirection((-0.35, 0.75, -0.56))  # from above the open card, in front of it
+    view.fitAll()
+    Gui.updateGui()
+    view.saveImage(CONFIG["card_png"], CONFIG["width"], CONFIG["height"], "White")
+    count_non_white(CONFIG["card_png"], "card_", out)
+
+    # Offending patches turn red: the v-fold moved into the box's back.
+    v_fold.Offset = box.Offset.Value + box.Width.Value + 2.0
+    doc.recompute()
+    Gui.runCommand("PopUp_CheckValidity")
+    wait_until(lambda: False, 200)  # deferred colouring
+    red = OFFENDING + (0.0,)
+    out["red_faces"] = {
+        o.Name: sum(1 for c in o.ViewObject.DiffuseColor if tuple(round(x, 3) for x in c)
+                    == tuple(round(x, 3) for x in red))
+        for o in objects
+    }
+    out["invalid_found"] = card.Valid is False
+    v_fold.Offset = 25.0
+    doc.recompute()
+    wait_until(lambda: False, 200)
+    out["red_cleared"] = not any(
+        tuple(round(x, 3) for x in c) == tuple(round(x, 3) for x in red)
+        for c in card.ViewObject.DiffuseColor
+    )
+
+    # The animation: timer-driven, the GUI keeps running, the angle comes back.
+    animate.STEP_MS = 5
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(card)
+    seen = set()
+    Gui.runCommand("PopUp_Animate")
+    player = animate._player
+    out["animation_started"] = player is not None and player.running()
+    finished = wait_until(
+        lambda: seen.add(round(card.FoldAngle.Value)) or not player.running(), 120000
+    )
+    out["animation_finished"] = finished
+    out["animation_frames"] = player.frames if player else 0
+    out["animation_reached_zero"] = 0 in seen
+    out["fold_angle_restored"] = card.FoldAngle.Value == 100.0
+
+    # The panel's OK was one undo step: undoing it brings the old Foot back.
+    doc.undo()
+    doc.recompute()
+    out["panel_undone"] = tent.Foot.Value == foot_before and "Invalid" not in tent.State
+    log = log_before_error[len(before) :] + report_view_text()[len(log_after_error) :]
+    out["report_errors"] = [
+        line for line in log.splitlines() if "Traceback" in line or "Error" in line
+    ]
+    FreeCAD.closeDocument(doc.Name)
 
 
 def main():
@@ -103,6 +275,8 @@ def main():
     result["load_undone"] = doc.Objects == []
     FreeCAD.closeDocument(doc.Name)
 
+    mechanisms()
+
 
 try:
     main()
@@ -136,6 +310,7 @@ def run_freecad():
         "check_command": "PopUp_CheckValidity",
         "commands": COMMANDS,
         "png": os.path.join(OUT_DIR, "screenshot.png"),
+        "card_png": os.path.join(OUT_DIR, "card.png"),
         "result": os.path.join(OUT_DIR, "result.json"),
         "width": WIDTH,
         "height": HEIGHT,
@@ -158,6 +333,82 @@ def run_freecad():
             return code, json.load(stream)
     except (OSError, ValueError):
         return code, None
+
+
+def check_mechanisms(check, m):
+    """The card-and-mechanisms part of the macro's result."""
+    check("PopUp_Card made an A5 card", m.get("card_made") is True)
+    for command in ["PopUp_BoxFold", "PopUp_TentFold", "PopUp_StepFold", "PopUp_FloatingLayer"]:
+        check(f"{command} built on the selected host", m.get(command) is True)
+    for command in ["PopUp_VFold", "PopUp_VBoxFold"]:
+        check(f"{command} built on the selected card", m.get(command) is True)
+    states = m.get("states") or {}
+    check(
+        "every feature recomputed",
+        len(states) == 7 and all(s == ["Up-to-date"] for s in states.values()),
+        states,
+    )
+    faces = m.get("faces") or {}
+    check(
+        "face counts (card = sum of its mechanisms + 2)",
+        sorted(list(faces.values())[1:]) == [2, 2, 2, 6, 9, 9]
+        and faces.get("Card") == 2 + sum(list(faces.values())[1:]),
+        faces,
+    )
+    check("faces coloured by role", m.get("colours") == faces, m.get("colours"))
+    check(
+        "the card claims its mechanisms",
+        m.get("children") == ["BoxFold", "VFold", "VBoxFold"],
+        m.get("children"),
+    )
+    check(
+        "icons per kind",
+        m.get("icons")
+        == [
+            "PopUp_Card.svg",
+            "PopUp_BoxFold.svg",
+            "PopUp_TentFold.svg",
+            "PopUp_StepFold.svg",
+            "PopUp_FloatingLayer.svg",
+            "PopUp_VFold.svg",
+            "PopUp_VBoxFold.svg",
+        ],
+        m.get("icons"),
+    )
+    check("task panel opens on setEdit", m.get("panel_open") is True)
+    check("task panel shows the error", "Foot = -3 mm" in (m.get("panel_error") or ""))
+    check("task panel applies a value", m.get("panel_applied") is True, m.get("panel_ok"))
+    check("task panel closes on OK", m.get("panel_closed") is True)
+    check("task panel Cancel restores", m.get("panel_cancel_restores") is True)
+    check("PopUp_CheckValidity checks the card", m.get("checked") is True)
+    check("the card is valid", m.get("valid") is True, m.get("diagnostics"))
+    red = m.get("red_faces") or {}
+    check(
+        "offending patches in red",
+        m.get("invalid_found") is True and red.get("Card", 0) > 0 and red.get("VFold", 0) > 0,
+        red,
+    )
+    check("red goes when the design changes", m.get("red_cleared") is True)
+    check(
+        "PopUp_Animate plays 180 -> 0 -> 180",
+        m.get("animation_started") is True
+        and m.get("animation_finished") is True
+        and m.get("animation_reached_zero") is True
+        and m.get("animation_frames", 0) > 100,
+        f"{m.get('animation_frames')} frames",
+    )
+    check("the fold angle comes back", m.get("fold_angle_restored") is True)
+    check("the panel's edit is one undo step", m.get("panel_undone") is True)
+    check("no errors in the report view", m.get("report_errors") == [], m.get("report_errors"))
+    pixels = m.get("card_non_white_pixels", 0)
+    check(
+        "card screenshot shows the pop-up",
+        m.get("card_image_size") == [WIDTH, HEIGHT]
+        and pixels > 0.02 * WIDTH * HEIGHT
+        and m.get("card_tinted_pixels", 0) > 0.005 * WIDTH * HEIGHT,
+        f"{pixels} non-white pixels, {m.get('card_tinted_pixels')} in colour, "
+        + os.path.join(OUT_DIR, "card.png"),
+    )
 
 
 def main():
@@ -209,6 +460,7 @@ def main():
         f"{pixels} non-white pixels, {result.get('tinted_pixels')} in colour, "
         + os.path.join(OUT_DIR, "screenshot.png"),
     )
+    check_mechanisms(check, result.get("mechanisms") or {})
     failed = checks.count(False)
     print(f"gui_smoke: {len(checks) - failed} passed, {failed} failed")
     return 1 if failed else 0

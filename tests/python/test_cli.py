@@ -214,6 +214,47 @@ def test_check_fcstd_with_invalid_design(documents, user_home):
     assert report["valid"] is False and report["foldable"] is False
 
 
+CARD_DOCUMENT = textwrap.dedent(
+    """
+    import sys
+    import FreeCAD
+    from popupwb import make
+
+    doc = FreeCAD.newDocument("card")
+    card = make.make_card(doc, preset="A5", fold_angle=70.0)
+    box = make.make_box_fold(card, offset=40.0, width=60.0, name="Box")
+    tent = make.make_tent_fold(box, name="Tent")
+    doc.recompute()
+    doc.saveAs(sys.argv[1] + "/card.FCStd")
+    tent.Foot = -3.0
+    doc.recompute()
+    doc.saveAs(sys.argv[1] + "/bad_card.FCStd")
+    """
+)
+
+
+def test_check_fcstd_with_a_card_checks_its_whole_assembly(tmp_path, user_home):
+    env = dict(os.environ)
+    env["PYTHONPATH"] = os.pathsep.join(
+        [os.path.join(BUILD_DIR, "python"), os.path.join(SOURCE_DIR, "Workbench"), FREECAD_LIB]
+    )
+    env.update(FREECAD_USER_HOME=user_home, HOME=user_home)
+    proc = subprocess.run(
+        ["/usr/bin/python3", "-c", CARD_DOCUMENT, str(tmp_path)],
+        capture_output=True,
+        text=True,
+        timeout=300,
+        env=env,
+    )
+    assert proc.returncode == 0, proc.stderr
+    proc = popup("check", str(tmp_path / "card.FCStd"), "--json", home=user_home)
+    assert proc.returncode == 0, proc.stderr
+    report = json.loads(proc.stdout)
+    assert report["valid"] is True and report["object"] == "Card"
+    path = str(tmp_path / "bad_card.FCStd")
+    assert_clean_error(popup("check", path, home=user_home), path, "Tent: Foot = -3 mm")
+
+
 def test_check_fcstd_without_scaffold(documents, user_home):
     path = str(documents / "plain.FCStd")
     assert_clean_error(popup("check", path, home=user_home), path, "no PopUp Scaffold")

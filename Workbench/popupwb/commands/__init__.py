@@ -1,5 +1,16 @@
 """GUI commands of the PopUp workbench. Importing this package registers them with FreeCADGui."""
 
-from popupwb.commands import check_validity, load_design
+from popupwb.commands import (
+    animate,
+    check_validity,
+    create_card,
+    create_mechanism,
+    load_design,
+)
 
-COMMANDS = [load_design.COMMAND_ID, check_validity.COMMAND_ID]
+# Toolbar and menu order: make a card, nest mechanisms on it, check and play it; design files.
+COMMANDS = (
+    [create_card.COMMAND_ID]
+    + create_mechanism.COMMAND_IDS
+    + [check_validity.COMMAND_ID, animate.COMMAND_ID, load_design.COMMAND_ID]
+)

@@ -1,9 +1,11 @@
-"""PopUp_CheckValidity: validity report of the selected Scaffolds (all of them when none is)."""
+"""PopUp_CheckValidity: validity report of the selected Scaffolds and cards (a selected mechanism
+stands for its card; all of them when none is selected)."""
 
 import FreeCAD
 import FreeCADGui
 
 import popupwb
+from popupwb import assembly
 from popupwb.features.scaffold_feature import is_scaffold
 
 COMMAND_ID = "PopUp_CheckValidity"
@@ -12,12 +14,32 @@ COMMAND_ID = "PopUp_CheckValidity"
 last_reports = []
 
 
+def _checkable(obj):
+    return is_scaffold(obj) or assembly.is_card(obj)
+
+
+def _target(obj):
+    """The object a check of `obj` runs on: itself, or the card of a mechanism (None if none)."""
+    if _checkable(obj):
+        return obj
+    if assembly.is_mechanism(obj):
+        try:
+            return assembly.root_card(obj)
+        except ValueError:
+            return None
+    return None
+
+
 def _targets():
     doc = FreeCAD.ActiveDocument
     if doc is None:
         return []
-    selected = [o for o in FreeCADGui.Selection.getSelection(doc.Name) if is_scaffold(o)]
-    return selected or [o for o in doc.Objects if is_scaffold(o)]
+    selected = []
+    for obj in FreeCADGui.Selection.getSelection(doc.Name):
+        target = _target(obj)
+        if target is not None and all(target is not other for other in selected):
+            selected.append(target)
+    return selected or [o for o in doc.Objects if _checkable(o)]
 
 
 class CheckValidityCommand:
@@ -26,12 +48,13 @@ class CheckValidityCommand:
             "Pixmap": popupwb.icon_path(COMMAND_ID),
             "MenuText": "Check validity",
             "ToolTip": "Check that the selected pop-ups (or all) fold flat, are stable, do not "
-            "intersect and stay inside the closed card; the report goes to the report view",
+            "intersect and stay inside the closed card; the report goes to the report view and "
+            "offending patches turn red",
         }
 
     def IsActive(self):
         doc = FreeCAD.ActiveDocument
-        return doc is not None and any(is_scaffold(o) for o in doc.Objects)
+        return doc is not None and any(_checkable(o) for o in doc.Objects)
 
     def Activated(self):
         from popupwb.validity import run_check

@@ -141,6 +141,11 @@ class ScaffoldFeature(StatelessProxy):
 
     def onDocumentRestored(self, obj):
         self.add_properties(obj)
+        if FreeCAD.GuiUp:  # saved headless: no view provider yet
+            from popupwb.viewproviders.card_viewprovider import attach_if_missing
+            from popupwb.viewproviders.scaffold_viewprovider import ScaffoldViewProvider
+
+            attach_if_missing(obj, ScaffoldViewProvider)
 
     def execute(self, obj):
         start = time.perf_counter()

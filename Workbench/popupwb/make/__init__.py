@@ -3,9 +3,11 @@
 from popupwb.make.make_card import make_card
 from popupwb.make.make_mechanisms import (
     make_box_fold,
+    make_floating_layer,
     make_mechanism,
     make_step_fold,
     make_tent_fold,
+    make_v_box_fold,
     make_v_fold,
 )
 from popupwb.make.make_scaffold import make_scaffold
@@ -13,9 +15,11 @@ from popupwb.make.make_scaffold import make_scaffold
 __all__ = [
     "make_box_fold",
     "make_card",
+    "make_floating_layer",
     "make_mechanism",
     "make_scaffold",
     "make_step_fold",
     "make_tent_fold",
+    "make_v_box_fold",
     "make_v_fold",
 ]

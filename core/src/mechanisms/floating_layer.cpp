@@ -43,4 +43,4 @@ Result<MechanismParts> add_floating_layer(Scaffold& scaffold, const BasePatchPai
     return r;
 }
 
-}  // namespace popup
+} // namespace popup

@@ -7,7 +7,7 @@ namespace popup {
 void build_parallel_box(MechanismBuilder& m, double y0, double y1, const ParallelSection& s)
 {
     const double g = s.ground, b = s.backdrop, c = s.height;
-    const double og = g + s.overhang, ob = b + s.overhang;  // how far the top reaches
+    const double og = g + s.overhang, ob = b + s.overhang; // how far the top reaches
     const BasePatchPair& host = m.host();
     const std::string& name = m.name();
     // Local section at the design state: C on x = 0 from the hinge up to the top, L at x = g,
@@ -18,7 +18,8 @@ void build_parallel_box(MechanismBuilder& m, double y0, double y1, const Paralle
         m.patch({{g, y0, 0}, {g, y1, 0}, {g, y1, c}, {g, y0, c}}, PatchRole::support, "L");
     const int R =
         m.patch({{-b, y0, 0}, {-b, y0, c}, {-b, y1, c}, {-b, y1, 0}}, PatchRole::support, "R");
-    const int TG = m.patch({{0, y0, c}, {og, y0, c}, {og, y1, c}, {0, y1, c}}, PatchRole::top, "TG");
+    const int TG =
+        m.patch({{0, y0, c}, {og, y0, c}, {og, y1, c}, {0, y1, c}}, PatchRole::top, "TG");
     const int TB =
         m.patch({{-ob, y0, c}, {0, y0, c}, {0, y1, c}, {-ob, y1, c}}, PatchRole::top, "TB");
     m.hinge(host.ground, L, {g, y0, 0}, {g, y1, 0});
@@ -93,4 +94,4 @@ void build_parallel_box(MechanismBuilder& m, double y0, double y1, const Paralle
     m.sweeps(y0 - (s.front ? reach : 0.0), y1 + (s.back ? reach : 0.0));
 }
 
-}  // namespace popup
+} // namespace popup

@@ -7,10 +7,10 @@
 namespace popup {
 
 struct ParallelSection {
-    double ground = 30.0;    ///< g: side L stands this far from the host hinge (mm)
-    double backdrop = 30.0;  ///< b (mm)
-    double height = 30.0;    ///< c (mm)
-    double overhang = 0.0;   ///< the top reaches this far beyond each side (mm)
+    double ground = 30.0;   ///< g: side L stands this far from the host hinge (mm)
+    double backdrop = 30.0; ///< b (mm)
+    double height = 30.0;   ///< c (mm)
+    double overhang = 0.0;  ///< the top reaches this far beyond each side (mm)
     bool front = true;
     bool back = true;
 };
@@ -18,4 +18,4 @@ struct ParallelSection {
 /// Adds the section between y0 and y1 along the host hinge. Parameters are checked by callers.
 void build_parallel_box(MechanismBuilder& m, double y0, double y1, const ParallelSection& s);
 
-}  // namespace popup
+} // namespace popup

@@ -10,13 +10,13 @@ namespace popup {
 /// platform half) meet over the hinge on a backbone, and end panels keep the platform from
 /// shearing (docs/MATH.md, Box fold). The platform is offered as a base patch pair.
 struct FloatingLayerParams : Placement1D {
-    double height = 25.0;    ///< h (mm)
-    double support = 20.0;   ///< distance of each support from the host hinge (mm)
-    double overhang = 15.0;  ///< platform beyond each support (mm)
+    double height = 25.0;   ///< h (mm)
+    double support = 20.0;  ///< distance of each support from the host hinge (mm)
+    double overhang = 15.0; ///< platform beyond each support (mm)
 };
 
 Result<MechanismParts> add_floating_layer(Scaffold& scaffold, const BasePatchPair& host,
                                           const FloatingLayerParams& params,
                                           const std::string& name = "FloatingLayer");
 
-}  // namespace popup
+} // namespace popup

@@ -1,0 +1,300 @@
+"""The whole card's scaffold, assembled from a PopUpCard and the mechanism features nested on it.
+
+A card and its mechanisms are one rigid-body system: the core builds and simulates them together.
+Every feature of the card asks this module for the same Assembly (built once per design, cached by
+a key made of every property that shapes it) and for the same posed compound at the card's
+FoldAngle (simulated once per angle, cached), then keeps only its own patches.
+
+Design order: the card, then each mechanism after its host (depth first from the card, siblings in
+document order, so the patch ids are the same in every process). A mechanism whose generator
+raises, or whose host failed, adds nothing; its message is remembered for its own execute().
+"""
+
+import collections
+import hashlib
+import math
+import re
+
+CARD_TYPE = "PopUp::Card"
+CENTRAL_FOLD = "central fold"  # popupcore.central_fold(card).name
+
+_ASSEMBLIES = collections.OrderedDict()  # design key -> Assembly
+_ASSEMBLY_CACHE_SIZE = 8
+_STATES = collections.OrderedDict()  # (design key, angle) -> FoldState or error text
+_STATE_CACHE_SIZE = 64
+_SHAPES = collections.OrderedDict()  # (design key, angle, thickness) -> Part.Shape compound
+_SHAPE_CACHE_SIZE = 16
+
+
+def _proxy(obj):
+    return getattr(obj, "Proxy", None)
+
+
+def is_card(obj):
+    """True for PopUpCard objects."""
+    return getattr(_proxy(obj), "TYPE", None) == CARD_TYPE
+
+
+def is_mechanism(obj):
+    """True for mechanism features (proxies derived from MechanismFeature)."""
+    return bool(getattr(_proxy(obj), "IS_MECHANISM", False))
+
+
+def root_card(obj):
+    """The PopUpCard at the root of obj's Host chain (obj itself for a card).
+
+    Raises ValueError naming the first object whose Host is missing, not a PopUp host, or part of
+    a loop.
+    """
+    seen = []
+    current = obj
+    while not is_card(current):
+        if any(current is other for other in seen):
+            chain = " -> ".join(o.Label for o in seen + [current])
+            raise ValueError(f"{obj.Label}: Host = {current.Label}, must not loop ({chain})")
+        seen.append(current)
+        host = getattr(current, "Host", None)
+        if host is None:
+            raise ValueError(
+                f"{current.Label}: Host is empty, must be a PopUpCard or a mechanism "
+                "offering base patch pairs"
+            )
+        if not (is_card(host) or is_mechanism(host)):
+            raise ValueError(
+                f"{current.Label}: Host = {host.Label}, must be a PopUpCard or a mechanism "
+                "offering base patch pairs"
+            )
+        current = host
+    return current
+
+
+def host_pair_names(host):
+    """Names of the base patch pairs a host offers, without building anything: "central fold" for
+    a card, "<Label>.<part>" for a mechanism (the names popupcore gives them)."""
+    if is_card(host):
+        return [CENTRAL_FOLD]
+    if is_mechanism(host):
+        return [f"{host.Label}.{part}" for part in _proxy(host).OFFERS]
+    return []
+
+
+def mechanisms_of(card):
+    """The mechanisms hosted (directly or through other mechanisms) on `card`, hosts first."""
+    children = collections.defaultdict(list)
+    for obj in card.Document.Objects:
+        if is_mechanism(obj) and getattr(obj, "Host", None) is not None:
+            children[obj.Host.Name].append(obj)
+    ordered, seen = [], set()
+    stack = list(reversed(children[card.Name]))
+    while stack:
+        obj = stack.pop()
+        if obj.Name in seen:  # a Host loop below the card: root_card() reports it
+            continue
+        seen.add(obj.Name)
+        ordered.append(obj)
+        stack.extend(reversed(children[obj.Name]))
+    return ordered
+
+
+def _number(value):
+    return float(getattr(value, "Value", value))
+
+
+def design_key(card):
+    """Everything that shapes the card's scaffold, as a hashable tuple (FoldAngle and Thickened
+    are not in it: they pose and display the same design)."""
+    parts = [
+        (
+            card.Name,
+            _number(card.Width),
+            _number(card.Depth),
+            _number(card.PaperThickness),
+        )
+    ]
+    for obj in mechanisms_of(card):
+        parts.append(
+            (obj.Name, obj.Label, obj.Proxy.TYPE, obj.Host.Name, obj.HostPair)
+            + tuple(_proxy(obj).parameter_values(obj))
+        )
+    return tuple(parts)
+
+
+class Assembly:
+    """One card's scaffold with everything the features need to show their part of it.
+
+    scaffold          popupcore.Scaffold of the card and every mechanism that built
+    order             object names in design order (the card first)
+    patches           {object name: [patch ids]} (the card owns its ground and backdrop)
+    errors            {object name: message} for mechanisms that added nothing
+    offered           {object name: [popupcore.BasePatchPair]} for the card and built mechanisms
+    card_error        message when the card itself cannot be built (then nothing is)
+    key, digest       the design key and a short stable hash of it
+    """
+
+    def __init__(self, key):
+        self.key = key
+        self.digest = hashlib.sha1(repr(key).encode("utf-8")).hexdigest()[:16]
+        self.scaffold = None
+        self.order = []
+        self.patches = {}
+        self.errors = {}
+        self.offered = {}
+        self.card_error = None
+
+    def pair_names(self, name):
+        """Names of the pairs the object `name` offers ([] if it did not build)."""
+        return [pair.name for pair in self.offered.get(name, [])]
+
+    def patch_owner(self, patch_id):
+        """Name of the object owning patch `patch_id` (None if out of range)."""
+        for name, ids in self.patches.items():
+            if patch_id in ids:
+                return name
+        return None
+
+    def state_at(self, angle_deg):
+        """popupcore.FoldState of the whole card at `angle_deg`, simulated once per angle.
+
+        Raises ValueError saying why the angle cannot be reached.
+        """
+        from popupwb.core import popupcore
+
+        cache_key = (self.key, round(float(angle_deg), 12))
+        state = _STATES.get(cache_key)
+        if state is None:
+            sweep = popupcore.simulate_fold(self.scaffold, [math.radians(angle_deg)])
+            if sweep.complete and sweep.states:
+                state = sweep.states[0]
+            else:
+                findings = "; ".join(f"{d.subject}: {d.message}" for d in sweep.diagnostics)
+                if sweep.locked_at >= 0.0:
+                    reason = f"the design locks at {math.degrees(sweep.locked_at):.2f}°"
+                else:
+                    reason = "the simulation did not reach it"
+                state = f"cannot be reached, {reason}" + (f" ({findings})" if findings else "")
+            _remember(_STATES, cache_key, state, _STATE_CACHE_SIZE)
+        else:
+            _STATES.move_to_end(cache_key)
+        if isinstance(state, str):
+            raise ValueError(state)
+        return state
+
+    def shape_at(self, angle_deg, thickness=0.0):
+        """Part compound with one child (face, or solid when thickness > 0) per patch, in patch id
+        order, at `angle_deg`; built once per (design, angle, thickness). Do not modify it."""
+        import Part
+
+        from popupwb.core import popupcore
+
+        cache_key = (self.key, round(float(angle_deg), 12), float(thickness))
+        shape = _SHAPES.get(cache_key)
+        if shape is None:
+            brep = popupcore.patches_to_brep(self.scaffold, self.state_at(angle_deg), thickness)
+            shape = Part.Shape()
+            shape.importBrepFromString(brep, False)  # returns None, fills `shape`
+            _remember(_SHAPES, cache_key, shape, _SHAPE_CACHE_SIZE)
+        else:
+            _SHAPES.move_to_end(cache_key)
+        return shape
+
+
+def _remember(cache, key, value, size):
+    cache[key] = value
+    while len(cache) > size:
+        cache.popitem(last=False)
+
+
+def _card_params(card):
+    from popupwb.core import popupcore
+
+    params = popupcore.CardParams()
+    params.width = _number(card.Width)
+    params.depth = _number(card.Depth)
+    params.paper_thickness = _number(card.PaperThickness)
+    return params
+
+
+def _resolve_pair(obj, pairs):
+    """The pair named by obj.HostPair; a stale name (the host was renamed) matches by its part."""
+    wanted = obj.HostPair
+    if not wanted:
+        return pairs[0] if pairs else None
+    for pair in pairs:
+        if pair.name == wanted:
+            return pair
+    part = wanted.rsplit(".", 1)[-1]
+    for pair in pairs:
+        if pair.name.rsplit(".", 1)[-1] == part:
+            return pair
+    return None
+
+
+def _card_message(text, label):
+    """The core's card errors, "Card.Depth: Card: Depth = 0 mm, must be ...; ...", named after the
+    card's Label: "Greeting: Depth = 0 mm, must be ..."."""
+    text = re.sub(r"(^|; )Card\.\w+: ", r"\1", text)
+    return re.sub(r"(^|; )Card: ", lambda m: f"{m.group(1)}{label}: ", text)
+
+
+def build(card):
+    """A new Assembly of `card` (no cache; assembly_of() is the cached entry point)."""
+    from popupwb.core import popupcore
+
+    assembly = Assembly(design_key(card))
+    try:
+        scaffold = popupcore.make_card(_card_params(card))
+    except ValueError as error:  # DesignError
+        assembly.card_error = _card_message(str(error), card.Label)
+        for obj in mechanisms_of(card):
+            assembly.errors[
+                obj.Name
+            ] = f"{obj.Label}: the card {card.Label} cannot be built, fix it first"
+        return assembly
+    assembly.scaffold = scaffold
+    assembly.order.append(card.Name)
+    assembly.patches[card.Name] = [scaffold.ground, scaffold.backdrop]
+    assembly.offered[card.Name] = [popupcore.central_fold(scaffold)]
+    for obj in mechanisms_of(card):
+        host = obj.Host
+        if host.Name not in assembly.offered:
+            assembly.errors[
+                obj.Name
+            ] = f"{obj.Label}: Host = {host.Label}, which is in error; fix it first"
+            continue
+        pairs = assembly.offered[host.Name]
+        pair = _resolve_pair(obj, pairs)
+        if pair is None:
+            choices = ", ".join(f"'{p.name}'" for p in pairs) or "none"
+            assembly.errors[obj.Name] = (
+                f"{obj.Label}: HostPair = '{obj.HostPair}', must be one of the pairs "
+                f"{host.Label} offers ({choices})"
+            )
+            continue
+        try:
+            parts = obj.Proxy.generate(obj, scaffold, pair)
+        except ValueError as error:  # DesignError names the mechanism (its Label) and parameter
+            assembly.errors[obj.Name] = str(error)
+            continue
+        assembly.order.append(obj.Name)
+        assembly.patches[obj.Name] = list(parts.patches)
+        assembly.offered[obj.Name] = list(parts.offered)
+    return assembly
+
+
+def assembly_of(card):
+    """The Assembly of `card`, built once per design key (module-level cache, never saved)."""
+    key = design_key(card)
+    assembly = _ASSEMBLIES.get(key)
+    if assembly is None:
+        assembly = build(card)
+        _remember(_ASSEMBLIES, key, assembly, _ASSEMBLY_CACHE_SIZE)
+    else:
+        _ASSEMBLIES.move_to_end(key)
+    return assembly
+
+
+def clear_caches():
+    """Forgets every cached assembly, state and shape (tests, timing)."""
+    _ASSEMBLIES.clear()
+    _STATES.clear()
+    _SHAPES.clear()

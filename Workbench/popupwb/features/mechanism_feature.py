@@ -1,0 +1,256 @@
+"""MechanismFeature: base of the pop-up mechanism features (tent, step, v-fold, box fold...).
+
+A mechanism stands on a base patch pair (HostPair) offered by its Host: the card's central fold or
+a pair a box fold offers. Its parameters are properties; the card's assembly (popupwb.assembly)
+calls the popupcore generator with them, and execute() shows this mechanism's own patches of the
+card posed at the card's FoldAngle. A parameter the generator refuses puts only this feature (and
+what is nested on it) in error, with the core's message naming the property.
+
+Dependencies: every mechanism links its root card (hidden `Card`), so FreeCAD recomputes it after
+the card when FoldAngle changes; a changed parameter touches the card, whose shape holds every
+patch, and so the whole card follows. Subclass module paths, class names and property names are
+stored in .FCStd files: never rename them.
+"""
+
+import collections
+import contextlib
+import math
+
+import FreeCAD
+
+
+from popupwb import assembly
+from popupwb.stateless_proxy import StatelessProxy
+
+VERSION = "1"
+
+# kind: "length" (App::PropertyDistance, mm; signed so that the core, not FreeCAD's clamping,
+# judges a negative value), "angle" (App::PropertyAngle, degrees, radians for the core) or "bool".
+Parameter = collections.namedtuple("Parameter", "name kind field doc default")
+
+_PROPERTY_TYPES = {
+    "length": "App::PropertyDistance",
+    "angle": "App::PropertyAngle",
+    "bool": "App::PropertyBool",
+}
+
+# Objects whose properties this module is writing itself (during execute): no touching the card.
+_QUIET = set()
+
+
+@contextlib.contextmanager
+def _quiet(obj):
+    key = (obj.Document.Name, obj.Name)
+    _QUIET.add(key)
+    try:
+        yield
+    finally:
+        _QUIET.discard(key)
+
+
+def _restoring(obj):
+    return "Restore" in obj.State or obj.Document.Restoring
+
+
+def is_mechanism(obj):
+    """True for document objects driven by a MechanismFeature subclass."""
+    return assembly.is_mechanism(obj)
+
+
+class MechanismFeature(StatelessProxy):
+    """Proxy of a Part::FeaturePython mechanism. Subclasses set the class attributes below."""
+
+    IS_MECHANISM = True
+    TYPE = None
+    GROUP = "Mechanism"  # property group of the parameters
+    PARAMS = None  # name of the popupcore params class, e.g. "TentFoldParams"
+    GENERATOR = None  # name of the popupcore generator, e.g. "add_tent_fold"
+    PARAMETERS = ()  # Parameter tuples, in the order the task panel shows them
+    OFFERS = ()  # parts of the base patch pairs it offers: pair names are "<Label>.<part>"
+    OUTPUTS = ()  # (name, doc) of read-only derived length properties
+
+    def __init__(self, obj):
+        obj.Proxy = self
+        self.add_properties(obj)
+
+    # --- properties -------------------------------------------------------------------------
+
+    def add_properties(self, obj):
+        """Adds every property that is missing, so files written by older versions upgrade."""
+        have = set(obj.PropertiesList)
+        if "Host" not in have:
+            obj.addProperty(
+                "App::PropertyLink",
+                "Host",
+                "Placement on host",
+                "The card or mechanism this one stands on",
+            )
+        if "HostPair" not in have:
+            obj.addProperty(
+                "App::PropertyEnumeration",
+                "HostPair",
+                "Placement on host",
+                "Base patch pair of the host this mechanism stands on",
+            )
+        if "Card" not in have:
+            obj.addProperty(
+                "App::PropertyLink",
+                "Card",
+                "Placement on host",
+                "The card at the root of the Host chain (set automatically; it makes FreeCAD "
+                "recompute this mechanism after the card)",
+            )
+            obj.setEditorMode("Card", 2)
+        for p in self.PARAMETERS:
+            if p.name not in have:
+                obj.addProperty(_PROPERTY_TYPES[p.kind], p.name, self.GROUP, p.doc)
+                setattr(obj, p.name, p.default)
+        for name, doc in self.OUTPUTS:
+            if name not in have:
+                obj.addProperty("App::PropertyDistance", name, self.GROUP, doc)
+                obj.setEditorMode(name, 1)
+                obj.setPropertyStatus(name, "Output")
+        if "Version" not in have:
+            obj.addProperty(
+                "App::PropertyString", "Version", "Base", "Version of this object's properties"
+            )
+            obj.Version = VERSION
+            obj.setEditorMode("Version", 1)
+
+    def parameter_values(self, obj):
+        """Plain values of the parameters (mm, degrees, bools): part of the design key."""
+        values = []
+        for p in self.PARAMETERS:
+            value = getattr(obj, p.name)
+            values.append(bool(value) if p.kind == "bool" else float(value.Value))
+        return values
+
+    def parameters(self, obj):
+        """The popupcore params object from the properties (lengths in mm, angles in radians)."""
+        from popupwb.core import popupcore
+
+        params = getattr(popupcore, self.PARAMS)()
+        for p, value in zip(self.PARAMETERS, self.parameter_values(obj)):
+            setattr(params, p.field, math.radians(value) if p.kind == "angle" else value)
+        return params
+
+    def generate(self, obj, scaffold, pair):
+        """Adds this mechanism to `scaffold` on `pair` (popupcore.MechanismParts); DesignError
+        when a parameter is out of range, and then nothing is added."""
+        from popupwb.core import popupcore
+
+        return getattr(popupcore, self.GENERATOR)(scaffold, pair, self.parameters(obj), obj.Label)
+
+    @classmethod
+    def fitted_parameters(cls, pair):
+        """Parameter values (property name -> value) that fit the base patch pair `pair`: what a
+        new mechanism starts with. Subclasses scale them to the pair's length and depths."""
+        return {}
+
+    def update_outputs(self, obj, built):
+        """Writes derived read-only properties after a build (subclasses)."""
+        return None
+
+    # --- FreeCAD callbacks ------------------------------------------------------------------
+
+    def onDocumentRestored(self, obj):
+        self.add_properties(obj)
+        if FreeCAD.GuiUp:
+            from popupwb.viewproviders.card_viewprovider import attach_if_missing
+            from popupwb.viewproviders.mechanism_viewprovider import MechanismViewProvider
+
+            attach_if_missing(obj, MechanismViewProvider)
+
+    def onChanged(self, obj, prop):
+        if _restoring(obj) or not hasattr(obj, "Version"):
+            return
+        if (obj.Document.Name, obj.Name) in _QUIET:
+            return
+        if prop == "Host":
+            old_card = obj.Card
+            self.follow_host(obj)
+            if old_card is not None and old_card is not obj.Card:
+                old_card.touch()  # its shape still holds this mechanism
+        if prop in ("Host", "HostPair", "Label") or prop in {p.name for p in self.PARAMETERS}:
+            # The card's shape holds every patch, and every mechanism after this one may move:
+            # recompute the card, and through the Card links all its mechanisms.
+            card = obj.Card
+            if card is not None:
+                card.touch()
+
+    def unsetupObject(self, obj):
+        # Removed from the document: the card's shape must drop its patches.
+        card = getattr(obj, "Card", None)
+        if card is not None:
+            try:
+                card.touch()
+            except (ReferenceError, RuntimeError):
+                pass
+
+    def follow_host(self, obj):
+        """After Host changed: the Card links of this mechanism and of everything nested on it
+        (their root card may have changed too), and the HostPair choices."""
+        with _quiet(obj):
+            set_choices(obj, assembly.host_pair_names(obj.Host) if obj.Host else [])
+        for other in obj.Document.Objects:
+            if not assembly.is_mechanism(other):
+                continue
+            try:
+                card = assembly.root_card(other)
+            except ValueError:
+                card = None  # execute() reports it
+            if other.Card is not card:
+                with _quiet(other):
+                    other.Card = card
+
+    def execute(self, obj):
+        card = assembly.root_card(obj)  # ValueError names a bad Host
+        if obj.Card is not card:
+            raise ValueError(
+                f"{obj.Label}: Card = {obj.Card.Label if obj.Card else 'empty'}, must be "
+                f"{card.Label}, the card at the root of its Host chain (set Host again)"
+            )
+        built = assembly.assembly_of(card)
+        if built.card_error is None and obj.Host.Name in built.offered:
+            with _quiet(obj):
+                set_choices(obj, built.pair_names(obj.Host.Name))
+        error = built.errors.get(obj.Name)
+        if error:
+            raise ValueError(error)
+        if obj.Name not in built.patches:
+            raise ValueError(
+                f"{obj.Label}: not part of {card.Label}'s assembly (Host = "
+                f"{obj.Host.Label}); recompute the document"
+            )
+        angle = card.FoldAngle.Value
+        thickness = card.PaperThickness.Value if card.Thickened else 0.0
+        try:
+            whole = built.shape_at(angle, thickness)
+        except ValueError as error:
+            raise ValueError(
+                f"{obj.Label}: the card {card.Label} at FoldAngle = {angle:g}° {error}"
+            ) from error
+        import Part
+
+        children = whole.childShapes()
+        obj.Shape = Part.makeCompound([children[i] for i in built.patches[obj.Name]])
+        obj.Placement = card.Placement  # the mechanism moves with its card
+        with _quiet(obj):
+            self.update_outputs(obj, built)
+
+
+def set_choices(obj, names):
+    """HostPair choices = `names`, keeping the current pair (or the pair with the same part after
+    a rename of the host); written only when something changes."""
+    current = obj.HostPair
+    if list(obj.getEnumerationsOfProperty("HostPair") or []) != list(names):
+        obj.HostPair = list(names)
+    if not names:
+        return
+    if current in names:
+        chosen = current
+    else:
+        part = (current or "").rsplit(".", 1)[-1]
+        chosen = next((n for n in names if n.rsplit(".", 1)[-1] == part), names[0])
+    if obj.HostPair != chosen:
+        obj.HostPair = chosen
