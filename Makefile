@@ -40,6 +40,8 @@ demo: build
 
 bench: build
 	$(BUILD)/bench/popup_bench --benchmark_min_time=0.2
+	POPUP_BUILD_DIR=$(CURDIR)/$(BUILD) FREECAD_USER_HOME=$(CURDIR)/$(BUILD)/sandbox/home \
+	  $(PYTHON) bench/freecad_recompute_bench.py
 
 lint:
 	clang-format --dry-run --Werror $$(git ls-files '*.cpp' '*.hpp')

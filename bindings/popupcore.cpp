@@ -37,17 +37,6 @@ py::array_t<double> loop_array(const Loop3& loop)
     return a;
 }
 
-Loop3 array_loop(const py::array_t<double>& a)
-{
-    if (a.ndim() != 2 || a.shape(1) != 3)
-        throw std::invalid_argument("a loop must be an (n, 3) array of points");
-    auto m = a.unchecked<2>();
-    Loop3 loop;
-    for (py::ssize_t i = 0; i < a.shape(0); ++i)
-        loop.push_back({m(i, 0), m(i, 1), m(i, 2)});
-    return loop;
-}
-
 py::dict report_dict(const ValidityReport& r)
 {
     py::list diagnostics;
@@ -225,6 +214,14 @@ PYBIND11_MODULE(popupcore, m)
         py::arg("scaffold"), py::arg("angles"), py::call_guard<py::gil_scoped_release>(),
         "Poses of every patch at each fold angle (radians), by continuation from the design "
         "state.");
+    m.def(
+        "continue_fold",
+        [](const Scaffold& s, const FoldState& from, const std::vector<double>& angles) {
+            return continue_fold(s, from, angles);
+        },
+        py::arg("scaffold"), py::arg("from_state"), py::arg("angles"),
+        py::call_guard<py::gil_scoped_release>(),
+        "Continues the motion from a state on the branch (a cached one) to each angle.");
     m.def(
         "posed_outlines",
         [](const Scaffold& s, const FoldState& st) {

@@ -162,7 +162,13 @@ class Assembly:
         cache_key = (self.key, round(float(angle_deg), 12))
         state = _STATES.get(cache_key)
         if state is None:
-            sweep = popupcore.simulate_fold(self.scaffold, [math.radians(angle_deg)])
+            # Dragging the angle: continue from the nearest angle already solved for this
+            # design, a few steps instead of a sweep from the design state.
+            nearest = self._nearest_state(angle_deg)
+            if nearest is None:
+                sweep = popupcore.simulate_fold(self.scaffold, [math.radians(angle_deg)])
+            else:
+                sweep = popupcore.continue_fold(self.scaffold, nearest, [math.radians(angle_deg)])
             if sweep.complete and sweep.states:
                 state = sweep.states[0]
             else:
@@ -178,6 +184,16 @@ class Assembly:
         if isinstance(state, str):
             raise ValueError(state)
         return state
+
+    def _nearest_state(self, angle_deg):
+        """The cached state of this design closest in angle to `angle_deg`, or None."""
+        best = None
+        for (key, angle), state in _STATES.items():
+            if key != self.key or isinstance(state, str):
+                continue
+            if best is None or abs(angle - angle_deg) < abs(best[0] - angle_deg):
+                best = (angle, state)
+        return None if best is None else best[1]
 
     def shape_at(self, angle_deg, thickness=0.0):
         """Part compound with one child (face, or solid when thickness > 0) per patch, in patch id

@@ -396,10 +396,10 @@ Configuration FoldSolver::configuration(const FoldState& state) const
     return q;
 }
 
-ComponentTrack::ComponentTrack(const FoldSolver& solver, int component, double design_angle)
-    : solver_(solver), component_(component), theta_(design_angle),
-      current_(solver.design_configuration()), previous_(current_), guess_(current_),
-      step_(solver.options().max_step)
+ComponentTrack::ComponentTrack(const FoldSolver& solver, int component, double angle,
+                               const Configuration& start, bool at_design)
+    : solver_(solver), component_(component), theta_(angle), current_(start), previous_(start),
+      guess_(start), step_(solver.options().max_step), at_design_(at_design)
 {
     solver.drive_base(theta_, current_);
 }

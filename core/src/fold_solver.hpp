@@ -103,7 +103,10 @@ private:
 /// Continuation of one component from the design state toward a sequence of angles.
 class ComponentTrack {
 public:
-    ComponentTrack(const FoldSolver& solver, int component, double design_angle);
+    /// Starts at `start` (every body's pose at `angle`); `at_design` when that is the design
+    /// state, where flat folds take their hinted branch on the first step.
+    ComponentTrack(const FoldSolver& solver, int component, double angle,
+                   const Configuration& start, bool at_design);
     /// Advances to `target`; false when the motion locks before it (locked_angle() says where).
     bool advance_to(double target);
     const Configuration& configuration() const { return current_; }

@@ -47,49 +47,34 @@ Loop3 posed_outline(const Patch& patch, const Pose& pose)
     return out;
 }
 
-Result<FoldSweep> simulate_fold(const Scaffold& input, const std::vector<double>& angles,
-                                const SimulationOptions& options)
+namespace {
+
+struct Start {
+    double angle;
+    Configuration configuration;
+    bool design; ///< the design state: flat folds there take their hinted branch
+};
+
+// Continuation of every component from `start` to each requested angle: closing runs first,
+// then opening runs, each in travel order.
+Result<FoldSweep> sweep_from(const Scaffold& s, const BodyGraph& g, const FoldSolver& solver,
+                             const Start& start, const std::vector<double>& angles)
 {
     Result<FoldSweep> result;
-    Result<Scaffold> checked = validate_scaffold(input);
-    if (!checked.ok) {
-        result.ok = false;
-        result.diagnostics = checked.diagnostics;
-        return result;
-    }
-    const Scaffold& s = checked.value;
-    for (double a : angles)
-        if (!(a >= 0.0 && a <= M_PI)) {
-            std::ostringstream m;
-            m << "fold angle " << a << " rad is outside 0..π (0°..180°)";
-            result.fail("angle_out_of_range", m.str(), "angles");
-        }
-    if (!result.ok)
-        return result;
-    Result<BodyGraph> graph = build_body_graph(s);
-    if (!graph.ok) {
-        result.ok = false;
-        result.diagnostics = graph.diagnostics;
-        return result;
-    }
-    const BodyGraph& g = graph.value;
-    const FoldSolver solver(s, g, options);
-
-    // Closing and opening runs leave the design state in opposite directions.
     std::vector<int> order(angles.size());
     std::iota(order.begin(), order.end(), 0);
     std::vector<int> closing, opening;
     for (int i : order)
-        (angles[i] <= s.design_angle ? closing : opening).push_back(i);
+        (angles[i] <= start.angle ? closing : opening).push_back(i);
     std::sort(closing.begin(), closing.end(), [&](int a, int b) { return angles[a] > angles[b]; });
     std::sort(opening.begin(), opening.end(), [&](int a, int b) { return angles[a] < angles[b]; });
 
-    std::vector<Configuration> configs(angles.size(), solver.design_configuration());
+    std::vector<Configuration> configs(angles.size(), start.configuration);
     std::vector<bool> reached(angles.size(), true);
     FoldSweep& sweep = result.value;
     for (const std::vector<int>* run : {&closing, &opening}) {
         for (size_t c = 0; c < g.components.size(); ++c) {
-            ComponentTrack track(solver, int(c), s.design_angle);
+            ComponentTrack track(solver, int(c), start.angle, start.configuration, start.design);
             size_t k = 0;
             for (; k < run->size(); ++k) {
                 const int i = (*run)[k];
@@ -117,8 +102,68 @@ Result<FoldSweep> simulate_fold(const Scaffold& input, const std::vector<double>
                             patch_list(s, g, int(c)));
         }
     }
+    sweep.complete = std::all_of(reached.begin(), reached.end(), [](bool r) { return r; });
+    for (size_t i = 0; i < angles.size(); ++i) {
+        if (!reached[i])
+            continue;
+        solver.drive_base(angles[i], configs[i]);
+        sweep.states.push_back(solver.state(angles[i], configs[i]));
+    }
+    return result;
+}
+
+// Validates the scaffold and the angles; on success fills `checked` and `graph`.
+bool prepare(const Scaffold& input, const std::vector<double>& angles, Result<FoldSweep>& result,
+             Result<Scaffold>& checked, Result<BodyGraph>& graph)
+{
+    checked = validate_scaffold(input);
+    if (!checked.ok) {
+        result.ok = false;
+        result.diagnostics = checked.diagnostics;
+        return false;
+    }
+    for (double a : angles)
+        if (!(a >= 0.0 && a <= M_PI)) {
+            std::ostringstream m;
+            m << "fold angle " << a << " rad is outside 0..π (0°..180°)";
+            result.fail("angle_out_of_range", m.str(), "angles");
+        }
+    if (!result.ok)
+        return false;
+    graph = build_body_graph(checked.value);
+    if (!graph.ok) {
+        result.ok = false;
+        result.diagnostics = graph.diagnostics;
+        return false;
+    }
+    return true;
+}
+
+void append(Result<FoldSweep>& to, Result<FoldSweep>&& from)
+{
+    to.value = std::move(from.value);
+    to.ok = to.ok && from.ok;
+    to.diagnostics.insert(to.diagnostics.end(), from.diagnostics.begin(), from.diagnostics.end());
+}
+
+} // namespace
+
+Result<FoldSweep> simulate_fold(const Scaffold& input, const std::vector<double>& angles,
+                                const SimulationOptions& options)
+{
+    Result<FoldSweep> result;
+    Result<Scaffold> checked;
+    Result<BodyGraph> graph;
+    if (!prepare(input, angles, result, checked, graph))
+        return result;
+    const Scaffold& s = checked.value;
+    const BodyGraph& g = graph.value;
+    const FoldSolver solver(s, g, options);
+    Configuration design = solver.design_configuration();
+    solver.drive_base(s.design_angle, design);
+    append(result, sweep_from(s, g, solver, {s.design_angle, design, true}, angles));
+
     // A flat fold without a direction matters only where the design state is a branch point.
-    const Configuration design = solver.design_configuration();
     for (size_t c = 0; c < g.components.size(); ++c) {
         if (solver.undirected_flat_hinges(c).empty() || !solver.singular(int(c), design))
             continue;
@@ -128,13 +173,32 @@ Result<FoldSweep> simulate_fold(const Scaffold& input, const std::vector<double>
              "direction; set \"fold\" to valley or mountain to choose how it pops";
         result.warn("undirected_flat_fold", m.str(), patch_list(s, g, int(c)));
     }
-    sweep.complete = std::all_of(reached.begin(), reached.end(), [](bool r) { return r; });
-    for (size_t i = 0; i < angles.size(); ++i) {
-        if (!reached[i])
-            continue;
-        solver.drive_base(angles[i], configs[i]);
-        sweep.states.push_back(solver.state(angles[i], configs[i]));
+    return result;
+}
+
+Result<FoldSweep> continue_fold(const Scaffold& input, const FoldState& from,
+                                const std::vector<double>& angles, const SimulationOptions& options)
+{
+    Result<FoldSweep> result;
+    Result<Scaffold> checked;
+    Result<BodyGraph> graph;
+    if (!prepare(input, angles, result, checked, graph))
+        return result;
+    const Scaffold& s = checked.value;
+    if (from.poses.size() != s.patches.size() || !(from.angle >= 0.0 && from.angle <= M_PI)) {
+        result.fail("bad_start_state",
+                    "the start state has " + std::to_string(from.poses.size()) + " poses for " +
+                        std::to_string(s.patches.size()) + " patches, or an angle outside 0..π",
+                    "from");
+        return result;
     }
+    const FoldSolver solver(s, graph.value, options);
+    // The design state itself is a possible branch point: start there the hinted way.
+    if (std::abs(from.angle - s.design_angle) < 1e-12)
+        return simulate_fold(input, angles, options);
+    Configuration start = solver.configuration(from);
+    solver.drive_base(from.angle, start);
+    append(result, sweep_from(s, graph.value, solver, {from.angle, start, false}, angles));
     return result;
 }
 

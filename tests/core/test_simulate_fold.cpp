@@ -144,3 +144,25 @@ TEST(SimulateFold, StatesComeBackInTheRequestedOrder)
     for (size_t i = 0; i < angles.size(); ++i)
         EXPECT_EQ(r.value.states[i].angle, angles[i]);
 }
+
+TEST(ContinueFold, FromACachedStateMatchesASweepFromTheDesign)
+{
+    Scaffold card = fixtures::make_card(200, 140);
+    fixtures::add_step_fold(card, 20, 40, 30, 20);
+    fixtures::add_tent_fold(card, 80, 50, 30, 40);
+    fixtures::add_v_fold(card, 150, 40, deg(45), 45, deg(60));
+    const Result<FoldSweep> cached = simulate_fold(card, {deg(120)});
+    ASSERT_EQ(cached.value.states.size(), 1u);
+    const std::vector<double> targets{deg(100), deg(150), deg(0), deg(180)};
+    const Result<FoldSweep> direct = simulate_fold(card, targets);
+    const Result<FoldSweep> resumed = continue_fold(card, cached.value.states[0], targets);
+    ASSERT_TRUE(resumed.ok);
+    ASSERT_EQ(resumed.value.states.size(), targets.size());
+    for (size_t i = 0; i < targets.size(); ++i)
+        for (size_t p = 0; p < card.patches.size(); ++p) {
+            const Pose& a = direct.value.states[i].poses[p];
+            const Pose& b = resumed.value.states[i].poses[p];
+            EXPECT_LT((a.rotation - b.rotation).norm(), 1e-9);
+            EXPECT_LT((a.translation - b.translation).norm(), 1e-9 * card.size());
+        }
+}

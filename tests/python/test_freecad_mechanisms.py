@@ -160,12 +160,19 @@ def test_fold_angle_poses_the_whole_card_with_one_simulation(doc, popup, card, m
     built = popup.assembly.assembly_of(card["Card"])
     calls = []
     simulate = popup.core.simulate_fold
+    resume = popup.core.continue_fold
 
     def counting(scaffold, angles):
         calls.append(list(angles))
         return simulate(scaffold, angles)
 
+    def counting_resume(scaffold, from_state, angles):
+        calls.append(list(angles))
+        return resume(scaffold, from_state, angles)
+
+    # A new angle continues from the nearest state already solved (here 180°).
     monkeypatch.setattr(popup.core, "simulate_fold", counting)
+    monkeypatch.setattr(popup.core, "continue_fold", counting_resume)
     before = {name: np.array(vertices(obj.Shape)) for name, obj in card.items()}
     card["Card"].FoldAngle = 77.0
     touched = [o.Name for o in doc.Objects if "Touched" in o.State]

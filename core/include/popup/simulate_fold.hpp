@@ -33,6 +33,13 @@ struct SimulationOptions {
 Result<FoldSweep> simulate_fold(const Scaffold& scaffold, const std::vector<double>& angles,
                                 const SimulationOptions& options = {});
 
+/// Continues the motion from a state already on the branch (a cached one, say) to each requested
+/// angle: the cheap way to follow a dragged fold angle. From the design state it is
+/// simulate_fold.
+Result<FoldSweep> continue_fold(const Scaffold& scaffold, const FoldState& from,
+                                const std::vector<double>& angles,
+                                const SimulationOptions& options = {});
+
 /// World coordinates of a patch's outer loop in a given state.
 Loop3 posed_outline(const Patch& patch, const Pose& pose);
 
