@@ -107,7 +107,7 @@ TEST(BoxFold, WithoutFrontAndBackItShears)
     EXPECT_FALSE(r.stable);
 }
 
-TEST(Nesting, TentOnBoxOnBoxAndStepOnTheSide)
+TEST(Nesting, ThreeLevelsAndStepsOnBothBoxSides)
 {
     Scaffold s = card(240, 140);
     const auto lower = add_box_fold(s, central_fold(s), placed(BoxFoldParams{}, 60, 100));
@@ -125,6 +125,12 @@ TEST(Nesting, TentOnBoxOnBoxAndStepOnTheSide)
     step.run_ground = 15;
     step.run_backdrop = 15;
     ASSERT_TRUE(add_step_fold(s, lower.value.offered[1], step).ok);
+    // Between the upper box's side and the lower box's top (its side pair's ground is TG).
+    EXPECT_EQ(upper.value.offered[1].ground, lower.value.offered[0].ground);
+    StepFoldParams upper_step = placed(StepFoldParams{}, 10, 40);
+    upper_step.run_ground = 6;
+    upper_step.run_backdrop = 8;
+    ASSERT_TRUE(add_step_fold(s, upper.value.offered[1], upper_step, "UpperStep").ok);
     const ValidityReport r = check_validity(s);
     EXPECT_TRUE(r.valid()) << first_message(r);
 }
@@ -176,6 +182,20 @@ TEST(MechanismParameters, BadValuesAreNamedAndLeaveTheScaffoldAlone)
         expect_error(
             [&](Scaffold& s) { return add_box_fold(s, host, placed(BoxFoldParams{}, 40, bad)); },
             "Width");
+        expect_error(
+            [&](Scaffold& s) {
+                VBoxFoldParams p;
+                p.side = bad;
+                return add_v_box_fold(s, host, p);
+            },
+            "Side");
+        expect_error(
+            [&](Scaffold& s) {
+                FloatingLayerParams p = placed(FloatingLayerParams{}, 40, 60);
+                p.support = bad;
+                return add_floating_layer(s, host, p);
+            },
+            "Support");
     }
     // Inconsistent: slopes too short to meet.
     expect_error(
