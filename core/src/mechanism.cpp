@@ -1,5 +1,6 @@
 #include "popup/mechanism.hpp"
 
+#include <cmath>
 #include <sstream>
 
 namespace popup {
@@ -11,6 +12,28 @@ void range_error(Diagnostics& errors, const std::string& mechanism, const std::s
     m << mechanism << ": " << parameter << " = " << value << (unit.empty() ? "" : " ") << unit
       << ", must be " << range;
     errors.push_back({"bad_parameter", m.str(), mechanism + "." + parameter});
+}
+
+void check_flat_host(const std::string& mechanism, const BasePatchPair& host,
+                     const std::string& kind, Diagnostics& errors)
+{
+    if (std::abs(host.opening - M_PI) <= 1e-9)
+        return;
+    std::ostringstream m;
+    m << mechanism << ": host " << host.name << " is open " << host.opening * 180 / M_PI
+      << "° at the design state; " << kind << " needs a host open flat (180°)";
+    errors.push_back({"bad_host", m.str(), mechanism + ".Host"});
+}
+
+void check_run(Diagnostics& errors, const std::string& mechanism, const std::string& parameter,
+               double value, double limit, const std::string& side, bool inclusive)
+{
+    if (value > 0 && (inclusive ? value <= limit : value < limit))
+        return;
+    std::ostringstream range;
+    range << "> 0 and " << (inclusive ? "<= " : "< ") << limit << " mm (the depth of the host's "
+          << side << ")";
+    range_error(errors, mechanism, parameter, value, "mm", range.str());
 }
 
 void check_placement(const std::string& mechanism, const BasePatchPair& host, const Placement1D& p,

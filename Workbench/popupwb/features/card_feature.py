@@ -10,6 +10,7 @@ import time
 import FreeCAD
 
 from popupwb import assembly
+from popupwb.features.property_adder import property_adder
 from popupwb.stateless_proxy import StatelessProxy
 
 TYPE = assembly.CARD_TYPE
@@ -54,17 +55,7 @@ class PopUpCard(StatelessProxy):
         """Adds every property that is missing, so files written by older versions upgrade."""
         have = set(obj.PropertiesList)
 
-        def add(kind, name, doc, value=None, mode=0, output=False):
-            if name in have:
-                return
-            obj.addProperty(kind, name, "Card", doc)
-            if value is not None:
-                setattr(obj, name, value)
-            if mode:
-                obj.setEditorMode(name, mode)
-            if output:
-                # Written by commands, not by the user: changing it must not trigger a recompute.
-                obj.setPropertyStatus(name, "Output")
+        add = property_adder(obj, "Card")
 
         if "Preset" not in have:
             obj.addProperty(

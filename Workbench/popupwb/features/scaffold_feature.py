@@ -15,6 +15,7 @@ import FreeCAD
 import Part
 
 from popupwb.core import popupcore
+from popupwb.features.property_adder import property_adder
 from popupwb.stateless_proxy import StatelessProxy
 
 TYPE = "PopUp::Scaffold"
@@ -84,19 +85,8 @@ class ScaffoldFeature(StatelessProxy):
 
     def add_properties(self, obj):
         """Adds every property that is missing, so files written by older versions upgrade."""
-        have = set(obj.PropertiesList)
 
-        def add(kind, name, doc, value=None, mode=0, output=False):
-            if name in have:
-                return
-            obj.addProperty(kind, name, "PopUp", doc)
-            if value is not None:
-                setattr(obj, name, value)
-            if mode:
-                obj.setEditorMode(name, mode)
-            if output:
-                # Written by commands, not by the user: changing it must not trigger a recompute.
-                obj.setPropertyStatus(name, "Output")
+        add = property_adder(obj, "PopUp")
 
         # PropertyFileIncluded rather than PropertyFile: the design is copied into the .FCStd, so a
         # saved document is self-contained and recomputes anywhere (checked by the save/reopen

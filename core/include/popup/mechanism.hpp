@@ -35,6 +35,15 @@ struct Placement1D {
 void check_placement(const std::string& mechanism, const BasePatchPair& host, const Placement1D& p,
                      Diagnostics& errors);
 
+/// Adds a named error unless the host is open flat (180°) at the design state.
+void check_flat_host(const std::string& mechanism, const BasePatchPair& host,
+                     const std::string& kind, Diagnostics& errors);
+
+/// Adds a named error unless 0 < value < limit (value <= limit when `inclusive`), where limit is
+/// the depth of the host's `side` ("ground" or "backdrop").
+void check_run(Diagnostics& errors, const std::string& mechanism, const std::string& parameter,
+               double value, double limit, const std::string& side, bool inclusive = false);
+
 /// Adds the named error "NAME: PARAM = VALUE mm, must be RANGE".
 void range_error(Diagnostics& errors, const std::string& mechanism, const std::string& parameter,
                  double value, const std::string& unit, const std::string& range);

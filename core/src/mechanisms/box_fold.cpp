@@ -28,19 +28,9 @@ Result<MechanismParts> add_box_fold(Scaffold& scaffold, const BasePatchPair& hos
     Result<MechanismParts> r;
     Diagnostics& e = r.diagnostics;
     check_placement(name, host, p, e);
-    if (std::abs(host.opening - M_PI) > 1e-9) {
-        std::ostringstream m;
-        m << name << ": host " << host.name << " is open " << host.opening * 180 / M_PI
-          << "° at the design state; a box fold needs a host open flat (180°)";
-        e.push_back({"bad_host", m.str(), name + ".Host"});
-    }
-    std::ostringstream gmax, bmax;
-    gmax << "> 0 and <= " << host.ground_depth << " mm (the depth of the host's ground)";
-    bmax << "> 0 and <= " << host.backdrop_depth << " mm (the depth of the host's backdrop)";
-    if (!(p.depth_ground > 0 && p.depth_ground <= host.ground_depth))
-        range_error(e, name, "DepthGround", p.depth_ground, "mm", gmax.str());
-    if (!(p.depth_backdrop > 0 && p.depth_backdrop <= host.backdrop_depth))
-        range_error(e, name, "DepthBackdrop", p.depth_backdrop, "mm", bmax.str());
+    check_flat_host(name, host, "a box fold", e);
+    check_run(e, name, "DepthGround", p.depth_ground, host.ground_depth, "ground", true);
+    check_run(e, name, "DepthBackdrop", p.depth_backdrop, host.backdrop_depth, "backdrop", true);
     if (!(p.height > 0 && p.height <= 2000))
         range_error(e, name, "Height", p.height, "mm", "> 0 and <= 2000 mm");
     if (e.empty() && (p.front || p.back) && p.depth_backdrop != p.depth_ground) {

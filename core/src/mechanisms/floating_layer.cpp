@@ -14,12 +14,7 @@ Result<MechanismParts> add_floating_layer(Scaffold& scaffold, const BasePatchPai
     Result<MechanismParts> r;
     Diagnostics& e = r.diagnostics;
     check_placement(name, host, p, e);
-    if (std::abs(host.opening - M_PI) > 1e-9) {
-        std::ostringstream m;
-        m << name << ": host " << host.name << " is open " << host.opening * 180 / M_PI
-          << "° at the design state; a floating layer needs a host open flat (180°)";
-        e.push_back({"bad_host", m.str(), name + ".Host"});
-    }
+    check_flat_host(name, host, "a floating layer", e);
     const double depth = std::min(host.ground_depth, host.backdrop_depth);
     std::ostringstream smax;
     smax << "> 0 and < " << depth << " mm (the host's depth)";

@@ -21,13 +21,8 @@ Result<MechanismParts> add_step_fold(Scaffold& scaffold, const BasePatchPair& ho
     Result<MechanismParts> r;
     Diagnostics& e = r.diagnostics;
     check_placement(name, host, p, e);
-    std::ostringstream gmax, bmax;
-    gmax << "> 0 and < " << host.ground_depth << " mm (the depth of the host's ground)";
-    bmax << "> 0 and < " << host.backdrop_depth << " mm (the depth of the host's backdrop)";
-    if (!(p.run_ground > 0 && p.run_ground < host.ground_depth))
-        range_error(e, name, "RunGround", p.run_ground, "mm", gmax.str());
-    if (!(p.run_backdrop > 0 && p.run_backdrop < host.backdrop_depth))
-        range_error(e, name, "RunBackdrop", p.run_backdrop, "mm", bmax.str());
+    check_run(e, name, "RunGround", p.run_ground, host.ground_depth, "ground");
+    check_run(e, name, "RunBackdrop", p.run_backdrop, host.backdrop_depth, "backdrop");
     if (!e.empty()) {
         r.ok = false;
         return r;

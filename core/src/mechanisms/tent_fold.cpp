@@ -38,13 +38,8 @@ Result<MechanismParts> add_tent_fold(Scaffold& scaffold, const BasePatchPair& ho
     Result<MechanismParts> r;
     Diagnostics& e = r.diagnostics;
     check_placement(name, host, p, e);
-    std::ostringstream gmax, bmax;
-    gmax << "> 0 and < " << host.ground_depth << " mm (the depth of the host's ground)";
-    bmax << "> 0 and < " << host.backdrop_depth << " mm (the depth of the host's backdrop)";
-    if (!(p.foot > 0 && p.foot < host.ground_depth))
-        range_error(e, name, "Foot", p.foot, "mm", gmax.str());
-    if (!(p.foot_backdrop > 0 && p.foot_backdrop < host.backdrop_depth))
-        range_error(e, name, "FootBackdrop", p.foot_backdrop, "mm", bmax.str());
+    check_run(e, name, "Foot", p.foot, host.ground_depth, "ground");
+    check_run(e, name, "FootBackdrop", p.foot_backdrop, host.backdrop_depth, "backdrop");
     const Vec2 g = host.ground_direction(), b = host.backdrop_direction();
     const Vec2 A = p.foot * g, D = p.foot_backdrop * b;
     const double gap = (A - D).norm();

@@ -14,12 +14,7 @@ Result<MechanismParts> add_v_box_fold(Scaffold& scaffold, const BasePatchPair& h
 {
     Result<MechanismParts> r;
     Diagnostics& e = r.diagnostics;
-    if (std::abs(host.opening - M_PI) > 1e-9) {
-        std::ostringstream m;
-        m << name << ": host " << host.name << " is open " << host.opening * 180 / M_PI
-          << "° at the design state; a v-box needs a host open flat (180°)";
-        e.push_back({"bad_host", m.str(), name + ".Host"});
-    }
+    check_flat_host(name, host, "a v-box", e);
     if (!(p.wall_angle > 0 && p.wall_angle < M_PI / 2))
         range_error(e, name, "WallAngle", p.wall_angle * 180 / M_PI, "°", "> 0° and < 90°");
     if (!(p.height > 0 && p.height <= 2000))
