@@ -7,6 +7,7 @@
 #include "popup/card.hpp"
 #include "popup/mechanisms/box_fold.hpp"
 #include "popup/mechanisms/floating_layer.hpp"
+#include "popup/mechanisms/rotation_arm.hpp"
 #include "popup/mechanisms/step_fold.hpp"
 #include "popup/mechanisms/tent_fold.hpp"
 #include "popup/mechanisms/v_box_fold.hpp"
@@ -110,6 +111,14 @@ void bind_mechanisms(py::module_& m)
         .def_readwrite("height", &FloatingLayerParams::height)
         .def_readwrite("support", &FloatingLayerParams::support)
         .def_readwrite("overhang", &FloatingLayerParams::overhang);
+    py::class_<RotationArmParams>(m, "RotationArmParams")
+        .def(py::init<>())
+        .def_readwrite("offset", &RotationArmParams::offset)
+        .def_readwrite("spine", &RotationArmParams::spine)
+        .def_readwrite("run", &RotationArmParams::run)
+        .def_readwrite("arm", &RotationArmParams::arm);
+    m.def("rotation_arm_tip", &rotation_arm_tip, py::arg("params"), py::arg("opening"),
+          "Closed form: the arm's tip P (x, y, z) in the host's frame at that opening.");
     py::class_<VBoxFoldParams>(m, "VBoxFoldParams")
         .def(py::init<>())
         .def_readwrite("offset", &VBoxFoldParams::offset)
@@ -138,6 +147,8 @@ void bind_mechanisms(py::module_& m)
                                  "Adds a box fold; its parts offer the top and both sides.");
     def_generator<FloatingLayerParams>(m, "add_floating_layer", &add_floating_layer,
                                        "Adds a floating layer; its platform is offered first.");
+    def_generator<RotationArmParams>(m, "add_rotation_arm", &add_rotation_arm,
+                                     "Adds a rotation arm (extended flat v-fold, thesis §4.3.4).");
     def_generator<VBoxFoldParams>(m, "add_v_box_fold", &add_v_box_fold,
                                   "Adds a type-1 v-fold (v-box) on a host open flat.");
 }

@@ -1,0 +1,25 @@
+#pragma once
+#include "popup/mechanism.hpp"
+
+namespace popup {
+
+/// Rotation (thesis §4.3.4, Fig 4.15): a v-fold lying flat on the host at the design state, its
+/// spine O-R along the host hinge, whose ground wing O-S-P is extended past the spine by an arm:
+/// R lies on S-P with |PR| = `arm`. Closing, the spine pops up and P swings through the
+/// bisecting plane: P_x = −h sin δ and P_y follows thesis eq 4.10 (docs/MATH.md, Rotation).
+struct RotationArmParams {
+    double offset = 0.0;  ///< O along the host hinge (mm)
+    double spine = 40.0;  ///< l = |OQ| = |OR| (mm)
+    double run = 30.0;    ///< w = |QS|, the wing's reach from the hinge (mm)
+    double arm = 20.0;    ///< h = |PR|, at most l²/w so the arm stays above the backdrop (mm)
+};
+
+/// Closed form: P in the host's local frame (x, y along the hinge from the host's origin, z)
+/// when the host is open at `opening`.
+Vec3 rotation_arm_tip(const RotationArmParams& params, double opening);
+
+Result<MechanismParts> add_rotation_arm(Scaffold& scaffold, const BasePatchPair& host,
+                                        const RotationArmParams& params,
+                                        const std::string& name = "RotationArm");
+
+}  // namespace popup
