@@ -175,11 +175,13 @@ BUILD_CARD = textwrap.dedent(
         card, offset=60, width=100, depth_ground=30, depth_backdrop=30, height=30, name="Box"
     )
     tent = make.make_tent_fold(
-        box, "Box.top", offset=10, width=40, foot=10, foot_backdrop=10, slope=14, name="Tent"
+        box, "Box.top", offset=4, width=26, foot=10, foot_backdrop=10, slope=14, name="Tent"
     )
     layer = make.make_floating_layer(
-        box, "Box.top", offset=58, width=35, height=10, support=8, overhang=5, name="Layer"
+        box, "Box.top", offset=40, width=30, height=10, support=8, overhang=5, name="Layer"
     )
+    # The motion mechanism: its arm swings as the card closes (thesis §4.3.4).
+    arm = make.make_rotation_arm(box, "Box.top", offset=85, spine=15, run=10, arm=12, name="Arm")
     step = make.make_step_fold(
         box, "Box.side_ground", offset=10, width=60, run_ground=15, run_backdrop=15, name="Step"
     )
@@ -191,7 +193,7 @@ BUILD_CARD = textwrap.dedent(
         card, "central fold", offset=185, side=10, height=8, wall_angle=45, name="VBox"
     )
     doc.recompute()
-    features = [card, box, tent, layer, step, v_fold, v_box]
+    features = [card, box, tent, layer, arm, step, v_fold, v_box]
     broken = [f"{o.Label}: {o.getStatusString()}" for o in features if "Invalid" in o.State]
     if broken:
         sys.exit("features in error: " + "; ".join(broken))

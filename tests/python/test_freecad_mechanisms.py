@@ -454,3 +454,30 @@ def test_every_feature_survives_save_and_reopen(doc, popup, card, tmp_path, run_
         assert np.array(got["vertices"]) == pytest.approx(
             np.array(expected[name]["vertices"]), abs=1e-9
         )
+
+
+def test_rotation_arm_feature_follows_its_closed_form(doc, popup):
+    card = popup.make.make_card(doc, width=240, depth=140)
+    arm = popup.make.make_rotation_arm(card, offset=60, spine=40, run=30, arm=45)
+    card.FoldAngle = 100.0
+    doc.recompute()
+    assert arm.Shape.isValid()
+    assert len(arm.Shape.Faces) == 2
+    params = popup.core.RotationArmParams()
+    params.offset, params.spine, params.run, params.arm = 60.0, 40.0, 30.0, 45.0
+    tip = popup.core.rotation_arm_tip(params, math.radians(100.0))
+    # The arm wing's vertex P is the tip: nearest vertex within 1e-9 of the closed form.
+    distances = [
+        (v.Point - popup_vector(tip)).Length for v in arm.Shape.Faces[0].OuterWire.Vertexes
+    ]
+    assert min(distances) < 1e-9
+    arm.Arm = 60.0  # above l²/w = 53.3 mm: refused, naming the property
+    doc.recompute()
+    assert "Invalid" in arm.State or "Error" in arm.State
+    assert card.Shape.isValid() and "Invalid" not in card.State
+
+
+def popup_vector(values):
+    import FreeCAD
+
+    return FreeCAD.Vector(*[float(v) for v in values])

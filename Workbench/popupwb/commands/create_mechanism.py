@@ -1,6 +1,6 @@
 """PopUp_TentFold, PopUp_StepFold, PopUp_VFold, PopUp_BoxFold, PopUp_VBoxFold,
-PopUp_FloatingLayer: a mechanism on the selected host (a card or a mechanism offering base patch
-pairs), or on the document's only card."""
+PopUp_RotationArm, PopUp_FloatingLayer: a mechanism on the selected host (a card or a mechanism
+offering base patch pairs), or on the document's only card."""
 
 import FreeCAD
 import FreeCADGui
@@ -35,6 +35,12 @@ MECHANISMS = {
         "V-box",
         "Add a type-1 v-fold (four walls on a rhombus, two-triangle top) on the selected card "
         "or box fold",
+    ),
+    "PopUp_RotationArm": (
+        "make_rotation_arm",
+        "Rotation arm",
+        "Add a rotation arm (a flat v-fold whose wing carries an arm past the spine) on the "
+        "selected card or box fold",
     ),
     "PopUp_FloatingLayer": (
         "make_floating_layer",

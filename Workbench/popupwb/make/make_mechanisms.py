@@ -14,6 +14,7 @@ from popupwb.features.box_fold import BoxFold
 from popupwb.features.floating_layer import FloatingLayer
 from popupwb.features.step_fold import StepFold
 from popupwb.features.tent_fold import TentFold
+from popupwb.features.rotation_arm import RotationArm
 from popupwb.features.v_box_fold import VBoxFold
 from popupwb.features.v_fold import VFold
 
@@ -104,3 +105,8 @@ def make_v_box_fold(host, host_pair=None, name="VBoxFold", **params):
 def make_floating_layer(host, host_pair=None, name="FloatingLayer", **params):
     """A FloatingLayer on `host`: offset, width, height, support, overhang (mm)."""
     return make_mechanism(FloatingLayer, host, host_pair, name, **params)
+
+
+def make_rotation_arm(host, host_pair=None, name="RotationArm", **params):
+    """A RotationArm on `host` (open flat): offset, spine, run, arm (mm)."""
+    return make_mechanism(RotationArm, host, host_pair, name, **params)

@@ -12,6 +12,7 @@ ICONS = {
     "PopUp::VFold": "PopUp_VFold",
     "PopUp::BoxFold": "PopUp_BoxFold",
     "PopUp::VBoxFold": "PopUp_VBoxFold",
+    "PopUp::RotationArm": "PopUp_RotationArm",
     "PopUp::FloatingLayer": "PopUp_FloatingLayer",
 }
 

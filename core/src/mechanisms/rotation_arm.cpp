@@ -28,8 +28,8 @@ Result<MechanismParts> add_rotation_arm(Scaffold& scaffold, const BasePatchPair&
     check_flat_host(name, host, "a rotation arm", e);
     if (!(p.spine > 0 && p.offset >= 0 && p.offset + p.spine <= host.length)) {
         std::ostringstream m;
-        m << "> 0 mm with Offset + Spine <= " << host.length << " mm (the length of "
-          << host.name << ")";
+        m << "> 0 mm with Offset + Spine <= " << host.length << " mm (the length of " << host.name
+          << ")";
         range_error(e, name, "Spine", p.spine, "mm", m.str());
     }
     check_run(e, name, "Run", p.run, std::min(host.ground_depth, host.backdrop_depth),
@@ -71,4 +71,4 @@ Result<MechanismParts> add_rotation_arm(Scaffold& scaffold, const BasePatchPair&
     return r;
 }
 
-}  // namespace popup
+} // namespace popup

@@ -8,10 +8,10 @@ namespace popup {
 /// R lies on S-P with |PR| = `arm`. Closing, the spine pops up and P swings through the
 /// bisecting plane: P_x = −h sin δ and P_y follows thesis eq 4.10 (docs/MATH.md, Rotation).
 struct RotationArmParams {
-    double offset = 0.0;  ///< O along the host hinge (mm)
-    double spine = 40.0;  ///< l = |OQ| = |OR| (mm)
-    double run = 30.0;    ///< w = |QS|, the wing's reach from the hinge (mm)
-    double arm = 20.0;    ///< h = |PR|, at most l²/w so the arm stays above the backdrop (mm)
+    double offset = 0.0; ///< O along the host hinge (mm)
+    double spine = 40.0; ///< l = |OQ| = |OR| (mm)
+    double run = 30.0;   ///< w = |QS|, the wing's reach from the hinge (mm)
+    double arm = 20.0;   ///< h = |PR|, at most l²/w so the arm stays above the backdrop (mm)
 };
 
 /// Closed form: P in the host's local frame (x, y along the hinge from the host's origin, z)
@@ -22,4 +22,4 @@ Result<MechanismParts> add_rotation_arm(Scaffold& scaffold, const BasePatchPair&
                                         const RotationArmParams& params,
                                         const std::string& name = "RotationArm");
 
-}  // namespace popup
+} // namespace popup

@@ -1,0 +1,32 @@
+"""RotationArm: a v-fold lying flat on its host whose ground wing carries an arm past the spine;
+closing the card swings the arm's tip P (thesis §4.3.4, Fig 4.15; docs/MATH.md, Rotation).
+
+Stored in .FCStd files as popupwb.features.rotation_arm.RotationArm: never rename.
+"""
+
+from popupwb.features.mechanism_feature import MechanismFeature, Parameter
+
+
+class RotationArm(MechanismFeature):
+    TYPE = "PopUp::RotationArm"
+    GROUP = "Rotation arm"
+    PARAMS = "RotationArmParams"
+    GENERATOR = "add_rotation_arm"
+    PARAMETERS = (
+        Parameter("Offset", "length", "offset", "Point O along the host's hinge", 20.0),
+        Parameter("Spine", "length", "spine", "Length l of the spine O-R along the hinge", 40.0),
+        Parameter("Run", "length", "run", "Reach w of the wings from the hinge", 30.0),
+        Parameter("Arm", "length", "arm", "Length h of the arm past the spine (<= l²/w)", 20.0),
+    )
+
+    @classmethod
+    def fitted_parameters(cls, pair):
+        depth = min(pair.ground_depth, pair.backdrop_depth)
+        spine = 0.25 * pair.length
+        run = min(0.3 * depth, spine)
+        return {
+            "Offset": 0.3 * pair.length,
+            "Spine": spine,
+            "Run": run,
+            "Arm": min(0.8 * spine * spine / run, 0.5 * depth),
+        }
