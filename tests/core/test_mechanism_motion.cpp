@@ -10,6 +10,7 @@
 #include "popup/mechanisms/rotation_arm.hpp"
 #include "popup/mechanisms/step_fold.hpp"
 #include "popup/mechanisms/tent_fold.hpp"
+#include "popup/mechanisms/v_box_fold.hpp"
 #include "popup/mechanisms/v_fold.hpp"
 #include "popup/simulate_fold.hpp"
 #include "test_support.hpp"
@@ -127,33 +128,52 @@ TEST(BoxFold, UnequalDepthsWithEndPanelsAreRefused)
 
 TEST(PlacementPreCheck, AgreesWithTheSimulatorOnBoxesAndVFolds)
 {
+    enum class Next { box, v_fold, v_box };
     struct Case {
         double gap;
-        bool v_fold_next;
+        Next next;
+        bool conservative = false; ///< the pre-check warns, the simulator finds no crossing
     };
-    for (const Case c : {Case{10, false}, Case{30, false}, Case{39, false}, Case{41, false},
-                         Case{90, false}, Case{5, true}, Case{60, true}}) {
+    // The v-box stands before the box so its front (which leans out when closed) faces it.
+    for (const Case c :
+         {Case{10, Next::box}, Case{30, Next::box}, Case{39, Next::box}, Case{41, Next::box},
+          Case{90, Next::box}, Case{5, Next::v_fold}, Case{60, Next::v_fold},
+          Case{-10, Next::v_box}, Case{5, Next::v_box, true}, Case{40, Next::v_box}}) {
         Scaffold s = card();
         BoxFoldParams box;
         box.offset = 40;
         box.width = 60;
         box.depth_ground = box.depth_backdrop = box.height = 40;
         std::vector<MechanismParts> parts{add_box_fold(s, central_fold(s), box, "BoxA").value};
-        if (c.v_fold_next) {
+        const char* what = "box";
+        if (c.next == Next::v_fold) {
             VFoldParams v;
             v.offset = 140 + c.gap;
             v.run = 40;
             v.spine = 45;
             parts.push_back(add_v_fold(s, central_fold(s), v, "VFold").value);
+            what = "v-fold";
+        } else if (c.next == Next::v_box) {
+            VBoxFoldParams v;
+            v.offset = 140 + c.gap;
+            v.side = 30;
+            v.height = 25;
+            parts.push_back(add_v_box_fold(s, central_fold(s), v, "VBox").value);
+            what = "v-box";
         } else {
             box.offset = 100 + c.gap;
             parts.push_back(add_box_fold(s, central_fold(s), box, "BoxB").value);
         }
         const bool predicted = !placement_conflicts(parts).empty();
         const ValidityReport r = check_validity(s);
-        EXPECT_EQ(predicted, !r.intersection_free)
-            << "gap " << c.gap << (c.v_fold_next ? " (v-fold)" : " (box)") << ": pre-check "
-            << predicted << ", simulator " << !r.intersection_free;
+        // The condition is sufficient, not necessary: with a 5 mm gap the box's back crease
+        // (40 mm up when closed) and the v-box's leaning front (18 mm up) share y but pass at
+        // different heights. The simulator wins; the case stays here as the known difference.
+        EXPECT_EQ(predicted, !r.intersection_free || c.conservative)
+            << "gap " << c.gap << " (" << what << "): pre-check " << predicted << ", simulator "
+            << !r.intersection_free;
+        if (c.conservative)
+            EXPECT_TRUE(r.intersection_free);
     }
 }
 
