@@ -136,6 +136,8 @@ void bind_mechanisms(py::module_& m)
     m.def("step_nose", &step_nose, py::arg("params"), py::arg("opening"));
     m.def("v_fold_tip", &v_fold_tip, py::arg("params"), py::arg("design_opening"),
           py::arg("opening"));
+    m.def("v_fold_wings", &v_fold_wings, py::arg("params"), py::arg("design_opening"),
+          py::arg("opening"), "Closed form: the wings' base patch pair, posed at that opening.");
     m.def("box_fold_section", &box_fold_section, py::arg("params"), py::arg("opening"));
 
     def_generator<TentFoldParams>(m, "add_tent_fold", &add_tent_fold,

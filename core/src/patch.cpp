@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "polygon_2d.hpp"
+
 namespace popup {
 
 namespace {
@@ -115,6 +117,19 @@ Vec3 Patch::centroid() const
     for (const Vec3& p : outer)
         c += p;
     return outer.empty() ? c : Vec3(c / double(outer.size()));
+}
+
+bool Patch::contains(const Vec3& x, double tol) const
+{
+    if (std::abs((x - origin).dot(normal)) > tol)
+        return false;
+    const Vec2 q = to_local(x);
+    if (!point_in_polygon_or_near(outer_local(), q, tol))
+        return false;
+    for (const Loop2& hole : holes_local())
+        if (point_in_polygon_or_near(hole, q, -tol))
+            return false;
+    return true;
 }
 
 } // namespace popup

@@ -60,20 +60,6 @@ bool finite(const Vec3& x)
     return x.allFinite();
 }
 
-// A point lies on a patch when it is in the patch plane and inside or on its outline, within tol.
-bool point_on_patch(const Patch& p, const Vec3& x, double tol)
-{
-    if (std::abs((x - p.origin).dot(p.normal)) > tol)
-        return false;
-    const Vec2 q = p.to_local(x);
-    if (!point_in_polygon_or_near(p.outer_local(), q, tol))
-        return false;
-    for (const Loop2& hole : p.holes_local())
-        if (point_in_polygon_or_near(hole, q, -tol))
-            return false;
-    return true;
-}
-
 } // namespace
 
 Result<Scaffold> validate_scaffold(Scaffold s)
@@ -163,7 +149,7 @@ Result<Scaffold> validate_scaffold(Scaffold s)
         }
         for (const Patch* p : {a, b}) {
             for (const Vec3& x : {h.from, h.to}) {
-                if (!point_on_patch(*p, x, 10 * tol)) {
+                if (!p->contains(x, 10 * tol)) {
                     std::ostringstream m;
                     m << "segment end (" << x.x() << ", " << x.y() << ", " << x.z()
                       << ") is not on " << patch_subject(*p);

@@ -258,3 +258,57 @@ TEST(RotationArm, ArmLongerThanSpineSquaredOverRunDipsUnderTheBackdrop)
         arm_through_backdrop |= (c.patch_a == 1 && c.patch_b == 2);
     EXPECT_TRUE(arm_through_backdrop);
 }
+
+// docs/MATH.md, "Diagonal translation": a step fold on the wings of a vertical-spine v-fold.
+TEST(ClosedForm, StepOnVFoldWingsTranslatesDiagonally)
+{
+    Scaffold s = card();
+    VFoldParams v;
+    v.offset = 60;
+    v.run = 40;
+    v.hinge_angle = fixtures::deg(45);
+    v.spine = 45;
+    v.spine_angle = M_PI / 2;
+    const auto vfold = add_v_fold(s, central_fold(s), v);
+    ASSERT_TRUE(vfold.ok);
+    ASSERT_EQ(vfold.value.offered.size(), 1u);
+    const BasePatchPair& wings = vfold.value.offered[0];
+    EXPECT_NEAR(wings.opening, M_PI / 2, 1e-12); // 2α
+    StepFoldParams step;
+    step.offset = 10;
+    step.width = 20;
+    step.run_ground = step.run_backdrop = 8;
+    const auto parts = add_step_fold(s, wings, step, "Step");
+    ASSERT_TRUE(parts.ok) << parts.diagnostics.front().message;
+    auto nose = [&](double theta) {
+        const BasePatchPair w = v_fold_wings(v, M_PI, theta);
+        const Vec2 n = step_nose(step, w.opening);
+        return w.to_world(n.x(), step.offset, n.y());
+    };
+    expect_track(s, parts.value.patches[0], nose(M_PI), nose);
+    const ValidityReport r = check_validity(s);
+    EXPECT_TRUE(r.valid()) << (r.diagnostics.empty() ? "" : r.diagnostics.front().message);
+}
+
+TEST(MechanismBuilder, AMechanismTooBigForItsHostIsTakenOutAgain)
+{
+    Scaffold s = card();
+    VFoldParams v;
+    v.offset = 60;
+    v.run = 40;
+    v.spine = 45;
+    v.spine_angle = M_PI / 2;
+    const auto vfold = add_v_fold(s, central_fold(s), v);
+    ASSERT_TRUE(vfold.ok);
+    const size_t patches = s.patches.size(), hinges = s.hinges.size();
+    StepFoldParams step;
+    step.offset = 30; // near the tip the triangular wings are too narrow for 12 mm runs
+    step.width = 14;
+    step.run_ground = step.run_backdrop = 12;
+    const auto r = add_step_fold(s, vfold.value.offered[0], step, "Step");
+    EXPECT_FALSE(r.ok);
+    EXPECT_EQ(r.diagnostics.front().code, "mechanism_does_not_fit");
+    EXPECT_NE(r.diagnostics.front().message.find("VFold.wing"), std::string::npos);
+    EXPECT_EQ(s.patches.size(), patches);
+    EXPECT_EQ(s.hinges.size(), hinges);
+}

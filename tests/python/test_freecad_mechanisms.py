@@ -298,6 +298,8 @@ def test_host_pairs_come_from_the_host_and_follow_its_label(doc, popup, card):
     layer = card["Layer"]  # what the workbench expects a host to offer is what the core offers
     assert built.pair_names("Layer") == popup.assembly.host_pair_names(layer)
     assert built.pair_names("Tent") == [] == popup.assembly.host_pair_names(tent)
+    v_fold = card["VFold"]
+    assert built.pair_names("VFold") == ["VFold.wings"] == popup.assembly.host_pair_names(v_fold)
     assert built.pair_names(card["Card"].Name) == ["central fold"]
     assert tent.getEnumerationsOfProperty("HostPair") == names
     assert (tent.HostPair, step.HostPair) == ("Box.top", "Box.side_ground")
@@ -481,3 +483,24 @@ def popup_vector(values):
     import FreeCAD
 
     return FreeCAD.Vector(*[float(v) for v in values])
+
+
+def test_step_on_v_fold_wings_is_a_valid_diagonal_translation(doc, popup):
+    card = popup.make.make_card(doc, width=240, depth=140)
+    v_fold = popup.make.make_v_fold(
+        card, offset=60, run=40, hinge_angle=45, spine=45, spine_angle=90, name="Spine"
+    )
+    step = popup.make.make_step_fold(
+        v_fold, "Spine.wings", offset=10, width=20, run_ground=8, run_backdrop=8, name="Arm"
+    )
+    card.FoldAngle = 70.0
+    doc.recompute()
+    assert step.Shape.isValid() and len(step.Shape.Faces) == 2
+    report = popup.validity.run_check(card)
+    assert report["valid"], report["diagnostics"]
+    # Too wide for the triangular wings near the tip: refused, the rest still builds.
+    step.Offset = 30.0
+    step.RunGround = step.RunBackdrop = 12.0
+    doc.recompute()
+    assert "Invalid" in step.State or "Error" in step.State
+    assert "Invalid" not in v_fold.State and v_fold.Shape.isValid()

@@ -12,6 +12,7 @@ class VFold(MechanismFeature):
     GROUP = "V-fold"
     PARAMS = "VFoldParams"
     GENERATOR = "add_v_fold"
+    OFFERS = ("wings",)  # a step fold on the wings makes the diagonal translation (§4.3.3)
     PARAMETERS = (
         Parameter("Offset", "length", "offset", "Point O of the v along the host's hinge", 20.0),
         Parameter(

@@ -36,6 +36,9 @@ struct Patch {
     Loop2 outer_local() const;
     std::vector<Loop2> holes_local() const;
     Vec3 centroid() const;
+    /// x lies in the patch's plane and inside or on its outline (not in a hole), within tol.
+    /// Needs derive_frame().
+    bool contains(const Vec3& x, double tol) const;
     double area() const;
 };
 

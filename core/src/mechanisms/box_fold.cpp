@@ -52,8 +52,7 @@ Result<MechanismParts> add_box_fold(Scaffold& scaffold, const BasePatchPair& hos
     section.front = p.front;
     section.back = p.back;
     build_parallel_box(m, p.offset, p.offset + p.width, section);
-    r.value = m.finish();
-    return r;
+    return m.finish();
 }
 
 } // namespace popup

@@ -34,8 +34,7 @@ Result<MechanismParts> add_floating_layer(Scaffold& scaffold, const BasePatchPai
     section.height = p.height;
     section.overhang = p.overhang;
     build_parallel_box(m, p.offset, p.offset + p.width, section);
-    r.value = m.finish();
-    return r;
+    return m.finish();
 }
 
 } // namespace popup

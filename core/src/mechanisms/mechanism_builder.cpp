@@ -1,11 +1,13 @@
 #include "mechanism_builder.hpp"
 
 #include <algorithm>
+#include <sstream>
 
 namespace popup {
 
 MechanismBuilder::MechanismBuilder(Scaffold& scaffold, const BasePatchPair& host, std::string name)
-    : scaffold_(scaffold), host_(host)
+    : scaffold_(scaffold), host_(host), first_patch_(scaffold.patches.size()),
+      first_hinge_(scaffold.hinges.size()), first_glue_(scaffold.glue.size())
 {
     parts_.name = std::move(name);
     parts_.host = host.name;
@@ -39,6 +41,34 @@ void MechanismBuilder::hinge(int a, int b, const Vec3& local_from, const Vec3& l
 void MechanismBuilder::glue(int a, int b)
 {
     scaffold_.glue.push_back({a, b});
+}
+
+Result<MechanismParts> MechanismBuilder::finish()
+{
+    Result<MechanismParts> r;
+    const double tol = 1e-6 * std::max(scaffold_.size(), 1.0);
+    for (size_t k = first_hinge_; k < scaffold_.hinges.size() && r.ok; ++k) {
+        const Hinge& h = scaffold_.hinges[k];
+        for (int id : {h.patch_a, h.patch_b}) {
+            const Patch* p = scaffold_.find_patch(id);
+            if (p->contains(h.from, 10 * tol) && p->contains(h.to, 10 * tol))
+                continue;
+            std::ostringstream m;
+            m << parts_.name << ": does not fit on " << host_.name << ": one of its folds runs off "
+              << (p->name.empty() ? "patch " + std::to_string(p->id) : p->name)
+              << "; make it smaller or move it";
+            r.fail("mechanism_does_not_fit", m.str(), parts_.name + ".Host");
+            break;
+        }
+    }
+    if (!r.ok) {
+        scaffold_.patches.resize(first_patch_);
+        scaffold_.hinges.resize(first_hinge_);
+        scaffold_.glue.resize(first_glue_);
+        return r;
+    }
+    r.value = parts_;
+    return r;
 }
 
 } // namespace popup

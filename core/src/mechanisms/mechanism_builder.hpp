@@ -27,11 +27,15 @@ public:
     }
     const BasePatchPair& host() const { return host_; }
     const std::string& name() const { return parts_.name; }
-    MechanismParts finish() { return parts_; }
+    /// The parts, after checking that every fold it added lies on both of its patches (a
+    /// mechanism too big for its host would not); otherwise everything it added is taken out
+    /// again and the error names the fold and the patch.
+    Result<MechanismParts> finish();
 
 private:
     Scaffold& scaffold_;
     BasePatchPair host_;
+    size_t first_patch_, first_hinge_, first_glue_; ///< what the scaffold had before
     MechanismParts parts_;
 };
 

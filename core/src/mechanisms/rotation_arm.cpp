@@ -67,8 +67,7 @@ Result<MechanismParts> add_rotation_arm(Scaffold& scaffold, const BasePatchPair&
         hi = std::max(hi, y);
     }
     m.sweeps(y0 + lo, y0 + hi);
-    r.value = m.finish();
-    return r;
+    return m.finish();
 }
 
 } // namespace popup

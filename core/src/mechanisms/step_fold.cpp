@@ -43,8 +43,7 @@ Result<MechanismParts> add_step_fold(Scaffold& scaffold, const BasePatchPair& ho
     m.hinge(host.backdrop, tread, at(D, y0), at(D, y1), FoldDirection::valley);
     m.hinge(riser, tread, at(C, y0), at(C, y1), FoldDirection::mountain);
     m.sweeps(y0, y1); // it moves only across the hinge
-    r.value = m.finish();
-    return r;
+    return m.finish();
 }
 
 } // namespace popup

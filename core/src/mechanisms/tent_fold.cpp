@@ -74,8 +74,7 @@ Result<MechanismParts> add_tent_fold(Scaffold& scaffold, const BasePatchPair& ho
     m.hinge(host.backdrop, slope_b, at(D, y0), at(D, y1));
     m.hinge(slope_g, slope_b, at(C, y0), at(C, y1));
     m.sweeps(y0, y1); // it moves only across the hinge
-    r.value = m.finish();
-    return r;
+    return m.finish();
 }
 
 } // namespace popup

@@ -73,8 +73,7 @@ Result<MechanismParts> add_v_box_fold(Scaffold& scaffold, const BasePatchPair& h
     for (int k = 0; k <= 90; ++k)
         lo = std::min(lo, v_fold_tip(spine, M_PI, M_PI * k / 90).y());
     m.sweeps(lo, y0 + 2 * along);
-    r.value = m.finish();
-    return r;
+    return m.finish();
 }
 
 } // namespace popup

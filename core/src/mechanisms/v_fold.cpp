@@ -32,6 +32,30 @@ Vec3 v_fold_tip(const VFoldParams& p, double design_opening, double opening)
     return {0.0, p.offset + tip.x(), tip.y()};
 }
 
+BasePatchPair v_fold_wings(const VFoldParams& p, double design_opening, double opening)
+{
+    const double X = p.run * std::sin(p.hinge_angle), Y = p.run * std::cos(p.hinge_angle);
+    const double s = std::sin(opening / 2), c = std::cos(opening / 2);
+    const Vec3 O(0, p.offset, 0), A(X * s, p.offset + Y, X * c), B(-X * s, p.offset + Y, X * c);
+    const Vec3 P = v_fold_tip(p, design_opening, opening);
+    BasePatchPair wings;
+    wings.origin = O;
+    wings.axis = (P - O).normalized();
+    auto across = [&](const Vec3& x) {
+        const Vec3 d = x - O;
+        return Vec3(d - d.dot(wings.axis) * wings.axis);
+    };
+    const Vec3 a = across(A), b = across(B);
+    const Vec3 dg = a.normalized(), db = b.normalized();
+    wings.up = (dg + db).normalized();
+    wings.opening = std::acos(std::clamp(dg.dot(db), -1.0, 1.0));
+    wings.length = (P - O).norm();
+    const bool ground_wing_on_x = wings.x_axis().dot(dg) > 0;
+    wings.ground_depth = (ground_wing_on_x ? a : b).norm();
+    wings.backdrop_depth = (ground_wing_on_x ? b : a).norm();
+    return wings;
+}
+
 Result<MechanismParts> add_v_fold(Scaffold& scaffold, const BasePatchPair& host,
                                   const VFoldParams& p, const std::string& name)
 {
@@ -94,8 +118,18 @@ Result<MechanismParts> add_v_fold(Scaffold& scaffold, const BasePatchPair& host,
         hi = std::max(hi, y);
     }
     m.sweeps(p.offset + lo, p.offset + hi);
-    r.value = m.finish();
-    return r;
+    // The wings along the spine, a base patch pair in the host's world.
+    BasePatchPair local = v_fold_wings(p, host.opening, host.opening);
+    BasePatchPair wings = local;
+    wings.name = name + ".wings";
+    const bool ground_wing_on_x = local.x_axis().dot(A - O) > 0;
+    wings.ground = ground_wing_on_x ? wing_g : wing_b;
+    wings.backdrop = ground_wing_on_x ? wing_b : wing_g;
+    wings.origin = m.world(local.origin);
+    wings.axis = m.world(local.axis) - m.world(Vec3::Zero());
+    wings.up = m.world(local.up) - m.world(Vec3::Zero());
+    m.offer(wings);
+    return m.finish();
 }
 
 } // namespace popup

@@ -19,6 +19,12 @@ struct VFoldParams {
 /// z) when the host, built open at `design_opening`, is open at `opening`.
 Vec3 v_fold_tip(const VFoldParams& params, double design_opening, double opening);
 
+/// Closed form: the base patch pair the two wings form along the spine (offered for nesting, a
+/// step fold on it makes the thesis's diagonal translation, §4.3.3), posed in the host's local
+/// frame when the host, built open at `design_opening`, is open at `opening`. Its origin is O
+/// and its axis runs to the tip; its ground is whichever wing lies on its x side.
+BasePatchPair v_fold_wings(const VFoldParams& params, double design_opening, double opening);
+
 Result<MechanismParts> add_v_fold(Scaffold& scaffold, const BasePatchPair& host,
                                   const VFoldParams& params, const std::string& name = "VFold");
 
