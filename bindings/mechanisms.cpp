@@ -124,7 +124,10 @@ void bind_mechanisms(py::module_& m)
         .def_readwrite("offset", &VBoxFoldParams::offset)
         .def_readwrite("side", &VBoxFoldParams::side)
         .def_readwrite("height", &VBoxFoldParams::height)
-        .def_readwrite("wall_angle", &VBoxFoldParams::wall_angle);
+        .def_readwrite("wall_angle", &VBoxFoldParams::wall_angle)
+        .def_readwrite("back", &VBoxFoldParams::back);
+    m.def("v_box_front_corner", &v_box_front_corner, py::arg("params"), py::arg("opening"),
+          "Closed form: the v-box's front top corner in the host's frame at that opening.");
     py::class_<BoxSection>(m, "BoxSection")
         .def_readonly("top", &BoxSection::top)
         .def_readonly("side_ground_top", &BoxSection::side_ground_top)
@@ -151,6 +154,12 @@ void bind_mechanisms(py::module_& m)
                                        "Adds a floating layer; its platform is offered first.");
     def_generator<RotationArmParams>(m, "add_rotation_arm", &add_rotation_arm,
                                      "Adds a rotation arm (extended flat v-fold, thesis §4.3.4).");
+    m.def(
+        "add_vertical_translation",
+        [](Scaffold& s, const BasePatchPair& host, const VBoxFoldParams& p,
+           const std::string& name) { return added(add_vertical_translation(s, host, p, name)); },
+        py::arg("scaffold"), py::arg("host"), py::arg("params"), py::arg("name"),
+        "Adds a vertical translation (the v-box's triangular half, thesis §4.3.2).");
     def_generator<VBoxFoldParams>(m, "add_v_box_fold", &add_v_box_fold,
                                   "Adds a type-1 v-fold (v-box) on a host open flat.");
 }

@@ -312,3 +312,29 @@ TEST(MechanismBuilder, AMechanismTooBigForItsHostIsTakenOutAgain)
     EXPECT_EQ(s.patches.size(), patches);
     EXPECT_EQ(s.hinges.size(), hinges);
 }
+
+// docs/MATH.md, "Vertical translation": the half v-box's front top corner.
+TEST(ClosedForm, VerticalTranslationMovesAlongTheFold)
+{
+    Scaffold s = card();
+    VBoxFoldParams p;
+    p.offset = 80;
+    p.side = 40;
+    p.height = 30;
+    p.wall_angle = fixtures::deg(40);
+    const auto parts = add_vertical_translation(s, central_fold(s), p);
+    ASSERT_TRUE(parts.ok) << parts.diagnostics.front().message;
+    EXPECT_EQ(parts.value.patches.size(), 4u); // FL, FR, TG, TB
+    const double h = p.height, a = p.wall_angle;
+    expect_track(s, parts.value.patches[0], {0, 80, 30}, [&](double t) {
+        const Vec3 corner = v_box_front_corner(p, t);
+        const double c = std::cos(t / 2);
+        const double py = -h * std::sin(a) * c /
+                          std::sqrt(std::pow(std::cos(a), 2) + std::pow(std::sin(a) * c, 2));
+        EXPECT_NEAR(corner.x(), 0.0, 1e-12);
+        EXPECT_NEAR(corner.y(), 80 + py, 1e-9);
+        return corner;
+    });
+    const ValidityReport r = check_validity(s);
+    EXPECT_TRUE(r.valid()) << (r.diagnostics.empty() ? "" : r.diagnostics.front().message);
+}

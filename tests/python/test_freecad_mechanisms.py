@@ -504,3 +504,21 @@ def test_step_on_v_fold_wings_is_a_valid_diagonal_translation(doc, popup):
     doc.recompute()
     assert "Invalid" in step.State or "Error" in step.State
     assert "Invalid" not in v_fold.State and v_fold.Shape.isValid()
+
+
+def test_vertical_translation_corner_slides_along_the_fold(doc, popup):
+    card = popup.make.make_card(doc, width=240, depth=140)
+    mover = popup.make.make_vertical_translation(
+        card, offset=80, side=40, height=30, wall_angle=40, name="Mover"
+    )
+    card.FoldAngle = 60.0
+    doc.recompute()
+    assert mover.Shape.isValid() and len(mover.Shape.Faces) == 4
+    params = popup.core.VBoxFoldParams()
+    params.offset, params.side, params.height = 80.0, 40.0, 30.0
+    params.wall_angle = math.radians(40.0)
+    corner = popup_vector(popup.core.v_box_front_corner(params, math.radians(60.0)))
+    nearest = min((v.Point - corner).Length for v in mover.Shape.Vertexes)
+    assert nearest < 1e-9
+    assert abs(corner.x) < 1e-12 and corner.y < 80.0 - 1.0  # it moved along the fold only
+    assert popup.validity.run_check(card)["valid"]

@@ -1,6 +1,6 @@
 """PopUp_TentFold, PopUp_StepFold, PopUp_VFold, PopUp_BoxFold, PopUp_VBoxFold,
-PopUp_RotationArm, PopUp_FloatingLayer: a mechanism on the selected host (a card or a mechanism
-offering base patch pairs), or on the document's only card."""
+PopUp_RotationArm, PopUp_VerticalTranslation, PopUp_FloatingLayer: a mechanism on the selected
+host (a card or a mechanism offering base patch pairs), or on the document's only card."""
 
 import FreeCAD
 import FreeCADGui
@@ -41,6 +41,12 @@ MECHANISMS = {
         "Rotation arm",
         "Add a rotation arm (a flat v-fold whose wing carries an arm past the spine) on the "
         "selected card or box fold",
+    ),
+    "PopUp_VerticalTranslation": (
+        "make_vertical_translation",
+        "Vertical translation",
+        "Add a vertical translation (front walls and a two-triangle top whose front corner slides "
+        "along the fold) on the selected card or box fold",
     ),
     "PopUp_FloatingLayer": (
         "make_floating_layer",

@@ -10,6 +10,7 @@ from popupwb.make.make_mechanisms import (
     make_tent_fold,
     make_v_box_fold,
     make_v_fold,
+    make_vertical_translation,
 )
 from popupwb.make.make_scaffold import make_scaffold
 
@@ -24,4 +25,5 @@ __all__ = [
     "make_tent_fold",
     "make_v_box_fold",
     "make_v_fold",
+    "make_vertical_translation",
 ]

@@ -16,6 +16,7 @@ from popupwb.features.step_fold import StepFold
 from popupwb.features.tent_fold import TentFold
 from popupwb.features.rotation_arm import RotationArm
 from popupwb.features.v_box_fold import VBoxFold
+from popupwb.features.vertical_translation import VerticalTranslation
 from popupwb.features.v_fold import VFold
 
 
@@ -110,3 +111,8 @@ def make_floating_layer(host, host_pair=None, name="FloatingLayer", **params):
 def make_rotation_arm(host, host_pair=None, name="RotationArm", **params):
     """A RotationArm on `host` (open flat): offset, spine, run, arm (mm)."""
     return make_mechanism(RotationArm, host, host_pair, name, **params)
+
+
+def make_vertical_translation(host, host_pair=None, name="VerticalTranslation", **params):
+    """A VerticalTranslation on `host` (open flat): offset, side, height (mm), wall_angle (deg)."""
+    return make_mechanism(VerticalTranslation, host, host_pair, name, **params)

@@ -13,6 +13,7 @@ ICONS = {
     "PopUp::BoxFold": "PopUp_BoxFold",
     "PopUp::VBoxFold": "PopUp_VBoxFold",
     "PopUp::RotationArm": "PopUp_RotationArm",
+    "PopUp::VerticalTranslation": "PopUp_VerticalTranslation",
     "PopUp::FloatingLayer": "PopUp_FloatingLayer",
 }
 

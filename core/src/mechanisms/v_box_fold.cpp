@@ -9,6 +9,24 @@
 
 namespace popup {
 
+Vec3 v_box_front_corner(const VBoxFoldParams& p, double opening)
+{
+    VFoldParams spine; // FL and FR are a v-fold whose spine stands vertical at 180°
+    spine.offset = p.offset;
+    spine.run = p.side;
+    spine.hinge_angle = p.wall_angle;
+    spine.spine = p.height;
+    spine.spine_angle = M_PI / 2;
+    return v_fold_tip(spine, M_PI, opening);
+}
+
+Result<MechanismParts> add_vertical_translation(Scaffold& scaffold, const BasePatchPair& host,
+                                                VBoxFoldParams params, const std::string& name)
+{
+    params.back = false;
+    return add_v_box_fold(scaffold, host, params, name);
+}
+
 Result<MechanismParts> add_v_box_fold(Scaffold& scaffold, const BasePatchPair& host,
                                       const VBoxFoldParams& p, const std::string& name)
 {
@@ -47,31 +65,28 @@ Result<MechanismParts> add_v_box_fold(Scaffold& scaffold, const BasePatchPair& h
     // Walls wind so their normals face out of the box; the top faces up.
     const int FL = m.patch({F, Sg, up(Sg), up(F)}, PatchRole::front, "FL");
     const int FR = m.patch({Sb, F, up(F), up(Sb)}, PatchRole::front, "FR");
-    const int BL = m.patch({Sg, Bk, up(Bk), up(Sg)}, PatchRole::back, "BL");
-    const int BR = m.patch({Bk, Sb, up(Sb), up(Bk)}, PatchRole::back, "BR");
     const int TG = m.patch({up(F), up(Sg), up(Bk)}, PatchRole::top, "TG");
     const int TB = m.patch({up(F), up(Bk), up(Sb)}, PatchRole::top, "TB");
     m.hinge(host.ground, FL, F, Sg);
     m.hinge(host.backdrop, FR, F, Sb);
     m.hinge(FL, FR, F, up(F));
-    m.hinge(FL, BL, Sg, up(Sg));
-    m.hinge(FR, BR, Sb, up(Sb));
-    m.hinge(BL, BR, Bk, up(Bk));
     m.hinge(FL, TG, up(F), up(Sg));
     m.hinge(FR, TB, up(F), up(Sb));
     // Flat at the design state: the top creases down into the box (the lower of two branches
     // the simulator finds; both close to the same footprint).
     m.hinge(TG, TB, up(F), up(Bk), FoldDirection::valley);
-    // The front spine is a v-fold tip (spine angle 90°): it leans out of the front when closing.
-    VFoldParams spine;
-    spine.offset = y0;
-    spine.run = p.side;
-    spine.hinge_angle = p.wall_angle;
-    spine.spine = h;
-    spine.spine_angle = M_PI / 2;
+    if (p.back) {
+        // Back walls hang from the front walls and each other; the top is NOT joined to them.
+        const int BL = m.patch({Sg, Bk, up(Bk), up(Sg)}, PatchRole::back, "BL");
+        const int BR = m.patch({Bk, Sb, up(Sb), up(Bk)}, PatchRole::back, "BR");
+        m.hinge(FL, BL, Sg, up(Sg));
+        m.hinge(FR, BR, Sb, up(Sb));
+        m.hinge(BL, BR, Bk, up(Bk));
+    }
+    // The front corner leans out of the front when closing.
     double lo = y0;
     for (int k = 0; k <= 90; ++k)
-        lo = std::min(lo, v_fold_tip(spine, M_PI, M_PI * k / 90).y());
+        lo = std::min(lo, v_box_front_corner(p, M_PI * k / 90).y());
     m.sweeps(lo, y0 + 2 * along);
     return m.finish();
 }
