@@ -7,6 +7,7 @@
 #include "popup/card.hpp"
 #include "popup/mechanisms/box_fold.hpp"
 #include "popup/mechanisms/floating_layer.hpp"
+#include "popup/mechanisms/horizontal_translation.hpp"
 #include "popup/mechanisms/rotation_arm.hpp"
 #include "popup/mechanisms/step_fold.hpp"
 #include "popup/mechanisms/tent_fold.hpp"
@@ -111,6 +112,11 @@ void bind_mechanisms(py::module_& m)
         .def_readwrite("height", &FloatingLayerParams::height)
         .def_readwrite("support", &FloatingLayerParams::support)
         .def_readwrite("overhang", &FloatingLayerParams::overhang);
+    py::class_<HorizontalTranslationParams, StepFoldParams>(m, "HorizontalTranslationParams")
+        .def(py::init<>())
+        .def_readwrite("reach", &HorizontalTranslationParams::reach);
+    m.def("horizontal_translation_tip", &horizontal_translation_tip, py::arg("params"),
+          py::arg("opening"), "Closed form: M's far end P (x, z) in the host's section.");
     py::class_<RotationArmParams>(m, "RotationArmParams")
         .def(py::init<>())
         .def_readwrite("offset", &RotationArmParams::offset)
@@ -152,6 +158,9 @@ void bind_mechanisms(py::module_& m)
                                  "Adds a box fold; its parts offer the top and both sides.");
     def_generator<FloatingLayerParams>(m, "add_floating_layer", &add_floating_layer,
                                        "Adds a floating layer; its platform is offered first.");
+    def_generator<HorizontalTranslationParams>(
+        m, "add_horizontal_translation", &add_horizontal_translation,
+        "Adds a horizontal translation: a step fold and a patch M through a slit at its nose.");
     def_generator<RotationArmParams>(m, "add_rotation_arm", &add_rotation_arm,
                                      "Adds a rotation arm (extended flat v-fold, thesis §4.3.4).");
     m.def(

@@ -158,6 +158,13 @@ PYBIND11_MODULE(popupcore, m)
                                        out.append(py::make_tuple(g.patch_a, g.patch_b));
                                    return out;
                                })
+        .def_property_readonly("slits",
+                               [](const Scaffold& s) {
+                                   py::list out;
+                                   for (const Slit& sl : s.slits)
+                                       out.append(py::make_tuple(sl.patch_cut, sl.patch_through));
+                                   return out;
+                               })
         .def_readonly("ground", &Scaffold::ground)
         .def_readonly("backdrop", &Scaffold::backdrop)
         .def_readonly("design_angle", &Scaffold::design_angle)

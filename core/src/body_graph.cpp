@@ -60,6 +60,18 @@ Result<BodyGraph> build_body_graph(const Scaffold& s)
             linked.join(a, b);
     }
 
+    for (size_t k = 0; k < s.slits.size(); ++k) {
+        const Slit& sl = s.slits[k];
+        const int cut = g.body_of_patch[s.patch_index(sl.patch_cut)];
+        const int through = g.body_of_patch[s.patch_index(sl.patch_through)];
+        if (cut == through || (g.is_base(cut) && g.is_base(through)))
+            continue;
+        const Patch& p = *s.find_patch(sl.patch_through);
+        g.slits.push_back({int(k), cut, through, {sl.from, sl.to}, p.origin, p.normal});
+        if (!g.is_base(cut) && !g.is_base(through))
+            linked.join(cut, through);
+    }
+
     g.component_of_body.assign(g.body_count, -1);
     std::vector<int> component_of_root(g.body_count, -1);
     for (int b = 0; b < g.body_count; ++b) {
@@ -72,6 +84,13 @@ Result<BodyGraph> build_body_graph(const Scaffold& s)
         }
         g.components[c].push_back(b);
         g.component_of_body[b] = c;
+    }
+    g.component_slits.resize(g.components.size());
+    for (size_t k = 0; k < g.slits.size(); ++k) {
+        const SlitJoint& sl = g.slits[k];
+        const int c = g.is_base(sl.body_cut) ? g.component_of_body[sl.body_through]
+                                             : g.component_of_body[sl.body_cut];
+        g.component_slits[c].push_back(int(k));
     }
     g.component_joints.resize(g.components.size());
     for (size_t j = 0; j < g.joints.size(); ++j) {

@@ -163,6 +163,22 @@ Scaffold read_scaffold(const json& j)
             s.hinges.push_back(h);
         }
     }
+    if (j.contains("slits")) {
+        const json& slits = j["slits"];
+        if (!slits.is_array())
+            throw FieldError{"slits", "must be an array"};
+        for (size_t i = 0; i < slits.size(); ++i) {
+            const std::string path = "slits[" + std::to_string(i) + "]";
+            const json& sj = slits[i];
+            Slit sl;
+            sl.id = sj.contains("id") ? read_int(sj["id"], path + ".id") : int(i);
+            std::tie(sl.patch_cut, sl.patch_through) =
+                read_pair(member(sj, "patches", path), path + ".patches");
+            sl.from = read_point(member(sj, "from", path), path + ".from");
+            sl.to = read_point(member(sj, "to", path), path + ".to");
+            s.slits.push_back(sl);
+        }
+    }
     if (j.contains("glue")) {
         const json& glue = j["glue"];
         if (!glue.is_array())
@@ -245,6 +261,14 @@ std::string scaffold_to_json(const Scaffold& s)
                                {"from", write_point(h.from)},
                                {"to", write_point(h.to)},
                                {"fold", to_string(h.direction)}});
+    if (!s.slits.empty()) {
+        j["slits"] = json::array();
+        for (const Slit& sl : s.slits)
+            j["slits"].push_back({{"id", sl.id},
+                                  {"patches", {sl.patch_cut, sl.patch_through}},
+                                  {"from", write_point(sl.from)},
+                                  {"to", write_point(sl.to)}});
+    }
     j["glue"] = json::array();
     for (const Glue& g : s.glue)
         j["glue"].push_back({{"patches", {g.patch_a, g.patch_b}}});

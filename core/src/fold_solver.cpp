@@ -22,6 +22,30 @@ Vec3 place(const BodyPose& pose, const Vec3& center, const Vec3& x)
     return pose.rotation * (x - center) + pose.position;
 }
 
+// Signed distance of a slit end from the plane of the body passing through, and its gradient
+// with respect to both bodies' motions (rotation parts scaled by `size`; docs/MATH.md, Slits).
+struct SlitRow {
+    double distance;
+    Eigen::Matrix<double, 6, 1> through;
+    Eigen::Matrix<double, 6, 1> cut;
+};
+
+SlitRow slit_row(const SlitJoint& sl, int e, const Configuration& q, const BodyGraph& g,
+                 double size)
+{
+    const BodyPose& t = q[sl.body_through];
+    const BodyPose& c = q[sl.body_cut];
+    const Vec3 n = t.rotation * sl.plane_normal;
+    const Vec3 on_plane = place(t, g.center[sl.body_through], sl.plane_point);
+    const Vec3 arm = c.rotation * (sl.ends[e] - g.center[sl.body_cut]);
+    const Vec3 end = arm + c.position;
+    SlitRow r;
+    r.distance = n.dot(end - on_plane);
+    r.through << n.cross(end - t.position) / size, -n;
+    r.cut << arm.cross(n) / size, n;
+    return r;
+}
+
 } // namespace
 
 FoldSolver::FoldSolver(const Scaffold& scaffold, const BodyGraph& graph,
@@ -82,6 +106,10 @@ double FoldSolver::residual(int c, const Configuration& q) const
                                      place(q[joint.body_b], graph_.center[joint.body_b], x))
                                         .norm());
     }
+    for (int k : graph_.component_slits[c])
+        for (int e = 0; e < 2; ++e)
+            worst =
+                std::max(worst, std::abs(slit_row(graph_.slits[k], e, q, graph_, size_).distance));
     return worst;
 }
 
@@ -89,9 +117,23 @@ void FoldSolver::constraint_system(int c, const Configuration& q, Eigen::VectorX
                                    Eigen::MatrixXd& J) const
 {
     const auto& joints = graph_.component_joints[c];
+    const auto& slits = graph_.component_slits[c];
     const int n = int(6 * graph_.components[c].size());
-    r.resize(6 * joints.size());
-    J.setZero(6 * joints.size(), n);
+    const int hinge_rows = int(6 * joints.size());
+    r.resize(hinge_rows + 2 * slits.size());
+    J.setZero(hinge_rows + 2 * slits.size(), n);
+    for (size_t k = 0; k < slits.size(); ++k) {
+        const SlitJoint& sl = graph_.slits[slits[k]];
+        for (int e = 0; e < 2; ++e) {
+            const int rowi = hinge_rows + int(2 * k) + e;
+            const SlitRow row = slit_row(sl, e, q, graph_, size_);
+            r[rowi] = row.distance;
+            if (!graph_.is_base(sl.body_through))
+                J.block<1, 6>(rowi, column_of_body_[sl.body_through]) = row.through.transpose();
+            if (!graph_.is_base(sl.body_cut))
+                J.block<1, 6>(rowi, column_of_body_[sl.body_cut]) += row.cut.transpose();
+        }
+    }
     for (size_t k = 0; k < joints.size(); ++k) {
         const Joint& joint = graph_.joints[joints[k]];
         for (int e = 0; e < 2; ++e) {
@@ -169,6 +211,12 @@ double FoldSolver::cost(int c, const Configuration& q, const std::vector<BranchH
             largest = std::max(largest, r.cwiseAbs().maxCoeff());
         }
     }
+    for (int k : graph_.component_slits[c])
+        for (int e = 0; e < 2; ++e) {
+            const double d = slit_row(graph_.slits[k], e, q, graph_, size_).distance;
+            total += d * d;
+            largest = std::max(largest, std::abs(d));
+        }
     if (hints)
         for (const BranchHint& hint : *hints)
             total += std::pow(hint_residual(hint, q), 2);
@@ -224,6 +272,31 @@ void FoldSolver::linearize_into(int c, const Configuration& q, const std::vector
                 ab << skew(a) * skew(b), -skew(a), skew(b), -I;
                 A.template block<6, 6>(ca, cb) += ab;
                 A.template block<6, 6>(cb, ca) += ab.transpose();
+            }
+        }
+    }
+    for (int k : graph_.component_slits[c]) {
+        const SlitJoint& sl = graph_.slits[k];
+        const bool free_t = !graph_.is_base(sl.body_through);
+        const bool free_c = !graph_.is_base(sl.body_cut);
+        const int ct = column_of_body_[sl.body_through];
+        const int cc = column_of_body_[sl.body_cut];
+        for (int e = 0; e < 2; ++e) {
+            const SlitRow row = slit_row(sl, e, q, graph_, size_);
+            if (free_t) {
+                const Eigen::Matrix<double, 6, 6> tt = row.through * row.through.transpose();
+                A.template block<6, 6>(ct, ct) += tt;
+                g.template segment<6>(ct) += row.through * row.distance;
+            }
+            if (free_c) {
+                const Eigen::Matrix<double, 6, 6> cc_block = row.cut * row.cut.transpose();
+                A.template block<6, 6>(cc, cc) += cc_block;
+                g.template segment<6>(cc) += row.cut * row.distance;
+            }
+            if (free_t && free_c) {
+                const Eigen::Matrix<double, 6, 6> tc = row.through * row.cut.transpose();
+                A.template block<6, 6>(ct, cc) += tc;
+                A.template block<6, 6>(cc, ct) += tc.transpose();
             }
         }
     }
@@ -372,6 +445,10 @@ FoldState FoldSolver::state(double theta, const Configuration& q) const
         for (const Vec3& x : {h.from, h.to})
             s.hinge_residual = std::max(s.hinge_residual, (a.apply(x) - b.apply(x)).norm());
     }
+    for (const SlitJoint& sl : graph_.slits)
+        for (int e = 0; e < 2; ++e)
+            s.hinge_residual =
+                std::max(s.hinge_residual, std::abs(slit_row(sl, e, q, graph_, size_).distance));
     for (size_t i = 0; i < scaffold_.patches.size(); ++i) {
         const Loop3& loop = scaffold_.patches[i].outer;
         for (size_t k = 0; k < loop.size(); ++k) {

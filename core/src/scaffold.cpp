@@ -158,6 +158,34 @@ Result<Scaffold> validate_scaffold(Scaffold s)
             }
         }
     }
+    std::set<int> slit_ids;
+    for (const Slit& sl : s.slits) {
+        const std::string subject = "slit " + std::to_string(sl.id);
+        if (!slit_ids.insert(sl.id).second)
+            r.fail("duplicate_slit_id", "id is used twice", subject);
+        const Patch* cut = s.find_patch(sl.patch_cut);
+        const Patch* through = s.find_patch(sl.patch_through);
+        if (!cut || !through || sl.patch_cut == sl.patch_through) {
+            r.fail("bad_slit_patches",
+                   "is cut in patch " + std::to_string(sl.patch_cut) + " for patch " +
+                       std::to_string(sl.patch_through) + "; both must exist and differ",
+                   subject);
+            continue;
+        }
+        if (!finite(sl.from) || !finite(sl.to) || (sl.to - sl.from).norm() <= tol) {
+            r.fail("degenerate_slit", "segment has a non-finite or zero-length end", subject);
+            continue;
+        }
+        for (const Vec3& x : {sl.from, sl.to}) {
+            if (!cut->contains(x, 10 * tol))
+                r.fail("slit_off_patch", "an end is not on " + patch_subject(*cut), subject);
+            else if (std::abs((x - through->origin).dot(through->normal)) > 10 * tol)
+                r.fail("slit_off_plane",
+                       "an end is not in the plane of " + patch_subject(*through) +
+                           ", which must pass through it",
+                       subject);
+        }
+    }
     for (size_t i = 0; i < s.glue.size(); ++i) {
         const Glue& g = s.glue[i];
         if (!s.find_patch(g.patch_a) || !s.find_patch(g.patch_b) || g.patch_a == g.patch_b)

@@ -2,7 +2,9 @@
 
 #include <fstream>
 
+#include "popup/card.hpp"
 #include "popup/design_file.hpp"
+#include "popup/mechanisms/horizontal_translation.hpp"
 #include "test_support.hpp"
 
 using namespace popup;
@@ -94,4 +96,41 @@ TEST(DesignFile, NullCoordinateIsNamed)
     const Result<Scaffold> r = scaffold_from_json(text);
     EXPECT_FALSE(r.ok);
     EXPECT_EQ(first_subject(r), "patches[0].outline[0][0]");
+}
+
+TEST(DesignFile, SlitsRoundTripAndBadOnesAreNamed)
+{
+    Scaffold s = tent_card();
+    s.slits.push_back({4, 2, 3, {30, 50, 0}, {30, 60, 0}});
+    const std::string text = scaffold_to_json(s);
+    EXPECT_NE(text.find("\"slits\""), std::string::npos);
+    // The slit above lies on the tent's foot line, not in the other slope's plane.
+    const Result<Scaffold> back = scaffold_from_json(text);
+    EXPECT_FALSE(back.ok);
+    bool named = false;
+    for (const Diagnostic& d : back.diagnostics)
+        named |= d.subject == "slit 4" && d.code == "slit_off_plane";
+    EXPECT_TRUE(named);
+    std::string broken = text;
+    broken.replace(broken.find("\"slits\": ["), 10, "\"slits\": [{\"patches\": [2]},");
+    const Result<Scaffold> bad = scaffold_from_json(broken);
+    EXPECT_FALSE(bad.ok);
+    EXPECT_EQ(bad.diagnostics.front().subject, "slits[0].patches");
+}
+
+TEST(DesignFile, SlitOfAHorizontalTranslationRoundTrips)
+{
+    CardParams c;
+    Scaffold s = make_card(c).value;
+    HorizontalTranslationParams p;
+    p.offset = 60;
+    p.width = 50;
+    ASSERT_TRUE(add_horizontal_translation(s, central_fold(s), p).ok);
+    const Result<Scaffold> back = scaffold_from_json(scaffold_to_json(s));
+    ASSERT_TRUE(back.ok) << back.diagnostics.front().message;
+    ASSERT_EQ(back.value.slits.size(), 1u);
+    EXPECT_EQ(back.value.slits[0].patch_cut, s.slits[0].patch_cut);
+    EXPECT_EQ(back.value.slits[0].patch_through, s.slits[0].patch_through);
+    EXPECT_EQ(back.value.slits[0].from, s.slits[0].from);
+    EXPECT_EQ(back.value.slits[0].to, s.slits[0].to);
 }

@@ -7,6 +7,7 @@
 #include "popup/card.hpp"
 #include "popup/check_validity.hpp"
 #include "popup/mechanisms/box_fold.hpp"
+#include "popup/mechanisms/horizontal_translation.hpp"
 #include "popup/mechanisms/rotation_arm.hpp"
 #include "popup/mechanisms/step_fold.hpp"
 #include "popup/mechanisms/tent_fold.hpp"
@@ -337,4 +338,34 @@ TEST(ClosedForm, VerticalTranslationMovesAlongTheFold)
     });
     const ValidityReport r = check_validity(s);
     EXPECT_TRUE(r.valid()) << (r.diagnostics.empty() ? "" : r.diagnostics.front().message);
+}
+
+// docs/MATH.md, "Horizontal translation": M through a slit along a step fold's nose.
+TEST(ClosedForm, HorizontalTranslationSlidesThroughTheSlit)
+{
+    Scaffold s = card();
+    HorizontalTranslationParams p;
+    p.offset = 60;
+    p.width = 50;
+    p.run_ground = 40;
+    p.run_backdrop = 20;
+    p.reach = 70;
+    const auto parts = add_horizontal_translation(s, central_fold(s), p);
+    ASSERT_TRUE(parts.ok) << parts.diagnostics.front().message;
+    ASSERT_EQ(parts.value.patches.size(), 3u); // riser, tread, M
+    ASSERT_EQ(s.slits.size(), 1u);
+    const int M = parts.value.patches[2];
+    expect_track(s, M, {70, 80, 0}, [&](double t) {
+        const Vec2 tip = horizontal_translation_tip(p, t);
+        // |C| = √(a² + b² + 2ab cos θ): thesis eq 4.3 with its square root.
+        const double l = std::sqrt(40.0 * 40 + 20.0 * 20 + 2 * 40.0 * 20 * std::cos(t));
+        EXPECT_NEAR(step_nose(p, t).norm(), l, 1e-12);
+        return Vec3(tip.x(), 80, tip.y());
+    });
+    const ValidityReport r = check_validity(s);
+    EXPECT_TRUE(r.valid()) << (r.diagnostics.empty() ? "" : r.diagnostics.front().message);
+    // Without the slit, M would fall freely about the hinge.
+    Scaffold loose = s;
+    loose.slits.clear();
+    EXPECT_FALSE(check_validity(loose).stable);
 }

@@ -36,6 +36,9 @@ COMMANDS = [
     "PopUp_BoxFold",
     "PopUp_VBoxFold",
     "PopUp_FloatingLayer",
+    "PopUp_RotationArm",
+    "PopUp_HorizontalTranslation",
+    "PopUp_VerticalTranslation",
     "PopUp_CheckValidity",
     "PopUp_Animate",
     "PopUp_LoadDesign",
@@ -276,6 +279,31 @@ def main():
     FreeCAD.closeDocument(doc.Name)
 
     mechanisms()
+    motion_mechanisms()
+
+
+def motion_mechanisms():
+    # The motion mechanisms' commands, each on a card of its own (their defaults fit it).
+    from popupwb import make
+
+    motion = ["PopUp_RotationArm", "PopUp_HorizontalTranslation", "PopUp_VerticalTranslation"]
+    for command in motion:
+        doc = FreeCAD.newDocument("GuiSmokeMotion")
+        card = make.make_card(doc, preset="A5")
+        doc.recompute()
+        Gui.Selection.clearSelection()
+        Gui.Selection.addSelection(card)
+        Gui.runCommand(command)
+        new = [o for o in doc.Objects if o is not card]
+        card.FoldAngle = 90.0
+        doc.recompute()
+        result[command] = (
+            len(new) == 1
+            and new[0].Host == card
+            and new[0].Shape.isValid()
+            and "Invalid" not in new[0].State
+        )
+        FreeCAD.closeDocument(doc.Name)
 
 
 try:
@@ -449,6 +477,12 @@ def main():
     )
     check("PopUp_CheckValidity ran", result.get("command_ran") is True)
     check("PopUp_LoadDesign loads the file", result.get("loaded") is True)
+    for command in [
+        "PopUp_RotationArm",
+        "PopUp_HorizontalTranslation",
+        "PopUp_VerticalTranslation",
+    ]:
+        check(f"{command} builds on the selected card", result.get(command) is True)
     check("PopUp_LoadDesign is one undo step", result.get("load_undone") is True)
     check("demo card reported valid", result.get("valid") is True, result.get("diagnostics"))
     pixels = result.get("non_white_pixels", 0)

@@ -522,3 +522,30 @@ def test_vertical_translation_corner_slides_along_the_fold(doc, popup):
     assert nearest < 1e-9
     assert abs(corner.x) < 1e-12 and corner.y < 80.0 - 1.0  # it moved along the fold only
     assert popup.validity.run_check(card)["valid"]
+
+
+def test_horizontal_translation_slides_m_through_the_slit(doc, popup):
+    card = popup.make.make_card(doc, width=240, depth=140)
+    slider = popup.make.make_horizontal_translation(
+        card, offset=60, width=50, run_ground=40, run_backdrop=20, reach=70, name="Slider"
+    )
+    card.FoldAngle = 90.0
+    doc.recompute()
+    assert slider.Shape.isValid() and len(slider.Shape.Faces) == 3  # riser, tread, M
+    params = popup.core.HorizontalTranslationParams()
+    params.offset, params.width, params.run_ground, params.run_backdrop, params.reach = (
+        60.0,
+        50.0,
+        40.0,
+        20.0,
+        70.0,
+    )
+    x, z = popup.core.horizontal_translation_tip(params, math.radians(90.0))
+    tip = popup_vector((x, 60.0, z))
+    assert min((v.Point - tip).Length for v in slider.Shape.Vertexes) < 1e-9
+    scaffold = popup.assembly.assembly_of(card).scaffold
+    assert len(scaffold.slits) == 1
+    assert popup.validity.run_check(card)["valid"]
+    slider.RunBackdrop = 45.0  # not below RunGround: refused, naming the property
+    doc.recompute()
+    assert "Invalid" in slider.State or "Error" in slider.State

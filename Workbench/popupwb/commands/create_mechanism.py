@@ -1,6 +1,7 @@
 """PopUp_TentFold, PopUp_StepFold, PopUp_VFold, PopUp_BoxFold, PopUp_VBoxFold,
-PopUp_RotationArm, PopUp_VerticalTranslation, PopUp_FloatingLayer: a mechanism on the selected
-host (a card or a mechanism offering base patch pairs), or on the document's only card."""
+PopUp_RotationArm, PopUp_HorizontalTranslation, PopUp_VerticalTranslation, PopUp_FloatingLayer:
+a mechanism on the selected host (a card or a mechanism offering base patch pairs), or on the
+document's only card."""
 
 import FreeCAD
 import FreeCADGui
@@ -41,6 +42,12 @@ MECHANISMS = {
         "Rotation arm",
         "Add a rotation arm (a flat v-fold whose wing carries an arm past the spine) on the "
         "selected card or box fold",
+    ),
+    "PopUp_HorizontalTranslation": (
+        "make_horizontal_translation",
+        "Horizontal translation",
+        "Add a horizontal translation (a step fold and a patch sliding through a slit at its "
+        "nose) on the selected card or box fold",
     ),
     "PopUp_VerticalTranslation": (
         "make_vertical_translation",

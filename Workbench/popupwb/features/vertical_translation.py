@@ -18,7 +18,11 @@ class VerticalTranslation(MechanismFeature):
         Parameter("Side", "length", "side", "Length of each wall along the host", 40.0),
         Parameter("Height", "length", "height", "Height h of the walls at the design state", 30.0),
         Parameter(
-            "WallAngle", "angle", "wall_angle", "Angle α between each wall and the host's hinge", 45.0
+            "WallAngle",
+            "angle",
+            "wall_angle",
+            "Angle α between each wall and the host's hinge",
+            45.0,
         ),
     )
 

@@ -4,6 +4,7 @@ from popupwb.make.make_card import make_card
 from popupwb.make.make_mechanisms import (
     make_box_fold,
     make_floating_layer,
+    make_horizontal_translation,
     make_mechanism,
     make_rotation_arm,
     make_step_fold,
@@ -18,6 +19,7 @@ __all__ = [
     "make_box_fold",
     "make_card",
     "make_floating_layer",
+    "make_horizontal_translation",
     "make_mechanism",
     "make_rotation_arm",
     "make_scaffold",

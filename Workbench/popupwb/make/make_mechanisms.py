@@ -12,6 +12,7 @@ import FreeCAD
 from popupwb import assembly
 from popupwb.features.box_fold import BoxFold
 from popupwb.features.floating_layer import FloatingLayer
+from popupwb.features.horizontal_translation import HorizontalTranslation
 from popupwb.features.step_fold import StepFold
 from popupwb.features.tent_fold import TentFold
 from popupwb.features.rotation_arm import RotationArm
@@ -116,3 +117,9 @@ def make_rotation_arm(host, host_pair=None, name="RotationArm", **params):
 def make_vertical_translation(host, host_pair=None, name="VerticalTranslation", **params):
     """A VerticalTranslation on `host` (open flat): offset, side, height (mm), wall_angle (deg)."""
     return make_mechanism(VerticalTranslation, host, host_pair, name, **params)
+
+
+def make_horizontal_translation(host, host_pair=None, name="HorizontalTranslation", **params):
+    """A HorizontalTranslation on `host` (open flat): offset, width, run_ground, run_backdrop,
+    reach (mm)."""
+    return make_mechanism(HorizontalTranslation, host, host_pair, name, **params)

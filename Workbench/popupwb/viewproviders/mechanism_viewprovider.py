@@ -14,6 +14,7 @@ ICONS = {
     "PopUp::VBoxFold": "PopUp_VBoxFold",
     "PopUp::RotationArm": "PopUp_RotationArm",
     "PopUp::VerticalTranslation": "PopUp_VerticalTranslation",
+    "PopUp::HorizontalTranslation": "PopUp_HorizontalTranslation",
     "PopUp::FloatingLayer": "PopUp_FloatingLayer",
 }
 

@@ -30,6 +30,16 @@ struct Glue {
     int patch_b = 0;
 };
 
+/// A slit cut in one patch that another patch passes through (thesis §4.3.1): the slit's line
+/// stays in the plane of the patch through it, which may slide along it and turn about it.
+struct Slit {
+    int id = 0;
+    int patch_cut = 0;     ///< the patch the slit is cut in; the segment lies on it
+    int patch_through = 0; ///< the patch passing through; the segment lies in its plane
+    Vec3 from = Vec3::Zero();
+    Vec3 to = Vec3::Zero();
+};
+
 /// Patches, hinges and glue joints of a pop-up at its design state, in the frame of thesis §4.3:
 /// y along the central fold, z bisecting the fold angle, x toward the ground.
 struct Scaffold {
@@ -37,6 +47,7 @@ struct Scaffold {
     std::vector<Patch> patches;
     std::vector<Hinge> hinges;
     std::vector<Glue> glue;
+    std::vector<Slit> slits;
     int ground = -1;   ///< id of the ground base patch (x > 0 at 180°)
     int backdrop = -1; ///< id of the backdrop base patch (x < 0 at 180°)
     double design_angle = 3.14159265358979323846; ///< fold angle of the stored state (radians)

@@ -10,7 +10,7 @@ namespace popup {
 struct FoldState {
     double angle = 0.0;          ///< radians
     std::vector<Pose> poses;     ///< one per scaffold patch, in scaffold order
-    double hinge_residual = 0.0; ///< largest hinge endpoint mismatch (mm)
+    double hinge_residual = 0.0; ///< largest hinge end mismatch or slit end off-plane (mm)
     double edge_strain = 0.0;    ///< largest relative change of a patch edge length
 };
 
