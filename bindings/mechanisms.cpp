@@ -104,6 +104,7 @@ void bind_mechanisms(py::module_& m)
         .def_readwrite("depth_ground", &BoxFoldParams::depth_ground)
         .def_readwrite("depth_backdrop", &BoxFoldParams::depth_backdrop)
         .def_readwrite("height", &BoxFoldParams::height)
+        .def_readwrite("panel_pairs", &BoxFoldParams::panel_pairs)
         .def_readwrite("front", &BoxFoldParams::front)
         .def_readwrite("back", &BoxFoldParams::back);
 

@@ -311,3 +311,20 @@ TEST(FloatingLayer, CarriesATentOnItsPlatform)
     const ValidityReport r = check_validity(s);
     EXPECT_TRUE(r.valid()) << first_message(r);
 }
+
+TEST(BoxFold, SeveralPanelPairsPerEndStayValid)
+{
+    Scaffold s = card();
+    BoxFoldParams p = placed(BoxFoldParams{}, 80, 60);
+    p.panel_pairs = 3;
+    const auto box = add_box_fold(s, central_fold(s), p);
+    ASSERT_TRUE(box.ok);
+    EXPECT_EQ(box.value.patches.size(), 5u + 2 * 2 * 3); // C, L, R, TG, TB and 3 pairs per end
+    const ValidityReport r = check_validity(s);
+    EXPECT_TRUE(r.valid()) << first_message(r);
+    p.panel_pairs = 0;
+    Scaffold other = card();
+    const auto bad = add_box_fold(other, central_fold(other), p);
+    EXPECT_FALSE(bad.ok);
+    EXPECT_EQ(bad.diagnostics.front().subject, "BoxFold.PanelPairs");
+}

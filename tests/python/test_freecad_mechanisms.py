@@ -549,3 +549,17 @@ def test_horizontal_translation_slides_m_through_the_slit(doc, popup):
     slider.RunBackdrop = 45.0  # not below RunGround: refused, naming the property
     doc.recompute()
     assert "Invalid" in slider.State or "Error" in slider.State
+
+
+def test_box_fold_with_stacked_panel_pairs(doc, popup):
+    card = popup.make.make_card(doc, width=240, depth=140)
+    box = popup.make.make_box_fold(
+        card, offset=60, width=100, depth_ground=30, depth_backdrop=30, height=30, name="Box"
+    )
+    box.PanelPairs = 3
+    doc.recompute()
+    assert box.Shape.isValid() and len(box.Shape.Faces) == 5 + 2 * 2 * 3
+    assert popup.validity.run_check(card)["valid"]
+    box.PanelPairs = 0
+    doc.recompute()
+    assert "Invalid" in box.State or "Error" in box.State

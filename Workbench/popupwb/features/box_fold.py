@@ -34,6 +34,13 @@ class BoxFold(MechanismFeature):
             "Front", "bool", "front", "Front panels (without front and back the box shears)", True
         ),
         Parameter("Back", "bool", "back", "Back panels", True),
+        Parameter(
+            "PanelPairs",
+            "integer",
+            "panel_pairs",
+            "Front and back panel pairs per end, strips stacked up the end",
+            1,
+        ),
     )
     # popupcore's add_box_fold offers [top, side_ground, side_backdrop], named "<name>.<part>".
     OFFERS = ("top", "side_ground", "side_backdrop")

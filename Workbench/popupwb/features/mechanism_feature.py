@@ -25,13 +25,15 @@ from popupwb.stateless_proxy import StatelessProxy
 VERSION = "1"
 
 # kind: "length" (App::PropertyDistance, mm; signed so that the core, not FreeCAD's clamping,
-# judges a negative value), "angle" (App::PropertyAngle, degrees, radians for the core) or "bool".
+# judges a negative value), "angle" (App::PropertyAngle, degrees, radians for the core), "bool" or
+# "integer" (App::PropertyInteger, a count).
 Parameter = collections.namedtuple("Parameter", "name kind field doc default")
 
 _PROPERTY_TYPES = {
     "length": "App::PropertyDistance",
     "angle": "App::PropertyAngle",
     "bool": "App::PropertyBool",
+    "integer": "App::PropertyInteger",
 }
 
 # Objects whose properties this module is writing itself (during execute): no touching the card.
@@ -122,7 +124,12 @@ class MechanismFeature(StatelessProxy):
         values = []
         for p in self.PARAMETERS:
             value = getattr(obj, p.name)
-            values.append(bool(value) if p.kind == "bool" else float(value.Value))
+            if p.kind == "bool":
+                values.append(bool(value))
+            elif p.kind == "integer":
+                values.append(int(value))
+            else:
+                values.append(float(value.Value))
         return values
 
     def parameters(self, obj):

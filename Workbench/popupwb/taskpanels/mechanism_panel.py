@@ -45,6 +45,12 @@ class MechanismPanel:
                 field = QtGui.QCheckBox()
                 field.setChecked(bool(getattr(obj, p.name)))
                 field.toggled.connect(lambda value, name=p.name: self.apply(name, bool(value)))
+            elif p.kind == "integer":
+                field = QtGui.QSpinBox()
+                field.setRange(-1000, 1000)  # the core judges the value and names the range
+                field.setValue(int(getattr(obj, p.name)))
+                field.setKeyboardTracking(False)
+                field.valueChanged.connect(lambda value, name=p.name: self.apply(name, int(value)))
             else:
                 field = QtGui.QDoubleSpinBox()
                 field.setDecimals(2)
@@ -82,6 +88,8 @@ class MechanismPanel:
         field = self.fields[name]
         if isinstance(field, QtGui.QCheckBox):
             field.setChecked(bool(value))
+        elif isinstance(field, QtGui.QSpinBox):
+            field.setValue(int(value))
         else:
             field.setValue(float(value))
 

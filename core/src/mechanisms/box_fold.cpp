@@ -33,6 +33,8 @@ Result<MechanismParts> add_box_fold(Scaffold& scaffold, const BasePatchPair& hos
     check_run(e, name, "DepthBackdrop", p.depth_backdrop, host.backdrop_depth, "backdrop", true);
     if (!(p.height > 0 && p.height <= 2000))
         range_error(e, name, "Height", p.height, "mm", "> 0 and <= 2000 mm");
+    if (!(p.panel_pairs >= 1 && p.panel_pairs <= 10))
+        range_error(e, name, "PanelPairs", p.panel_pairs, "", "1 to 10");
     if (e.empty() && (p.front || p.back) && p.depth_backdrop != p.depth_ground) {
         std::ostringstream m;
         m << "equal to DepthGround (" << p.depth_ground
@@ -50,6 +52,7 @@ Result<MechanismParts> add_box_fold(Scaffold& scaffold, const BasePatchPair& hos
     section.backdrop = p.depth_backdrop;
     section.height = p.height;
     section.front = p.front;
+    section.panel_pairs = p.panel_pairs;
     section.back = p.back;
     build_parallel_box(m, p.offset, p.offset + p.width, section);
     return m.finish();

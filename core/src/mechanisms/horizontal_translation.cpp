@@ -33,8 +33,9 @@ Result<MechanismParts> add_horizontal_translation(Scaffold& scaffold, const Base
         const double through = p.run_ground - p.run_backdrop;
         if (!(p.reach > through && p.reach <= host.ground_depth)) {
             std::ostringstream m;
-            m << "> " << through << " mm (RunGround − RunBackdrop, to pass the slit) and <= "
-              << host.ground_depth << " mm (the depth of the host's ground)";
+            m << "> " << through
+              << " mm (RunGround − RunBackdrop, to pass the slit) and <= " << host.ground_depth
+              << " mm (the depth of the host's ground)";
             range_error(e, name, "Reach", p.reach, "mm", m.str());
         }
     }
@@ -65,7 +66,7 @@ Result<MechanismParts> add_horizontal_translation(Scaffold& scaffold, const Base
         return added;
     }
     Slit slit;
-    slit.patch_cut = parts.patches[0];  // the riser; the slit runs along its nose edge
+    slit.patch_cut = parts.patches[0]; // the riser; the slit runs along its nose edge
     slit.patch_through = M;
     slit.from = m.world({a - b, y0, 0});
     slit.to = m.world({a - b, y1, 0});
@@ -78,4 +79,4 @@ Result<MechanismParts> add_horizontal_translation(Scaffold& scaffold, const Base
     return r;
 }
 
-}  // namespace popup
+} // namespace popup

@@ -32,19 +32,27 @@ void build_parallel_box(MechanismBuilder& m, double y0, double y1, const Paralle
     m.hinge(R, TB, {-b, y0, c}, {-b, y1, c});
     // End panels: flat at the design state, their crease must pop outward (a mountain seen from
     // the outside) or it would run into the other end.
-    auto panels = [&](double y, bool outward_is_plus, const char* left, const char* right) {
-        std::vector<Vec3> l{{0, y, 0}, {g, y, 0}, {g, y, c}, {0, y, c}};
-        std::vector<Vec3> rr{{-b, y, 0}, {0, y, 0}, {0, y, c}, {-b, y, c}};
-        if (outward_is_plus) {
-            l = {{0, y, 0}, {0, y, c}, {g, y, c}, {g, y, 0}};
-            rr = {{-b, y, 0}, {-b, y, c}, {0, y, c}, {0, y, 0}};
+    // Several pairs per end are strips stacked up the end: their creases share one line and
+    // never cross (thesis §4.1).
+    auto panels = [&](double y, bool outward_is_plus, const std::string& left,
+                      const std::string& right) {
+        const int n = s.panel_pairs;
+        for (int k = 0; k < n; ++k) {
+            const double z0 = c * k / n, z1 = c * (k + 1) / n;
+            std::vector<Vec3> l{{0, y, z0}, {g, y, z0}, {g, y, z1}, {0, y, z1}};
+            std::vector<Vec3> rr{{-b, y, z0}, {0, y, z0}, {0, y, z1}, {-b, y, z1}};
+            if (outward_is_plus) {
+                l = {{0, y, z0}, {0, y, z1}, {g, y, z1}, {g, y, z0}};
+                rr = {{-b, y, z0}, {-b, y, z1}, {0, y, z1}, {0, y, z0}};
+            }
+            const std::string suffix = n == 1 ? "" : std::to_string(k + 1);
+            const PatchRole role = outward_is_plus ? PatchRole::back : PatchRole::front;
+            const int pl = m.patch(l, role, left + suffix);
+            const int pr = m.patch(rr, role, right + suffix);
+            m.hinge(L, pl, {g, y, z0}, {g, y, z1});
+            m.hinge(R, pr, {-b, y, z0}, {-b, y, z1});
+            m.hinge(pl, pr, {0, y, z0}, {0, y, z1}, FoldDirection::mountain);
         }
-        const PatchRole role = outward_is_plus ? PatchRole::back : PatchRole::front;
-        const int pl = m.patch(l, role, left);
-        const int pr = m.patch(rr, role, right);
-        m.hinge(L, pl, {g, y, 0}, {g, y, c});
-        m.hinge(R, pr, {-b, y, 0}, {-b, y, c});
-        m.hinge(pl, pr, {0, y, 0}, {0, y, c}, FoldDirection::mountain);
     };
     if (s.front)
         panels(y0, false, "FL", "FR");

@@ -11,6 +11,7 @@ struct ParallelSection {
     double backdrop = 30.0; ///< b (mm)
     double height = 30.0;   ///< c (mm)
     double overhang = 0.0;  ///< the top reaches this far beyond each side (mm)
+    int panel_pairs = 1;    ///< end panel pairs per end, strips stacked up the end
     bool front = true;
     bool back = true;
 };

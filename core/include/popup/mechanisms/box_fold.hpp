@@ -13,6 +13,7 @@ struct BoxFoldParams : Placement1D {
     double depth_ground = 30.0;   ///< g = t_g (mm)
     double depth_backdrop = 30.0; ///< b = t_b (mm)
     double height = 30.0;         ///< c = l = r (mm)
+    int panel_pairs = 1;          ///< (FL, FR) and (BL, BR) pairs per end, stacked strips
     bool front = true;            ///< FL, FR (without front and back the box shears)
     bool back = true;             ///< BL, BR
 };
