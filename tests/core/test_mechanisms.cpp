@@ -6,6 +6,8 @@
 #include "popup/check_validity.hpp"
 #include "popup/mechanisms/box_fold.hpp"
 #include "popup/mechanisms/floating_layer.hpp"
+#include "popup/mechanisms/horizontal_translation.hpp"
+#include "popup/mechanisms/rotation_arm.hpp"
 #include "popup/mechanisms/step_fold.hpp"
 #include "popup/mechanisms/tent_fold.hpp"
 #include "popup/mechanisms/v_box_fold.hpp"
@@ -196,6 +198,30 @@ TEST(MechanismParameters, BadValuesAreNamedAndLeaveTheScaffoldAlone)
                 return add_floating_layer(s, host, p);
             },
             "Support");
+        expect_error(
+            [&](Scaffold& s) {
+                RotationArmParams p;
+                p.offset = 40;
+                p.spine = bad;
+                return add_rotation_arm(s, host, p);
+            },
+            "Spine");
+        expect_error(
+            [&](Scaffold& s) {
+                HorizontalTranslationParams p;
+                p.offset = 40;
+                p.reach = bad;
+                return add_horizontal_translation(s, host, p);
+            },
+            "Reach");
+        expect_error(
+            [&](Scaffold& s) {
+                VBoxFoldParams p;
+                p.offset = 40;
+                p.height = bad;
+                return add_vertical_translation(s, host, p);
+            },
+            "Height");
     }
     // Inconsistent: slopes too short to meet.
     expect_error(
