@@ -21,10 +21,7 @@ using namespace popup;
 namespace {
 Scaffold card(double width = 300, double depth = 140)
 {
-    CardParams p;
-    p.width = width;
-    p.depth = depth;
-    return make_card(p).value;
+    return fixtures::generator_card(width, depth);
 }
 
 // World position of a design-state point of a patch over a 0..180° sweep, against `expected`.

@@ -20,10 +20,7 @@ using namespace popup;
 namespace {
 Scaffold card(double width = 240, double depth = 140)
 {
-    CardParams p;
-    p.width = width;
-    p.depth = depth;
-    return make_card(p).value;
+    return fixtures::generator_card(width, depth);
 }
 
 std::string first_message(const ValidityReport& r)

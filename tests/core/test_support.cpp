@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "popup/card.hpp"
+
 namespace popup::fixtures {
 
 namespace {
@@ -49,6 +51,14 @@ Scaffold make_card_at(double width, double depth, double theta)
     for (Patch& p : s.patches)
         p.derive_frame();
     return s;
+}
+
+Scaffold generator_card(double width, double depth)
+{
+    CardParams p;
+    p.width = width;
+    p.depth = depth;
+    return popup::make_card(p).value;
 }
 
 int next_patch_id(const Scaffold& s)

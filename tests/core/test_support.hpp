@@ -20,6 +20,9 @@ Scaffold make_card(double width = 200.0, double depth = 140.0);
 /// The same card built open at fold angle `theta` (radians): its design angle.
 Scaffold make_card_at(double width, double depth, double theta);
 
+/// The core's own card (popup::make_card) for the mechanism generators: base pair "central fold".
+Scaffold generator_card(double width, double depth = 140.0);
+
 /// Next free patch id.
 int next_patch_id(const Scaffold& scaffold);
 

@@ -10,7 +10,7 @@ import time
 import FreeCAD
 
 from popupwb import assembly
-from popupwb.features.property_adder import property_adder
+from popupwb.features.property_adder import add_validity_outputs, property_adder
 from popupwb.stateless_proxy import StatelessProxy
 
 TYPE = assembly.CARD_TYPE
@@ -71,20 +71,8 @@ class PopUpCard(StatelessProxy):
         add("App::PropertyAngle", "FoldAngle", "Opening angle of the card, 0° to 180°", 180.0)
         add("App::PropertyLength", "PaperThickness", "Paper thickness", 0.2)
         add("App::PropertyBool", "Thickened", "Show the patches as solids of PaperThickness", False)
-        add(
-            "App::PropertyStringList",
-            "Diagnostics",
-            "Findings of the last validity check (code: message [subject])",
-            mode=1,
-            output=True,
-        )
-        add(
-            "App::PropertyBool",
-            "Valid",
-            "True when the last validity check passed; reset when the design changes",
-            False,
-            mode=1,
-            output=True,
+        add_validity_outputs(
+            add, "True when the last validity check passed; reset when the design changes"
         )
         add(
             "App::PropertyString",

@@ -19,3 +19,15 @@ def property_adder(obj, group):
             obj.setPropertyStatus(name, "Output")
 
     return add
+
+
+def add_validity_outputs(add, valid_doc):
+    """The read-only Diagnostics and Valid properties the validity check writes."""
+    add(
+        "App::PropertyStringList",
+        "Diagnostics",
+        "Findings of the last validity check (code: message [subject])",
+        mode=1,
+        output=True,
+    )
+    add("App::PropertyBool", "Valid", valid_doc, False, mode=1, output=True)

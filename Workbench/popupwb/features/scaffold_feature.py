@@ -15,7 +15,7 @@ import FreeCAD
 import Part
 
 from popupwb.core import popupcore
-from popupwb.features.property_adder import property_adder
+from popupwb.features.property_adder import add_validity_outputs, property_adder
 from popupwb.stateless_proxy import StatelessProxy
 
 TYPE = "PopUp::Scaffold"
@@ -104,20 +104,8 @@ class ScaffoldFeature(StatelessProxy):
             0.2,
         )
         add("App::PropertyBool", "Thickened", "Show the patches as solids of PaperThickness", False)
-        add(
-            "App::PropertyStringList",
-            "Diagnostics",
-            "Findings of the last validity check (code: message [subject])",
-            mode=1,
-            output=True,
-        )
-        add(
-            "App::PropertyBool",
-            "Valid",
-            "True when the last validity check passed; reset when DesignFile changes",
-            False,
-            mode=1,
-            output=True,
+        add_validity_outputs(
+            add, "True when the last validity check passed; reset when DesignFile changes"
         )
         add("App::PropertyString", "Version", "Version of this object's properties", VERSION, 1)
 
