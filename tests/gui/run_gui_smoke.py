@@ -189,8 +189,13 @@ def mechanisms():
     v_fold.Offset = box.Offset.Value + box.Width.Value + 2.0
     doc.recompute()
     Gui.runCommand("PopUp_CheckValidity")
-    wait_until(lambda: False, 200)  # deferred colouring
     red = OFFENDING + (0.0,)
+
+    def is_red(c):
+        return tuple(round(x, 3) for x in c) == tuple(round(x, 3) for x in red)
+
+    # Colouring is deferred to the event loop: wait for it rather than for a fixed time.
+    wait_until(lambda: any(is_red(c) for o in objects for c in o.ViewObject.DiffuseColor), 10000)
     out["red_faces"] = {
         o.Name: sum(1 for c in o.ViewObject.DiffuseColor if tuple(round(x, 3) for x in c)
                     == tuple(round(x, 3) for x in red))
@@ -199,26 +204,27 @@ def mechanisms():
     out["invalid_found"] = card.Valid is False
     v_fold.Offset = 25.0
     doc.recompute()
-    wait_until(lambda: False, 200)
-    out["red_cleared"] = not any(
-        tuple(round(x, 3) for x in c) == tuple(round(x, 3) for x in red)
-        for c in card.ViewObject.DiffuseColor
+    # Colours are applied from the event loop: wait for them rather than for a fixed time.
+    out["red_cleared"] = wait_until(
+        lambda: not any(
+            tuple(round(x, 3) for x in c) == tuple(round(x, 3) for x in red)
+            for c in card.ViewObject.DiffuseColor
+        ),
+        10000,
     )
 
     # The animation: timer-driven, the GUI keeps running, the angle comes back.
     animate.STEP_MS = 5
     Gui.Selection.clearSelection()
     Gui.Selection.addSelection(card)
-    seen = set()
     Gui.runCommand("PopUp_Animate")
     player = animate._player
     out["animation_started"] = player is not None and player.running()
-    finished = wait_until(
-        lambda: seen.add(round(card.FoldAngle.Value)) or not player.running(), 120000
-    )
+    finished = wait_until(lambda: not player.running(), 120000)
     out["animation_finished"] = finished
     out["animation_frames"] = player.frames if player else 0
-    out["animation_reached_zero"] = 0 in seen
+    # Several timer ticks can pass in one event-loop turn: the player remembers its lowest angle.
+    out["animation_reached_zero"] = player is not None and player.lowest == 0.0
     out["fold_angle_restored"] = card.FoldAngle.Value == 100.0
 
     # The panel's OK was one undo step: undoing it brings the old Foot back.

@@ -38,6 +38,7 @@ class Player:
         self.angles = list(angles)
         self.original = card.FoldAngle.Value
         self.frames = 0
+        self.lowest = self.original  # the smallest angle shown so far
         self.timer = QtCore.QTimer()
         self.timer.setInterval(interval_ms)
         self.timer.timeout.connect(self.step)
@@ -53,9 +54,11 @@ class Player:
             if not self.angles:
                 self.stop()
                 return
-            self.card.FoldAngle = self.angles.pop(0)
+            angle = self.angles.pop(0)
+            self.card.FoldAngle = angle
             self.card.Document.recompute()
             self.frames += 1
+            self.lowest = min(self.lowest, angle)
         except Exception as error:  # deleted card, closed document: stop instead of looping
             FreeCAD.Console.PrintError(f"{COMMAND_ID}: stopped: {error}\n")
             self.timer.stop()

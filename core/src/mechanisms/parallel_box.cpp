@@ -28,6 +28,9 @@ void build_parallel_box(MechanismBuilder& m, double y0, double y1, const Paralle
     m.hinge(host.backdrop, C, {0, y0, 0}, {0, y1, 0});
     m.hinge(C, TG, {0, y0, c}, {0, y1, c});
     m.hinge(C, TB, {0, y0, c}, {0, y1, c});
+    // The top crease itself: redundant for the motion (C holds both halves on that line), but it
+    // is what makes L, TG, TB and R one strip of paper.
+    m.hinge(TG, TB, {0, y0, c}, {0, y1, c}, FoldDirection::valley);
     m.hinge(L, TG, {g, y0, c}, {g, y1, c});
     m.hinge(R, TB, {-b, y0, c}, {-b, y1, c});
     // End panels: flat at the design state, their crease must pop outward (a mountain seen from
