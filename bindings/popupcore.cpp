@@ -14,6 +14,7 @@
 #include "popup/brep_export.hpp"
 #include "popup/check_validity.hpp"
 #include "popup/design_file.hpp"
+#include "popup/pieces.hpp"
 #include "popup/simulate_fold.hpp"
 
 namespace py = pybind11;
@@ -145,7 +146,9 @@ PYBIND11_MODULE(popupcore, m)
         .def_property_readonly("from_point", [](const Hinge& h) { return Vec3(h.from); })
         .def_property_readonly("to_point", [](const Hinge& h) { return Vec3(h.to); })
         .def_property_readonly("direction",
-                               [](const Hinge& h) { return std::string(to_string(h.direction)); });
+                               [](const Hinge& h) { return std::string(to_string(h.direction)); })
+        .def_property_readonly("kind",
+                               [](const Hinge& h) { return std::string(to_string(h.kind)); });
 
     py::class_<Scaffold>(m, "Scaffold")
         .def_readonly("name", &Scaffold::name)
@@ -180,6 +183,8 @@ PYBIND11_MODULE(popupcore, m)
         "load_scaffold", [](const std::string& p) { return unwrap(load_scaffold(p)); },
         py::arg("path"), "Reads a JSON design file; raises DesignError naming the field.");
     m.def("scaffold_to_json", &scaffold_to_json, py::arg("scaffold"));
+    m.def("cut_pieces", &cut_pieces, py::arg("scaffold"),
+          "Patch ids of each sheet of paper: patches joined by folds, apart at tab joints.");
     m.def("save_scaffold", &save_scaffold, py::arg("scaffold"), py::arg("path"));
 
     py::class_<FoldState>(m, "FoldState")

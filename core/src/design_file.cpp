@@ -160,6 +160,13 @@ Scaffold read_scaffold(const json& j)
                     throw FieldError{path + ".fold",
                                      "must be \"valley\", \"mountain\" or \"unspecified\""};
             }
+            if (hj.contains("joint")) {
+                const json& k = hj["joint"];
+                if (k == "tab")
+                    h.kind = JointKind::tab;
+                else if (k != "fold")
+                    throw FieldError{path + ".joint", "must be \"fold\" or \"tab\""};
+            }
             s.hinges.push_back(h);
         }
     }
@@ -260,7 +267,8 @@ std::string scaffold_to_json(const Scaffold& s)
                                {"patches", {h.patch_a, h.patch_b}},
                                {"from", write_point(h.from)},
                                {"to", write_point(h.to)},
-                               {"fold", to_string(h.direction)}});
+                               {"fold", to_string(h.direction)},
+                               {"joint", to_string(h.kind)}});
     if (!s.slits.empty()) {
         j["slits"] = json::array();
         for (const Slit& sl : s.slits)

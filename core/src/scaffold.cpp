@@ -21,6 +21,11 @@ const char* to_string(FoldDirection direction)
     }
 }
 
+const char* to_string(JointKind kind)
+{
+    return kind == JointKind::tab ? "tab" : "fold";
+}
+
 const Patch* Scaffold::find_patch(int id) const
 {
     const int i = patch_index(id);

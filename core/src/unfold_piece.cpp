@@ -32,7 +32,7 @@ std::string name_of(const Patch& p)
     return "patch " + std::to_string(p.id) + (p.name.empty() ? "" : " (" + p.name + ")");
 }
 
-}  // namespace
+} // namespace
 
 Result<FlatPiece> unfold_piece(const Scaffold& input, const std::vector<int>& piece)
 {
@@ -57,7 +57,7 @@ Result<FlatPiece> unfold_piece(const Scaffold& input, const std::vector<int>& pi
         }
     std::vector<const Hinge*> folds;
     for (const Hinge& h : s.hinges)
-        if (members.count(h.patch_a) && members.count(h.patch_b))
+        if (h.kind == JointKind::fold && members.count(h.patch_a) && members.count(h.patch_b))
             folds.push_back(&h);
 
     // Breadth-first from the root: each patch turns about its fold with an unfolded parent.
@@ -153,4 +153,4 @@ Result<FlatPiece> unfold_piece(const Scaffold& input, const std::vector<int>& pi
     return r;
 }
 
-}  // namespace popup
+} // namespace popup

@@ -2,10 +2,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 
 #include "popup/card.hpp"
 #include "popup/mechanisms/box_fold.hpp"
+#include "popup/mechanisms/horizontal_translation.hpp"
+#include "popup/mechanisms/rotation_arm.hpp"
 #include "popup/mechanisms/tent_fold.hpp"
+#include "popup/mechanisms/v_box_fold.hpp"
+#include "popup/pieces.hpp"
 #include "popup/unfold_piece.hpp"
 #include "test_support.hpp"
 
@@ -45,7 +50,7 @@ void expect_rigid(const Scaffold& s, const FlatPiece& flat)
         }
     }
 }
-}  // namespace
+} // namespace
 
 TEST(UnfoldPiece, TentSlopesLieSideBySide)
 {
@@ -55,7 +60,7 @@ TEST(UnfoldPiece, TentSlopesLieSideBySide)
     p.width = 60;
     p.foot = 30;
     p.foot_backdrop = 20;
-    p.slope = 40;  // backdrop slope 50
+    p.slope = 40; // backdrop slope 50
     const auto tent = add_tent_fold(s, central_fold(s), p);
     ASSERT_TRUE(tent.ok);
     const Result<FlatPiece> flat = unfold_piece(s, tent.value.patches);
@@ -81,7 +86,7 @@ TEST(UnfoldPiece, BoxSectionBecomesOneStrip)
     p.height = 25;
     const auto box = add_box_fold(s, central_fold(s), p);
     ASSERT_TRUE(box.ok);
-    const auto& ids = box.value.patches;  // C, L, R, TG, TB, ...
+    const auto& ids = box.value.patches; // C, L, R, TG, TB, ...
     // The strip L, TG, TB, R (C is a separate piece glued along the top crease).
     const Result<FlatPiece> flat =
         unfold_piece(s, std::vector<int>{ids[1], ids[3], ids[4], ids[2]});
@@ -95,17 +100,19 @@ TEST(UnfoldPiece, BoxSectionBecomesOneStrip)
 
 TEST(UnfoldPiece, ALoopThatCannotLieFlatIsNamed)
 {
-    // Ground, backdrop and a tent form a closed loop: cut from one sheet, the slopes would have
-    // to stretch (their apex edges land 20 mm apart).
+    // Ground, backdrop and a tent form a closed loop: cut from one sheet (every joint a fold
+    // instead of the generator's glue tabs) the slopes would have to stretch: their apex edges
+    // land 20 mm apart.
     Scaffold s = fixtures::generator_card(240);
     TentFoldParams p;
     p.offset = 40;
     p.width = 60;
     const auto tent = add_tent_fold(s, central_fold(s), p);
     ASSERT_TRUE(tent.ok);
-    const Result<FlatPiece> flat =
-        unfold_piece(s, std::vector<int>{s.ground, s.backdrop, tent.value.patches[0],
-                                         tent.value.patches[1]});
+    for (Hinge& h : s.hinges)
+        h.kind = JointKind::fold;
+    const Result<FlatPiece> flat = unfold_piece(
+        s, std::vector<int>{s.ground, s.backdrop, tent.value.patches[0], tent.value.patches[1]});
     EXPECT_FALSE(flat.ok);
     EXPECT_EQ(flat.diagnostics.front().code, "not_developable");
     EXPECT_NE(flat.diagnostics.front().message.find("20 mm"), std::string::npos)
@@ -124,4 +131,55 @@ TEST(UnfoldPiece, DisconnectedPatchesAreNamed)
     EXPECT_FALSE(flat.ok);
     EXPECT_EQ(flat.diagnostics.front().code, "disconnected_piece");
     EXPECT_FALSE(unfold_piece(s, std::vector<int>{}).ok);
+}
+
+TEST(CutPieces, EveryMechanismIsMadeOfPiecesThatLieFlat)
+{
+    // The demo card's mechanisms and the motion mechanisms, each on a card of its own.
+    struct Case {
+        const char* name;
+        size_t pieces; ///< including the card
+        std::function<bool(Scaffold&)> add;
+    };
+    const std::vector<Case> cases{
+        {"tent", 2,
+         [](Scaffold& s) { return add_tent_fold(s, central_fold(s), TentFoldParams{}).ok; }},
+        {"box", 5, // card, strip L-TG-TB-R, backbone C, front panels, back panels
+         [](Scaffold& s) {
+             BoxFoldParams p;
+             p.offset = 60;
+             p.width = 80;
+             return add_box_fold(s, central_fold(s), p).ok;
+         }},
+        {"v-box", 2,
+         [](Scaffold& s) {
+             VBoxFoldParams p;
+             p.offset = 60;
+             return add_v_box_fold(s, central_fold(s), p).ok;
+         }},
+        {"horizontal translation", 3, // card, step, M
+         [](Scaffold& s) {
+             HorizontalTranslationParams p;
+             p.offset = 60;
+             return add_horizontal_translation(s, central_fold(s), p).ok;
+         }},
+        {"rotation arm", 2,
+         [](Scaffold& s) {
+             RotationArmParams p;
+             p.offset = 60;
+             return add_rotation_arm(s, central_fold(s), p).ok;
+         }},
+    };
+    for (const Case& c : cases) {
+        Scaffold s = fixtures::generator_card(240);
+        ASSERT_TRUE(c.add(s)) << c.name;
+        const auto pieces = cut_pieces(s);
+        EXPECT_EQ(pieces.size(), c.pieces) << c.name;
+        EXPECT_EQ(pieces.front().front(), s.ground) << c.name;
+        for (const auto& piece : pieces) {
+            const Result<FlatPiece> flat = unfold_piece(s, piece);
+            EXPECT_TRUE(flat.ok) << c.name << ": "
+                                 << (flat.diagnostics.empty() ? "" : flat.diagnostics[0].message);
+        }
+    }
 }

@@ -14,6 +14,12 @@ enum class FoldDirection { unspecified, valley, mountain };
 
 const char* to_string(FoldDirection direction);
 
+/// A fold is a crease inside one sheet of paper; a tab joint is where two sheets meet, joined by
+/// a glue tab along the hinge. They move alike; the cutting sheets tell them apart.
+enum class JointKind { fold, tab };
+
+const char* to_string(JointKind kind);
+
 /// A fold: a segment lying on the boundary or inside of both patches.
 struct Hinge {
     int id = 0;
@@ -22,6 +28,7 @@ struct Hinge {
     Vec3 from = Vec3::Zero(); ///< design-state world coordinates (mm)
     Vec3 to = Vec3::Zero();
     FoldDirection direction = FoldDirection::unspecified;
+    JointKind kind = JointKind::fold;
 };
 
 /// Two patches rigidly joined (a glue tab): they move as one body.

@@ -56,7 +56,7 @@ Result<MechanismParts> add_horizontal_translation(Scaffold& scaffold, const Base
     const int M = m.patch({{0, y0, 0}, {p.reach, y0, 0}, {p.reach, y1, 0}, {0, y1, 0}},
                           PatchRole::other, "M");
     // Flat on the ground at the design state; it lifts with the nose.
-    m.hinge(host.ground, M, {0, y0, 0}, {0, y1, 0}, FoldDirection::valley);
+    m.tab(host.ground, M, {0, y0, 0}, {0, y1, 0}, FoldDirection::valley);
     m.sweeps(y0, y1);
     Result<MechanismParts> added = m.finish();
     if (!added.ok) {

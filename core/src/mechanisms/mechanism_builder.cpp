@@ -38,6 +38,13 @@ void MechanismBuilder::hinge(int a, int b, const Vec3& local_from, const Vec3& l
     scaffold_.hinges.push_back({id, a, b, world(local_from), world(local_to), direction});
 }
 
+void MechanismBuilder::tab(int a, int b, const Vec3& local_from, const Vec3& local_to,
+                           FoldDirection direction)
+{
+    hinge(a, b, local_from, local_to, direction);
+    scaffold_.hinges.back().kind = JointKind::tab;
+}
+
 void MechanismBuilder::glue(int a, int b)
 {
     scaffold_.glue.push_back({a, b});

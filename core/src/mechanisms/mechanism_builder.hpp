@@ -16,6 +16,9 @@ public:
     int patch(const std::vector<Vec3>& local, PatchRole role, const std::string& part);
     void hinge(int a, int b, const Vec3& local_from, const Vec3& local_to,
                FoldDirection direction = FoldDirection::unspecified);
+    /// A hinge where the two patches are on different sheets, joined by a glue tab.
+    void tab(int a, int b, const Vec3& local_from, const Vec3& local_to,
+             FoldDirection direction = FoldDirection::unspecified);
     void glue(int a, int b);
     Vec3 world(const Vec3& local) const { return host_.to_world(local.x(), local.y(), local.z()); }
     void offer(const BasePatchPair& pair) { parts_.offered.push_back(pair); }

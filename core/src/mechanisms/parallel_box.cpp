@@ -22,12 +22,12 @@ void build_parallel_box(MechanismBuilder& m, double y0, double y1, const Paralle
         m.patch({{0, y0, c}, {og, y0, c}, {og, y1, c}, {0, y1, c}}, PatchRole::top, "TG");
     const int TB =
         m.patch({{-ob, y0, c}, {0, y0, c}, {0, y1, c}, {-ob, y1, c}}, PatchRole::top, "TB");
-    m.hinge(host.ground, L, {g, y0, 0}, {g, y1, 0});
-    m.hinge(host.backdrop, R, {-b, y0, 0}, {-b, y1, 0});
-    m.hinge(host.ground, C, {0, y0, 0}, {0, y1, 0});
-    m.hinge(host.backdrop, C, {0, y0, 0}, {0, y1, 0});
-    m.hinge(C, TG, {0, y0, c}, {0, y1, c});
-    m.hinge(C, TB, {0, y0, c}, {0, y1, c});
+    m.tab(host.ground, L, {g, y0, 0}, {g, y1, 0});
+    m.tab(host.backdrop, R, {-b, y0, 0}, {-b, y1, 0});
+    m.tab(host.ground, C, {0, y0, 0}, {0, y1, 0});
+    m.tab(host.backdrop, C, {0, y0, 0}, {0, y1, 0});
+    m.tab(C, TG, {0, y0, c}, {0, y1, c});
+    m.tab(C, TB, {0, y0, c}, {0, y1, c});
     // The top crease itself: redundant for the motion (C holds both halves on that line), but it
     // is what makes L, TG, TB and R one strip of paper.
     m.hinge(TG, TB, {0, y0, c}, {0, y1, c}, FoldDirection::valley);
@@ -52,8 +52,8 @@ void build_parallel_box(MechanismBuilder& m, double y0, double y1, const Paralle
             const PatchRole role = outward_is_plus ? PatchRole::back : PatchRole::front;
             const int pl = m.patch(l, role, left + suffix);
             const int pr = m.patch(rr, role, right + suffix);
-            m.hinge(L, pl, {g, y, z0}, {g, y, z1});
-            m.hinge(R, pr, {-b, y, z0}, {-b, y, z1});
+            m.tab(L, pl, {g, y, z0}, {g, y, z1});
+            m.tab(R, pr, {-b, y, z0}, {-b, y, z1});
             m.hinge(pl, pr, {0, y, z0}, {0, y, z1}, FoldDirection::mountain);
         }
     };

@@ -55,8 +55,8 @@ Result<MechanismParts> add_rotation_arm(Scaffold& scaffold, const BasePatchPair&
     // Both wings lie on the host, printed side up; R sits on the ground wing's edge S-P.
     const int wing = m.patch({O, S, P}, PatchRole::support, "wing_arm");
     const int other = m.patch({O, R, Sb}, PatchRole::support, "wing_backdrop");
-    m.hinge(host.ground, wing, O, S, FoldDirection::valley);
-    m.hinge(host.backdrop, other, O, Sb, FoldDirection::valley);
+    m.tab(host.ground, wing, O, S, FoldDirection::valley);
+    m.tab(host.backdrop, other, O, Sb, FoldDirection::valley);
     // The spine rises off the host, so the backdrop wing turns away from the arm wing's printed
     // side: a mountain (the sign of det[S, R, S'] in docs/MATH.md, Rotation).
     m.hinge(wing, other, O, R, FoldDirection::mountain);

@@ -39,8 +39,8 @@ Result<MechanismParts> add_step_fold(Scaffold& scaffold, const BasePatchPair& ho
         m.patch({at(D, y0), at(C, y0), at(C, y1), at(D, y1)}, PatchRole::top, "tread");
     // Flat on an open host the fold can pop either way: riser and tread lift toward the host's
     // printed side and the nose is a mountain (the parallelogram branch).
-    m.hinge(host.ground, riser, at(A, y0), at(A, y1), FoldDirection::valley);
-    m.hinge(host.backdrop, tread, at(D, y0), at(D, y1), FoldDirection::valley);
+    m.tab(host.ground, riser, at(A, y0), at(A, y1), FoldDirection::valley);
+    m.tab(host.backdrop, tread, at(D, y0), at(D, y1), FoldDirection::valley);
     m.hinge(riser, tread, at(C, y0), at(C, y1), FoldDirection::mountain);
     m.sweeps(y0, y1); // it moves only across the hinge
     return m.finish();

@@ -70,8 +70,8 @@ Result<MechanismParts> add_tent_fold(Scaffold& scaffold, const BasePatchPair& ho
         m.patch({at(A, y0), at(A, y1), at(C, y1), at(C, y0)}, PatchRole::support, "slope_ground");
     const int slope_b =
         m.patch({at(C, y0), at(C, y1), at(D, y1), at(D, y0)}, PatchRole::support, "slope_backdrop");
-    m.hinge(host.ground, slope_g, at(A, y0), at(A, y1));
-    m.hinge(host.backdrop, slope_b, at(D, y0), at(D, y1));
+    m.tab(host.ground, slope_g, at(A, y0), at(A, y1));
+    m.tab(host.backdrop, slope_b, at(D, y0), at(D, y1));
     m.hinge(slope_g, slope_b, at(C, y0), at(C, y1));
     m.sweeps(y0, y1); // it moves only across the hinge
     return m.finish();

@@ -67,11 +67,11 @@ Result<MechanismParts> add_v_box_fold(Scaffold& scaffold, const BasePatchPair& h
     const int FR = m.patch({Sb, F, up(F), up(Sb)}, PatchRole::front, "FR");
     const int TG = m.patch({up(F), up(Sg), up(Bk)}, PatchRole::top, "TG");
     const int TB = m.patch({up(F), up(Bk), up(Sb)}, PatchRole::top, "TB");
-    m.hinge(host.ground, FL, F, Sg);
-    m.hinge(host.backdrop, FR, F, Sb);
+    m.tab(host.ground, FL, F, Sg);
+    m.tab(host.backdrop, FR, F, Sb);
     m.hinge(FL, FR, F, up(F));
     m.hinge(FL, TG, up(F), up(Sg));
-    m.hinge(FR, TB, up(F), up(Sb));
+    m.tab(FR, TB, up(F), up(Sb));
     // Flat at the design state: the top creases down into the box (the lower of two branches
     // the simulator finds; both close to the same footprint).
     m.hinge(TG, TB, up(F), up(Bk), FoldDirection::valley);
@@ -80,7 +80,7 @@ Result<MechanismParts> add_v_box_fold(Scaffold& scaffold, const BasePatchPair& h
         const int BL = m.patch({Sg, Bk, up(Bk), up(Sg)}, PatchRole::back, "BL");
         const int BR = m.patch({Bk, Sb, up(Sb), up(Bk)}, PatchRole::back, "BR");
         m.hinge(FL, BL, Sg, up(Sg));
-        m.hinge(FR, BR, Sb, up(Sb));
+        m.tab(FR, BR, Sb, up(Sb));
         m.hinge(BL, BR, Bk, up(Bk));
     }
     // The front corner leans out of the front when closing.

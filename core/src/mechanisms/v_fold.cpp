@@ -106,8 +106,8 @@ Result<MechanismParts> add_v_fold(Scaffold& scaffold, const BasePatchPair& host,
     MechanismBuilder m(scaffold, host, name);
     const int wing_g = m.patch({O, A, P}, PatchRole::support, "wing_ground");
     const int wing_b = m.patch({O, P, B}, PatchRole::support, "wing_backdrop");
-    m.hinge(host.ground, wing_g, O, A);
-    m.hinge(host.backdrop, wing_b, O, B);
+    m.tab(host.ground, wing_g, O, A);
+    m.tab(host.backdrop, wing_b, O, B);
     m.hinge(wing_g, wing_b, O, P);
     // P travels along the hinge as the host closes: sample its closed form for the sweep.
     double lo = std::min({0.0, along, P.y() - p.offset}),
