@@ -96,23 +96,6 @@ void FoldSolver::drive_base(double theta, Configuration& q) const
     q[graph_.backdrop] = {b.rotation, b.apply(graph_.center[graph_.backdrop])};
 }
 
-double FoldSolver::residual(int c, const Configuration& q) const
-{
-    double worst = 0.0;
-    for (int j : graph_.component_joints[c]) {
-        const Joint& joint = graph_.joints[j];
-        for (const Vec3& x : joint.ends)
-            worst = std::max(worst, (place(q[joint.body_a], graph_.center[joint.body_a], x) -
-                                     place(q[joint.body_b], graph_.center[joint.body_b], x))
-                                        .norm());
-    }
-    for (int k : graph_.component_slits[c])
-        for (int e = 0; e < 2; ++e)
-            worst =
-                std::max(worst, std::abs(slit_row(graph_.slits[k], e, q, graph_, size_).distance));
-    return worst;
-}
-
 void FoldSolver::constraint_system(int c, const Configuration& q, Eigen::VectorXd& r,
                                    Eigen::MatrixXd& J) const
 {

@@ -35,8 +35,6 @@ public:
     Configuration design_configuration() const;
     void drive_base(double theta, Configuration& q) const;
 
-    /// Largest hinge end mismatch (mm) over the joints of component c.
-    double residual(int c, const Configuration& q) const;
     /// Newton-corrects the bodies of component c at the base state already in q. With hints,
     /// first settles on the hinted side of each flat fold, then corrects without them.
     /// `to_round_off` keeps iterating past the tolerance while the residual still drops.

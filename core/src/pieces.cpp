@@ -31,4 +31,4 @@ std::vector<std::vector<int>> cut_pieces(const Scaffold& s)
     return pieces;
 }
 
-}  // namespace popup
+} // namespace popup

@@ -10,4 +10,4 @@ namespace popup {
 /// piece; pieces ordered by their first patch (the card first).
 std::vector<std::vector<int>> cut_pieces(const Scaffold& scaffold);
 
-}  // namespace popup
+} // namespace popup

@@ -43,28 +43,22 @@ Result<MechanismParts> add_horizontal_translation(Scaffold& scaffold, const Base
         r.ok = false;
         return r;
     }
-    // The step fold, then M lying on the ground from the hinge to P through the nose line; if
-    // any part does not fit, the scaffold is put back as it was.
-    const size_t patches = scaffold.patches.size(), hinges = scaffold.hinges.size(),
-                 glue = scaffold.glue.size();
+    // The step fold, then M lying on the ground from the hinge to P through the nose line. The
+    // builder starts first, so a failed check takes the step fold out again too.
+    MechanismBuilder m(scaffold, host, name);
     Result<MechanismParts> step = add_step_fold(scaffold, host, p, name);
     if (!step.ok)
         return step;
     MechanismParts parts = step.value;
     const double y0 = p.offset, y1 = p.offset + p.width, a = p.run_ground, b = p.run_backdrop;
-    MechanismBuilder m(scaffold, host, name);
     const int M = m.patch({{0, y0, 0}, {p.reach, y0, 0}, {p.reach, y1, 0}, {0, y1, 0}},
                           PatchRole::other, "M");
     // Flat on the ground at the design state; it lifts with the nose.
     m.tab(host.ground, M, {0, y0, 0}, {0, y1, 0}, FoldDirection::valley);
     m.sweeps(y0, y1);
     Result<MechanismParts> added = m.finish();
-    if (!added.ok) {
-        scaffold.patches.resize(patches);
-        scaffold.hinges.resize(hinges);
-        scaffold.glue.resize(glue);
+    if (!added.ok)
         return added;
-    }
     Slit slit;
     slit.patch_cut = parts.patches[0]; // the riser; the slit runs along its nose edge
     slit.patch_through = M;
