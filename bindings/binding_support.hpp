@@ -33,3 +33,4 @@ template <class T> T unwrap(Result<T> r)
 } // namespace popup::bindings
 
 void bind_mechanisms(pybind11::module_& m);
+void bind_sheets(pybind11::module_& m);

@@ -163,7 +163,7 @@ TEST(CutPieces, EveryMechanismIsMadeOfPiecesThatLieFlat)
              p.offset = 60;
              return add_horizontal_translation(s, central_fold(s), p).ok;
          }},
-        {"rotation arm", 2,
+        {"rotation arm", 3, // card, arm wing, backdrop wing glued on along the spine
          [](Scaffold& s) {
              RotationArmParams p;
              p.offset = 60;

@@ -21,6 +21,12 @@ struct Pose {
     }
 };
 
+/// The rigid motion that undoes p.
+inline Pose inverse(const Pose& p)
+{
+    return {p.rotation.transpose(), -(p.rotation.transpose() * p.translation)};
+}
+
 /// Rotation by `angle` (radians) about the unit axis `axis` (Rodrigues).
 Mat3 axis_angle(const Vec3& axis, double angle);
 

@@ -31,8 +31,15 @@ void build_parallel_box(MechanismBuilder& m, double y0, double y1, const Paralle
     // The top crease itself: redundant for the motion (C holds both halves on that line), but it
     // is what makes L, TG, TB and R one strip of paper.
     m.hinge(TG, TB, {0, y0, c}, {0, y1, c}, FoldDirection::valley);
-    m.hinge(L, TG, {g, y0, c}, {g, y1, c});
-    m.hinge(R, TB, {-b, y0, c}, {-b, y1, c});
+    if (s.overhang > 0) {
+        // The top reaches past the legs: their creases cross its paper, so the legs are sheets
+        // of their own, glued under it.
+        m.tab(L, TG, {g, y0, c}, {g, y1, c});
+        m.tab(R, TB, {-b, y0, c}, {-b, y1, c});
+    } else {
+        m.hinge(L, TG, {g, y0, c}, {g, y1, c});
+        m.hinge(R, TB, {-b, y0, c}, {-b, y1, c});
+    }
     // End panels: flat at the design state, their crease must pop outward (a mountain seen from
     // the outside) or it would run into the other end.
     // Several pairs per end are strips stacked up the end: their creases share one line and

@@ -58,8 +58,9 @@ Result<MechanismParts> add_rotation_arm(Scaffold& scaffold, const BasePatchPair&
     m.tab(host.ground, wing, O, S, FoldDirection::valley);
     m.tab(host.backdrop, other, O, Sb, FoldDirection::valley);
     // The spine rises off the host, so the backdrop wing turns away from the arm wing's printed
-    // side: a mountain (the sign of det[S, R, S'] in docs/MATH.md, Rotation).
-    m.hinge(wing, other, O, R, FoldDirection::mountain);
+    // side: a mountain (the sign of det[S, R, S'] in docs/MATH.md, Rotation). The spine crosses
+    // the arm wing's paper, so the backdrop wing is a sheet of its own, glued on along it.
+    m.tab(wing, other, O, R, FoldDirection::mountain);
     double lo = 0.0, hi = l;
     for (int k = 0; k <= 90; ++k) {
         const double y = rotation_arm_tip(p, M_PI * k / 90).y() - y0;

@@ -1,0 +1,101 @@
+"""DXF cutting file (R2010, millimetres) of a sheet set, for laser and blade cutters and CAD.
+
+Layers (layer_style.SheetStyle): CUT holds only closed LWPOLYLINEs, one per cut loop; MOUNTAIN and
+VALLEY one LINE per fold; GLUE the outline of each glue area; LABEL centred TEXT. Entities take
+colour and linetype BYLAYER, so a cutter can map layers (or colours) to operations.
+"""
+
+import ezdxf
+from ezdxf.enums import TextEntityAlignment
+
+from . import read_sheet_set, sheet_file_paths
+from .layer_style import SheetStyle
+
+# All sheets share one file side by side: sheet k's origin is at x = k * (paper width + SHEET_GAP).
+SHEET_GAP = 20.0  # mm
+INSUNITS_MM = 4
+MEASUREMENT_METRIC = 1
+
+
+def write_dxf(sheet_set, path, style=None):
+    """Writes every sheet of `sheet_set` into one DXF at `path`, side by side; returns `path`."""
+    sheets = read_sheet_set(sheet_set)
+    style = style or SheetStyle()
+    doc = _new_document(style)
+    pitch = sheets.width + SHEET_GAP
+    for sheet in sheets.sheets:
+        _draw_sheet(doc.modelspace(), sheet, style, x_offset=sheet.index * pitch)
+    doc.saveas(path)
+    return path
+
+
+def write_dxf_per_sheet(sheet_set, path, style=None):
+    """Writes one DXF per sheet, each at the origin: `path` for the first sheet, then
+    <stem>-2.dxf, <stem>-3.dxf, ...; returns the paths written."""
+    sheets = read_sheet_set(sheet_set)
+    style = style or SheetStyle()
+    paths = sheet_file_paths(path, len(sheets.sheets))
+    for sheet, sheet_path in zip(sheets.sheets, paths):
+        doc = _new_document(style)
+        _draw_sheet(doc.modelspace(), sheet, style, x_offset=0.0)
+        doc.saveas(sheet_path)
+    return paths
+
+
+def _new_document(style):
+    doc = ezdxf.new("R2010", setup=True, units=INSUNITS_MM)
+    doc.header["$INSUNITS"] = INSUNITS_MM
+    doc.header["$MEASUREMENT"] = MEASUREMENT_METRIC
+    for layer in style.layers():
+        _define_linetype(doc, layer)
+        doc.layers.add(layer.name, color=layer.aci, linetype=layer.linetype)
+    return doc
+
+
+def _define_linetype(doc, layer):
+    """Gives the layer's linetype the style's dash pattern in mm, so the DXF shows the same dashes
+    as the SVG and PDF (ezdxf's standard DASHED/DASHDOT patterns are about 1 mm long). The
+    standard names are kept: viewers such as LibreCAD pick their own pattern by name."""
+    if not layer.dashes:
+        if not doc.linetypes.has_entry(layer.linetype):
+            raise ValueError(f"layer {layer.name}: DXF linetype {layer.linetype!r} is unknown")
+        return
+    pattern = [sum(layer.dashes)]
+    for position, length in enumerate(layer.dashes):
+        pattern.append(length if position % 2 == 0 else -length)
+    if doc.linetypes.has_entry(layer.linetype):
+        doc.linetypes.get(layer.linetype).setup_pattern(pattern)
+    else:
+        doc.linetypes.add(layer.linetype, pattern, description=layer.name.lower())
+
+
+def _draw_sheet(modelspace, sheet, style, x_offset):
+    def shifted(points):
+        return [(x + x_offset, y) for x, y in points]
+
+    for piece in sheet.pieces:
+        for region in piece.cut:
+            for loop in region.loops():
+                modelspace.add_lwpolyline(
+                    shifted(loop), format="xy", close=True, dxfattribs={"layer": style.cut.name}
+                )
+        for fold in piece.folds:
+            start, end = shifted((fold.start, fold.end))
+            modelspace.add_line(start, end, dxfattribs={"layer": style.fold(fold.direction).name})
+        for area in piece.glue:
+            modelspace.add_lwpolyline(
+                shifted(area.polygon),
+                format="xy",
+                close=True,
+                dxfattribs={"layer": style.glue.name},
+            )
+        for label in piece.labels:
+            (position,) = shifted((label.position,))
+            text = modelspace.add_text(
+                label.text,
+                height=label.height,
+                rotation=label.angle,
+                dxfattribs={"layer": style.label.name},
+            )
+            # MIDDLE_CENTER centres the cap height on the point, as the sheet format specifies.
+            text.set_placement(position, align=TextEntityAlignment.MIDDLE_CENTER)

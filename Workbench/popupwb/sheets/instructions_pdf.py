@@ -1,0 +1,154 @@
+"""Assembly instructions PDF (A4): the paper, the pieces on each sheet, the glue steps in order,
+the fold-line legend in the colours and dashes of the sheets, and the layout's diagnostics."""
+
+from xml.sax.saxutils import escape
+
+from reportlab.graphics.shapes import Drawing, Line
+from reportlab.lib import colors
+from reportlab.lib.pagesizes import A4
+from reportlab.lib.styles import getSampleStyleSheet
+from reportlab.lib.units import mm
+from reportlab.platypus import Paragraph, SimpleDocTemplate, Spacer, Table, TableStyle
+
+from . import read_sheet_set
+from .layer_style import SheetStyle
+
+LEGEND_LINE_LENGTH = 30.0  # mm
+FOLD_MEANING = {
+    "mountain": "Mountain fold: crease so that the line becomes a ridge, folding away from you "
+    "(seen from the printed side).",
+    "valley": "Valley fold: crease so that the line becomes a trough, folding towards you "
+    "(seen from the printed side).",
+}
+
+
+def write_instructions(sheet_set, path, style=None, compress=True):
+    """Writes the assembly instructions for `sheet_set` to the PDF `path`; returns `path`.
+    compress=False leaves the page streams readable (tests grep the text)."""
+    sheets = read_sheet_set(sheet_set)
+    style = style or SheetStyle()
+    styles = getSampleStyleSheet()
+    document = SimpleDocTemplate(
+        path,
+        pagesize=A4,
+        pageCompression=compress,
+        title="Pop-up card: cutting and assembly",
+        creator="PopUp",
+        leftMargin=20 * mm,
+        rightMargin=20 * mm,
+        topMargin=20 * mm,
+        bottomMargin=20 * mm,
+    )
+    story = [Paragraph("Pop-up card: cutting and assembly", styles["Title"])]
+    story += _paper_section(sheets)
+    story += _pieces_section(sheets, styles)
+    story += _assembly_section(sheets, styles)
+    story += _legend_section(style, styles)
+    story += _diagnostics_section(sheets, styles)
+    document.build(story)
+    return path
+
+
+def _table(rows, column_widths, header=True):
+    table = Table(rows, colWidths=[width * mm for width in column_widths], hAlign="LEFT")
+    commands = [("VALIGN", (0, 0), (-1, -1), "TOP"), ("FONTSIZE", (0, 0), (-1, -1), 10)]
+    if header:
+        commands += [
+            ("FONTNAME", (0, 0), (-1, 0), "Helvetica-Bold"),
+            ("LINEBELOW", (0, 0), (-1, 0), 0.5, colors.black),
+        ]
+    table.setStyle(TableStyle(commands))
+    return table
+
+
+def _paper_section(sheets):
+    rows = [
+        ["Paper", f"{sheets.paper_name}, {sheets.width:g} x {sheets.height:g} mm"],
+        ["Paper thickness", f"{sheets.paper_thickness:g} mm"],
+        ["Folded stack height", f"{sheets.stack_height:.2f} mm"],
+        ["Sheets", str(len(sheets.sheets))],
+        ["Pieces", str(len(sheets.pieces()))],
+        ["Total cut length", f"{sheets.cut_length:.0f} mm"],
+    ]
+    return [_table(rows, (45, 115), header=False), Spacer(1, 6 * mm)]
+
+
+def _codes(items):
+    return ", ".join(item.code for item in items) or "-"
+
+
+def _pieces_section(sheets, styles):
+    rows = [["Sheet", "Piece", "Tabs", "Glue areas"]]
+    for sheet in sheets.sheets:
+        for piece in sheet.pieces:
+            rows.append([str(sheet.index + 1), piece.id, _codes(piece.tabs), _codes(piece.glue)])
+    return [
+        Paragraph("Pieces", styles["Heading2"]),
+        Paragraph(
+            "Cut out every piece along the red lines and crease every fold line before gluing. "
+            "Tab codes match the glue areas they go on.",
+            styles["BodyText"],
+        ),
+        Spacer(1, 2 * mm),
+        _table(rows, (15, 25, 45, 45)),
+        Spacer(1, 6 * mm),
+    ]
+
+
+def _assembly_section(sheets, styles):
+    stepped = {step.piece for step in sheets.assembly}
+    bases = [piece.id for piece in sheets.pieces() if piece.id not in stepped]
+    body = styles["BodyText"]
+    rows = [["Step", "Piece", "Glue", "Instruction"]]
+    for step in sheets.assembly:
+        joins = "<br/>".join(
+            escape(f"tab {join.code} onto {join.target_piece}, {join.side}") for join in step.glue
+        )
+        rows.append(
+            [str(step.step), step.piece, Paragraph(joins, body), Paragraph(escape(step.text), body)]
+        )
+    return [
+        Paragraph("Assembly", styles["Heading2"]),
+        Paragraph(
+            escape(f"Start from {', '.join(bases)}; glue the pieces on in this order."), body
+        ),
+        Spacer(1, 2 * mm),
+        _table(rows, (12, 15, 45, 98)),
+        Spacer(1, 6 * mm),
+    ]
+
+
+def _legend_line(layer):
+    drawing = Drawing(LEGEND_LINE_LENGTH * mm, 4 * mm)
+    line = Line(0, 2 * mm, LEGEND_LINE_LENGTH * mm, 2 * mm)
+    line.strokeColor = colors.Color(*layer.unit_colour())
+    line.strokeWidth = 2 * layer.line_width * mm  # twice the sheet width, to read on screen
+    line.strokeDashArray = [length * mm for length in layer.dashes] or None
+    drawing.add(line)
+    return drawing
+
+
+def _legend_section(style, styles):
+    rows = [
+        [
+            _legend_line(style.fold(direction)),
+            Paragraph(FOLD_MEANING[direction], styles["BodyText"]),
+        ]
+        for direction in ("mountain", "valley")
+    ]
+    rows.append([_legend_line(style.cut), Paragraph("Cut line.", styles["BodyText"])])
+    return [
+        Paragraph("Line legend", styles["Heading2"]),
+        _table(rows, (35, 135), header=False),
+        Spacer(1, 6 * mm),
+    ]
+
+
+def _diagnostics_section(sheets, styles):
+    flowables = [Paragraph("Warnings", styles["Heading2"])]
+    if not sheets.diagnostics:
+        return flowables + [Paragraph("None.", styles["BodyText"])]
+    for diagnostic in sheets.diagnostics:
+        text = f"{diagnostic.severity.capitalize()} ({diagnostic.subject}): {diagnostic.message}"
+        flowables.append(Paragraph(escape(text), styles["Bullet"], bulletText="-"))
+    return flowables

@@ -1,0 +1,70 @@
+#include "clipper_ops.hpp"
+
+#include "../clipper_paths.hpp"
+
+namespace popup::sheets {
+
+namespace {
+
+ClipperLib::Paths oriented(const std::vector<Loop2>& loops)
+{
+    ClipperLib::Paths paths;
+    for (const Loop2& loop : loops) {
+        ClipperLib::Path path = to_path(loop);
+        if (!ClipperLib::Orientation(path))
+            ClipperLib::ReversePath(path);
+        paths.push_back(std::move(path));
+    }
+    return paths;
+}
+
+double total_area(const ClipperLib::Paths& paths)
+{
+    double area = 0.0;
+    for (const ClipperLib::Path& p : paths)
+        area += path_area(p);
+    return area;
+}
+
+} // namespace
+
+double overlap_area(const std::vector<Loop2>& a, const std::vector<Loop2>& b)
+{
+    ClipperLib::Clipper clipper;
+    clipper.AddPaths(oriented(a), ClipperLib::ptSubject, true);
+    clipper.AddPaths(oriented(b), ClipperLib::ptClip, true);
+    ClipperLib::Paths result;
+    clipper.Execute(ClipperLib::ctIntersection, result, ClipperLib::pftNonZero,
+                    ClipperLib::pftNonZero);
+    return total_area(result);
+}
+
+double area_outside(const Loop2& a, const Loop2& outer, const std::vector<Loop2>& holes)
+{
+    ClipperLib::Clipper region;
+    region.AddPaths(oriented({outer}), ClipperLib::ptSubject, true);
+    region.AddPaths(oriented(holes), ClipperLib::ptClip, true);
+    ClipperLib::Paths paper;
+    region.Execute(ClipperLib::ctDifference, paper, ClipperLib::pftNonZero,
+                   ClipperLib::pftNonZero);
+    ClipperLib::Clipper clipper;
+    clipper.AddPaths(oriented({a}), ClipperLib::ptSubject, true);
+    clipper.AddPaths(paper, ClipperLib::ptClip, true);
+    ClipperLib::Paths result;
+    clipper.Execute(ClipperLib::ctDifference, result, ClipperLib::pftNonZero,
+                    ClipperLib::pftNonZero);
+    return total_area(result);
+}
+
+double loop_area(const Loop2& loop)
+{
+    double twice = 0.0;
+    for (size_t i = 0, n = loop.size(); i < n; ++i) {
+        const Vec2& p = loop[i];
+        const Vec2& q = loop[(i + 1) % n];
+        twice += p.x() * q.y() - q.x() * p.y();
+    }
+    return 0.5 * twice;
+}
+
+} // namespace popup::sheets

@@ -1,0 +1,23 @@
+#pragma once
+// Mountain or valley: which way a fold bends, seen from the printed side. A fold may be flat at
+// the design state (a box's front V at 180°), so the card is sampled on its way closed too.
+#include <vector>
+
+#include "popup/scaffold.hpp"
+
+namespace popup::sheets {
+
+/// Patch poses (scaffold order) at the design state and at a few fold angles toward closed.
+struct BendSamples {
+    std::vector<std::vector<Pose>> states;
+};
+
+BendSamples sample_bends(const Scaffold& s);
+
+/// Which way patch b turns away from patch a about a hinge through `on_hinge` (design state),
+/// seen from `normal_a`, a's printed side: valley when b comes toward that side. `bent` is false
+/// when the two stay flat in every sample (then the result is a valley).
+FoldDirection bend_direction(const Scaffold& s, const BendSamples& samples, int a,
+                             const Vec3& normal_a, int b, const Vec3& on_hinge, bool& bent);
+
+} // namespace popup::sheets

@@ -1,0 +1,197 @@
+#include "glue_tabs.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "clipper_ops.hpp"
+
+namespace popup::sheets {
+
+namespace {
+
+constexpr double overlap_tolerance = 1e-4; // mm²: touching along an edge is not overlapping
+constexpr double narrowing = 0.85;         // each retry keeps this share of the width
+
+// A trapezoid standing on the segment from→to, `depth` deep toward `side` (a unit normal),
+// its sides leaning in at `angle` (radians) from the segment. The first edge is the segment.
+Loop2 trapezoid(const Vec2& from, const Vec2& to, const Vec2& side, double depth, double angle)
+{
+    const Vec2 along = unit(to - from);
+    const double lean = angle >= M_PI / 2 ? 0.0 : depth / std::tan(angle);
+    return {from, to, to + depth * side - lean * along, from + depth * side + lean * along};
+}
+
+// Unit normal to the segment pointing away from `away_from`.
+Vec2 outward(const Vec2& from, const Vec2& to, const Vec2& away_from)
+{
+    Vec2 n = left_normal(unit(to - from));
+    return n.dot(away_from - from) > 0 ? Vec2(-n) : n;
+}
+
+Vec2 mean(const Loop2& loop)
+{
+    Vec2 sum = Vec2::Zero();
+    for (const Vec2& p : loop)
+        sum += p;
+    return sum / double(loop.size());
+}
+
+std::string patch_name(const Scaffold& s, int id)
+{
+    const Patch& p = *s.find_patch(id);
+    return "patch " + std::to_string(id) + (p.name.empty() ? "" : " (" + p.name + ")");
+}
+
+} // namespace
+
+std::string tab_code(int index)
+{
+    std::string code;
+    for (int k = index + 1; k > 0; k = (k - 1) / 26)
+        code.insert(code.begin(), char('A' + (k - 1) % 26));
+    return code;
+}
+
+namespace {
+
+struct Fit {
+    Loop2 tab, area;
+    double width = 0.0;
+    bool front = true;                            ///< the tab lies on the target's printed side
+    FoldDirection crease = FoldDirection::valley; ///< seen from the carrier's printed side
+};
+
+// The widest tab from `carrier_patch` (on `carrier`) onto `target_patch` (on `target`) along the
+// joint h that overlaps nothing; width 0 when even the narrowest does.
+Fit fit_tab(const Scaffold& s, const Hinge& h, const LocalPiece& carrier, int carrier_patch,
+            const LocalPiece& target, int target_patch, const BendSamples& bends,
+            const SheetOptions& options)
+{
+    bool bent = false;
+    const bool front =
+        bend_direction(s, bends, target_patch, target.printed_normal(s, target_patch),
+                       carrier_patch, h.from, bent) == FoldDirection::valley;
+    const FoldDirection crease =
+        bend_direction(s, bends, carrier_patch, carrier.printed_normal(s, carrier_patch),
+                       target_patch, h.from, bent);
+    const double angle = options.tab_angle * M_PI / 180.0;
+    const Vec2 a = carrier.flat_point(s, carrier_patch, h.from);
+    const Vec2 b = carrier.flat_point(s, carrier_patch, h.to);
+    const Vec2 ta = target.flat_point(s, target_patch, h.from);
+    const Vec2 tb = target.flat_point(s, target_patch, h.to);
+    const Vec2 away = outward(a, b, mean(carrier.outline(carrier_patch)));
+    const Vec2 into = -outward(ta, tb, mean(target.outline(target_patch)));
+    // Keep the tab's far edge at least a tenth of the crease.
+    const double widest =
+        angle >= M_PI / 2 ? options.tab_width : 0.45 * (b - a).norm() * std::tan(angle);
+
+    std::vector<Loop2> own = carrier.flat.outlines;
+    for (const GlueTab& t : carrier.tabs)
+        own.push_back(t.polygon);
+    std::vector<Loop2> taken;
+    for (const GlueArea& g : target.glue)
+        if (g.front == front) // the paper's other face is free
+            taken.push_back(g.polygon);
+    const int slot = target.index_of.at(target_patch);
+    const Loop2& paper = target.flat.outlines[slot];
+    const std::vector<Loop2>& paper_holes = target.flat.holes[slot];
+    // A crease inside the target's paper leaves room on both sides: prefer the inner side.
+    // Tabs held back from the crease's ends clear acute corners next to them.
+    for (double width = std::min(options.tab_width, widest); width >= options.min_tab_width - 1e-9;
+         width *= narrowing)
+        for (double inset : {0.0, 0.1, 0.2})
+            for (const Vec2& side : {into, Vec2(-into)}) {
+                const Vec2 ia = a + inset * (b - a), ib = b - inset * (b - a);
+                const Vec2 ita = ta + inset * (tb - ta), itb = tb - inset * (tb - ta);
+                Fit fit{trapezoid(ia, ib, away, width, angle),
+                        trapezoid(ita, itb, side, width, angle), width, front, crease};
+                if (overlap_area({fit.tab}, own) <= overlap_tolerance &&
+                    area_outside(fit.area, paper, paper_holes) <= overlap_tolerance &&
+                    overlap_area({fit.area}, taken) <= overlap_tolerance)
+                    return fit;
+            }
+    return {};
+}
+
+// A joint along a crease that already has a tab on the same patch (a panel standing on the
+// central fold is joined to both pages along one edge): one tab holds both.
+bool already_tabbed(const Scaffold& s, const Hinge& h, const std::vector<LocalPiece>& pieces,
+                    const std::map<int, int>& position)
+{
+    for (int patch : {h.patch_a, h.patch_b}) {
+        const LocalPiece& piece = pieces[position.at(patch)];
+        const Vec2 a = piece.flat_point(s, patch, h.from), b = piece.flat_point(s, patch, h.to);
+        auto same = [&](const Vec2& p, const Vec2& q) {
+            const double tol = 1e-6 * std::max(s.size(), 1.0);
+            return std::min(std::max((p - a).norm(), (q - b).norm()),
+                            std::max((p - b).norm(), (q - a).norm())) <= tol;
+        };
+        for (const GlueTab& t : piece.tabs)
+            if (t.patch == patch && same(t.polygon[0], t.polygon[1]))
+                return true;
+        for (const GlueArea& g : piece.glue)
+            if (g.patch == patch && same(g.polygon[0], g.polygon[1]))
+                return true;
+    }
+    return false;
+}
+
+} // namespace
+
+void add_glue_tabs(const Scaffold& s, std::vector<LocalPiece>& pieces,
+                   const std::map<int, int>& position, const BendSamples& bends,
+                   const SheetOptions& options, std::vector<SheetDiagnostic>& diagnostics)
+{
+    int next_code = 0;
+    for (size_t k = 0; k < pieces.size(); ++k) {
+        for (const Hinge& h : s.hinges) {
+            if (h.kind != JointKind::tab)
+                continue;
+            const int pa = position.at(h.patch_a), pb = position.at(h.patch_b);
+            if (pa == pb || size_t(std::max(pa, pb)) != k || already_tabbed(s, h, pieces, position))
+                continue;
+            // The later piece carries the tab onto the earlier one, already in place; where it
+            // has no room (its crease inside the later piece), the earlier one carries it.
+            const int later = pa > pb ? h.patch_a : h.patch_b;
+            const int earlier = pa > pb ? h.patch_b : h.patch_a;
+            int carrier_patch = later, target_patch = earlier;
+            Fit fit = fit_tab(s, h, pieces[position.at(later)], later, pieces[position.at(earlier)],
+                              earlier, bends, options);
+            if (fit.width == 0.0) {
+                std::swap(carrier_patch, target_patch);
+                fit = fit_tab(s, h, pieces[position.at(earlier)], earlier,
+                              pieces[position.at(later)], later, bends, options);
+            }
+            const std::string subject = "hinge " + std::to_string(h.id);
+            if (fit.width == 0.0) {
+                diagnostics.push_back(
+                    {"error",
+                     {"no_room_for_tab",
+                      "no glue tab of at least " + std::to_string(options.min_tab_width) +
+                          " mm fits between " + patch_name(s, later) + " and " +
+                          patch_name(s, earlier) + ": glue them by hand",
+                      subject}});
+                continue;
+            }
+            const std::string code = tab_code(next_code++);
+            if (fit.width < options.tab_width - 1e-9) {
+                std::ostringstream m;
+                m.precision(3);
+                m << "glue tab " << code << " narrowed to " << fit.width << " mm (asked "
+                  << options.tab_width << " mm) to fit its crease and the paper around it";
+                diagnostics.push_back({"warning", {"narrow_tab", m.str(), subject}});
+            }
+            LocalPiece& carrier = pieces[position.at(carrier_patch)];
+            LocalPiece& target = pieces[position.at(target_patch)];
+            const int target_piece = position.at(target_patch);
+            carrier.tabs.push_back({code, h.id, carrier_patch, fit.tab, fit.width, target_piece,
+                                    target_patch, fit.front});
+            carrier.folds.push_back({h.id, fit.tab[0], fit.tab[1], fit.crease, JointKind::tab});
+            target.glue.push_back(
+                {code, h.id, target_patch, fit.area, position.at(carrier_patch), fit.front});
+        }
+    }
+}
+
+} // namespace popup::sheets

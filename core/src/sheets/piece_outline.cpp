@@ -1,0 +1,147 @@
+#include "piece_outline.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "../clipper_paths.hpp"
+
+namespace popup::sheets {
+
+namespace {
+
+using ClipperLib::Paths;
+
+constexpr double miter_limit = 8.0; // keeps tab and card corners sharp under the kerf offset
+
+Paths counter_clockwise(const std::vector<Loop2>& loops)
+{
+    Paths paths;
+    for (const Loop2& loop : loops) {
+        ClipperLib::Path path = to_path(loop);
+        if (!ClipperLib::Orientation(path))
+            ClipperLib::ReversePath(path);
+        paths.push_back(std::move(path));
+    }
+    return paths;
+}
+
+void collect(const ClipperLib::PolyNode& node, std::vector<Region>& regions)
+{
+    for (const ClipperLib::PolyNode* outer : node.Childs) {
+        Region region{to_loop(outer->Contour), {}};
+        for (const ClipperLib::PolyNode* hole : outer->Childs) {
+            region.holes.push_back(to_loop(hole->Contour));
+            collect(*hole, regions); // islands inside holes are regions of their own
+        }
+        regions.push_back(std::move(region));
+    }
+}
+
+Paths region_paths(const std::vector<Region>& regions)
+{
+    Paths paths;
+    for (const Region& r : regions) {
+        paths.push_back(to_path(r.outer));
+        for (const Loop2& h : r.holes)
+            paths.push_back(to_path(h));
+    }
+    return paths;
+}
+
+std::vector<Region> offset(const Paths& paths, double distance)
+{
+    ClipperLib::ClipperOffset offsetter(miter_limit);
+    offsetter.AddPaths(paths, ClipperLib::jtMiter, ClipperLib::etClosedPolygon);
+    ClipperLib::PolyTree tree;
+    offsetter.Execute(tree, distance * clipper_scale);
+    std::vector<Region> regions;
+    collect(tree, regions);
+    return regions;
+}
+
+} // namespace
+
+void add_slit_slots(const Scaffold& s, LocalPiece& piece)
+{
+    for (const Slit& slit : s.slits) {
+        if (!piece.has(slit.patch_cut))
+            continue;
+        const Vec2 a = piece.flat_point(s, slit.patch_cut, slit.from);
+        const Vec2 b = piece.flat_point(s, slit.patch_cut, slit.to);
+        const Vec2 across = s.paper_thickness * left_normal(unit(b - a));
+        piece.slots.push_back({a - across, b - across, b + across, a + across});
+    }
+}
+
+void cut_outline(LocalPiece& piece, double kerf)
+{
+    std::vector<Loop2> paper = piece.flat.outlines;
+    for (const GlueTab& t : piece.tabs)
+        paper.push_back(t.polygon);
+    std::vector<Loop2> openings = piece.slots;
+    for (const auto& holes : piece.flat.holes)
+        openings.insert(openings.end(), holes.begin(), holes.end());
+
+    ClipperLib::Clipper clipper;
+    clipper.AddPaths(counter_clockwise(paper), ClipperLib::ptSubject, true);
+    clipper.AddPaths(counter_clockwise(openings), ClipperLib::ptClip, true);
+    ClipperLib::PolyTree tree;
+    clipper.Execute(ClipperLib::ctDifference, tree, ClipperLib::pftNonZero,
+                    ClipperLib::pftNonZero);
+    piece.cut_nominal.clear();
+    collect(tree, piece.cut_nominal);
+    piece.cut = kerf > 0 ? offset(region_paths(piece.cut_nominal), 0.5 * kerf) : piece.cut_nominal;
+}
+
+void check_die_cutting(const LocalPiece& piece, const std::string& piece_id,
+                       const SheetOptions& options, std::vector<SheetDiagnostic>& diagnostics)
+{
+    const Paths nominal = region_paths(piece.cut_nominal);
+    const double half = 0.5 * options.min_feature;
+    const Paths opened = region_paths(offset(region_paths(offset(nominal, -half)), half));
+    ClipperLib::Clipper clipper;
+    clipper.AddPaths(nominal, ClipperLib::ptSubject, true);
+    clipper.AddPaths(opened, ClipperLib::ptClip, true);
+    Paths lost;
+    clipper.Execute(ClipperLib::ctDifference, lost, ClipperLib::pftNonZero,
+                    ClipperLib::pftNonZero);
+    // Slivers along the outline are rounding; a lost part at least half a feature across counts.
+    const double significant = 0.25 * options.min_feature * options.min_feature;
+    for (const ClipperLib::Path& part : lost) {
+        if (path_area(part) < significant)
+            continue;
+        Vec2 centre = Vec2::Zero();
+        for (const auto& p : part)
+            centre += to_vec2(p);
+        centre /= double(part.size());
+        std::ostringstream m;
+        m.precision(4);
+        m << piece_id << " has paper narrower than " << options.min_feature << " mm near ("
+          << centre.x() << ", " << centre.y() << ") in its own frame (" << path_area(part)
+          << " mm² would break off or tear in die cutting)";
+        diagnostics.push_back({"warning", {"narrow_feature", m.str(), "piece " + piece_id}});
+    }
+
+    const double limit = options.min_corner_angle * M_PI / 180.0;
+    for (const Region& region : piece.cut_nominal) {
+        const Loop2& loop = region.outer; // counter-clockwise: convex corners turn left
+        const size_t n = loop.size();
+        for (size_t i = 0; i < n; ++i) {
+            const Vec2 in = loop[i] - loop[(i + n - 1) % n];
+            const Vec2 out = loop[(i + 1) % n] - loop[i];
+            const double turn = in.x() * out.y() - in.y() * out.x();
+            const double corner = std::acos(std::clamp(-in.normalized().dot(out.normalized()), -1.0, 1.0));
+            if (turn > 0 && corner < limit) {
+                std::ostringstream m;
+                m.precision(4);
+                m << piece_id << " has a " << corner * 180.0 / M_PI << "° corner at ("
+                  << loop[i].x() << ", " << loop[i].y() << "), sharper than "
+                  << options.min_corner_angle << "°: round it for die cutting";
+                diagnostics.push_back({"warning", {"sharp_corner", m.str(), "piece " + piece_id}});
+            }
+        }
+    }
+}
+
+} // namespace popup::sheets
