@@ -9,7 +9,9 @@ angles 180, 90 and 30 degrees side by side, (d) build card.FCStd: an A4 PopUpCar
 fold with a tent fold and a floating layer on its top and a step fold on its side, and a v-fold
 and a v-box beside the box, all made with popupwb.make, and check it (card_validity.json / .txt), (e) render
 demo_card.png and card_180.png, card_90.png, card_30.png with the FreeCAD GUI under Xvfb (one
-run), (f) list the outputs and the verdicts. (c) and (d) run headless FreeCAD in subprocesses.
+run), (f) lay card.FCStd out for cutting with `popup sheet` on A3 paper into sheets/ (DXF, SVG,
+PDF, instructions, report.json, sheets.json) and render sheets/sheet_1.png, (g) list the outputs
+and the verdicts. (c) and (d) run headless FreeCAD in subprocesses.
 FreeCAD runs with a sandboxed user home (<build>/sandbox/home) whose Mod/PopUp links to the
 workbench, so nothing is read from or written to the user's own FreeCAD setup.
 """
@@ -379,6 +381,31 @@ def render_pngs(build, demo_fcstd, card_fcstd, out, env):
     return [demo_png, *card_pngs]
 
 
+def make_sheets(build, card_fcstd, out, env):
+    """(f) The card's cutting sheets with `popup sheet` (A3: the open A4 card is 210 x 297 mm and
+    needs more than A4 paper inside 10 mm margins), and a PNG of the first sheet."""
+    folder = os.path.join(out, "sheets")
+    command = [os.path.join(build, "bin", "popup"), "sheet", card_fcstd, "--out", folder]
+    proc = subprocess.run(
+        command + ["--paper", "A3", "--json"],
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=GUI_TIMEOUT,
+    )
+    if proc.returncode != 0:
+        raise DemoError(f"(f) sheets: exit {proc.returncode}: {proc.stderr.strip()}")
+    report = json.loads(proc.stdout)
+    with open(os.path.join(folder, "sheets.json")) as f:
+        sheet_set = json.load(f)
+    sys.path.insert(0, os.path.join(REPO, "Workbench"))
+    from popupwb.sheets.sheet_png import render_sheet_png
+
+    png = render_sheet_png(sheet_set, 0, os.path.join(folder, "sheet_1.png"), dpi=150)
+    files = [report["files"][k] for k in ("dxf", "pdf", "instructions", "report", "sheet_set")]
+    return [*files[:1], *report["files"]["svg"], *files[1:], png], report
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--build", default="build", help="CMake build folder (default: build)")
@@ -409,6 +436,13 @@ def main(argv=None):
             print(textwrap.indent(card_summary, "      "), flush=True)
         pngs = render_pngs(build, fcstd, card_files[0], out, env)
         print(f"(e) pictures rendered: {', '.join(os.path.basename(p) for p in pngs)}", flush=True)
+        sheet_files, sheets = make_sheets(build, card_files[0], out, env)
+        print(
+            f"(f) cutting sheets: {len(sheets['pieces'])} pieces on {sheets['sheets']} A3 "
+            f"sheet(s) (shelf packing: {sheets['shelf_packer_sheets']}), round trip "
+            f"{sheets['round_trip']['max_error']:.2g} mm, in {os.path.dirname(sheet_files[0])}",
+            flush=True,
+        )
     except DemoError as e:
         print(f"run_demo: FAILED {e}", file=sys.stderr)
         return 1
@@ -417,7 +451,7 @@ def main(argv=None):
         return 1
 
     print("\nOutputs:")
-    for path in [design, *report_files, fcstd, *card_files, *pngs]:
+    for path in [design, *report_files, fcstd, *card_files, *pngs, *sheet_files]:
         print(f"  {path}")
     failed = False
     for name, result in (("demo_card.json", report), ("card.FCStd", card_report)):
@@ -427,6 +461,9 @@ def main(argv=None):
         )
         print(f"Verdict {name}: {'VALID' if result['valid'] else 'INVALID'} ({verdicts})")
         failed = failed or not result["valid"]
+    if sheets["errors"] or not sheets["round_trip"]["ok"]:
+        print(f"Sheets: {len(sheets['errors'])} error(s); see {sheet_files[-3]}")
+        failed = True
     if failed:
         print("run_demo: FAILED the demo cards must be valid; see the reports", file=sys.stderr)
         return 1

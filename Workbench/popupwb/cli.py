@@ -2,11 +2,13 @@
 
     popup check design.json [--json] [--samples N] [--clearance MM]
     popup check card.FCStd                  # the first PopUp Scaffold's design or PopUpCard
+    popup sheet card.FCStd --out DIR [--paper A4] [--kerf 0.1] [--json]
     popup --version
 
-Exit status: 0 the design is valid, 1 it is not (the report says why), 2 the input could not be
-used (missing file, bad JSON, bad design, no scaffold, bad option), 3 an internal error. Errors
-are one line on stderr naming the file and what is wrong.
+Exit status: 0 the design is valid (check) or its sheets are usable (sheet), 1 it is not (the
+report says why; sheet still writes every file), 2 the input could not be used (missing file, bad
+JSON, bad design, no scaffold, bad option, a piece larger than the paper), 3 an internal error.
+Errors are one line on stderr naming the file and what is wrong.
 """
 
 import argparse
@@ -199,6 +201,61 @@ def cmd_check(args):
     return EXIT_VALID if result["valid"] else EXIT_INVALID
 
 
+def cmd_sheet(args):
+    from popupwb.sheets.export import export_sheets, layout
+
+    popupcore, scaffold, extra = load_design(args.design)
+    options = dict(
+        paper=args.paper,
+        kerf=args.kerf,
+        margin=args.margin,
+        spacing=args.spacing,
+        tab_width=args.tab_width,
+        tab_angle=args.tab_angle,
+        fold_hints=args.fold_hints,
+    )
+    with _stdout_to_stderr():
+        try:
+            sheet_set = layout(scaffold, **options)
+        except ValueError as e:  # DesignError: a bad option or a piece too large for the paper
+            raise InputError(f"{args.design}: {_one_line(e)}")
+        try:
+            paths = export_sheets(sheet_set, args.out, registration_marks=args.registration_marks)
+        except OSError as e:
+            raise InputError(f"--out {args.out}: {_one_line(e)}")
+    with open(paths["report"]) as f:
+        report = json.load(f)
+    errors = report["errors"]
+    if args.json:
+        report.update(extra, file=os.path.abspath(args.design), files=paths)
+        print(json.dumps(report, indent=2))
+    else:
+        svg = paths["svg"]
+        for path in [
+            paths["dxf"],
+            *svg,
+            paths["pdf"],
+            paths["instructions"],
+            paths["report"],
+            paths["sheet_set"],
+        ]:
+            print(f"wrote {path}")
+        trip = report["round_trip"]
+        print(
+            f"{len(report['pieces'])} pieces, {report['tabs']} glue tabs on {report['sheets']} "
+            f"{sheet_set['paper']['name']} sheet(s) (bounding-box shelf packing: "
+            f"{report['shelf_packer_sheets']}); cut length {report['cut_length']:.1f} mm; "
+            f"closed stack {report['stack_height']:.2f} mm"
+        )
+        print(
+            f"round trip: {trip['max_error']:.3g} mm over {trip['angles']} fold angles "
+            f"(tolerance {trip['tolerance']:.3g} mm) - {'ok' if trip['ok'] else 'FAILED'}"
+        )
+        for d in errors + report["warnings"]:
+            print(f"{d['severity']}: {d['subject']}: {d['message']}")
+    return EXIT_INVALID if errors else EXIT_VALID
+
+
 def _version():
     try:
         import popupwb
@@ -242,6 +299,36 @@ def build_parser():
         help="gap in mm two patches must keep, e.g. the paper thickness (default 0)",
     )
     check.set_defaults(run=cmd_check)
+
+    sheet = sub.add_parser(
+        "sheet",
+        help="lay a design out flat for cutting: DXF, SVG, PDF, instructions and a report",
+        description="Unfold the design into pieces with glue tabs, fold lines and labels, nest "
+        "them onto sheets and write DIR/sheets.dxf, sheets.svg, sheets.pdf, instructions.pdf and "
+        "report.json (and sheets.json, the layout itself).",
+    )
+    sheet.add_argument(
+        "design", help="design file (.json) or FreeCAD document with a Scaffold or a PopUpCard"
+    )
+    sheet.add_argument("--out", required=True, metavar="DIR", help="folder for the files")
+    sheet.add_argument(
+        "--paper", default="A4", help="A4, A3, Letter, Tabloid or WxH in mm (default A4)"
+    )
+    sheet.add_argument("--kerf", type=float, default=0.1, metavar="MM", help="default 0.1")
+    sheet.add_argument("--margin", type=float, default=10.0, metavar="MM", help="default 10")
+    sheet.add_argument(
+        "--spacing", type=float, default=2.0, metavar="MM", help="between pieces, default 2"
+    )
+    sheet.add_argument("--tab-width", type=float, default=8.0, metavar="MM", help="default 8")
+    sheet.add_argument(
+        "--tab-angle", type=float, default=45.0, metavar="DEG", help="tab side angle, default 45"
+    )
+    sheet.add_argument("--fold-hints", action="store_true", help="print M/V beside each fold")
+    sheet.add_argument(
+        "--registration-marks", action="store_true", help="print-then-cut marks in the PDF"
+    )
+    sheet.add_argument("--json", action="store_true", help="print the report as one JSON object")
+    sheet.set_defaults(run=cmd_sheet)
     return parser
 
 

@@ -224,6 +224,12 @@ Result<SheetSet> layout_sheets(const Scaffold& input, const SheetOptions& option
         const std::string id = "P" + std::to_string(k + 1);
         add_slit_slots(s, piece);
         cut_outline(piece, options.kerf);
+        if (piece.cut_nominal.size() > 1)
+            notes.push_back({"error",
+                             {"piece_falls_apart",
+                              id + " falls apart into " + std::to_string(piece.cut_nominal.size()) +
+                                  " parts when cut: a slit or hole crosses it from edge to edge",
+                              "piece " + id}});
         check_die_cutting(piece, id, options, notes);
         add_labels(piece, id, options.fold_hints);
         const Region* largest = &piece.cut.front();

@@ -14,7 +14,7 @@ import zlib
 import ezdxf
 import pytest
 
-from popupwb.sheets import read_sheet_set
+from popupwb.sheets.sheet_set import read_sheet_set
 from popupwb.sheets.dxf_checks import check_dxf, convert_with_librecad, librecad_available
 from popupwb.sheets.dxf_writer import SHEET_GAP, write_dxf, write_dxf_per_sheet
 from popupwb.sheets.instructions_pdf import write_instructions

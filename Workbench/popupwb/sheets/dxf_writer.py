@@ -8,7 +8,7 @@ colour and linetype BYLAYER, so a cutter can map layers (or colours) to operatio
 import ezdxf
 from ezdxf.enums import TextEntityAlignment
 
-from . import read_sheet_set, sheet_file_paths
+from .sheet_set import read_sheet_set, sheet_file_paths
 from .layer_style import SheetStyle
 
 # All sheets share one file side by side: sheet k's origin is at x = k * (paper width + SHEET_GAP).

@@ -10,7 +10,7 @@ from reportlab.lib.styles import getSampleStyleSheet
 from reportlab.lib.units import mm
 from reportlab.platypus import Paragraph, SimpleDocTemplate, Spacer, Table, TableStyle
 
-from . import read_sheet_set
+from .sheet_set import read_sheet_set
 from .layer_style import SheetStyle
 
 LEGEND_LINE_LENGTH = 30.0  # mm

@@ -11,7 +11,7 @@ sheet's orientation. They are printed only: the DXF and SVG cut files carry none
 from reportlab.lib.units import mm
 from reportlab.pdfgen.canvas import Canvas
 
-from . import read_sheet_set
+from .sheet_set import read_sheet_set
 from .layer_style import SheetStyle
 
 FONT = "Helvetica"

@@ -7,7 +7,7 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib.patches import Polygon, Rectangle
 
-from . import read_sheet_set
+from .sheet_set import read_sheet_set
 from .layer_style import SheetStyle
 
 MM_PER_INCH = 25.4

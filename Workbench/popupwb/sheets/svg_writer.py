@@ -6,7 +6,7 @@ the layer groups because some cutter software ignores inherited styles.
 
 import svgwrite
 
-from . import read_sheet_set, sheet_file_paths
+from .sheet_set import read_sheet_set, sheet_file_paths
 from .layer_style import SheetStyle
 
 INKSCAPE_NAMESPACE = "http://www.inkscape.org/namespaces/inkscape"

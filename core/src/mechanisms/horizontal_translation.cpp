@@ -8,6 +8,10 @@
 
 namespace popup {
 
+namespace {
+constexpr double slit_bridge = 5.0; // mm of paper beyond each end of the slit
+} // namespace
+
 Vec2 horizontal_translation_tip(const HorizontalTranslationParams& p, double opening)
 {
     const Vec2 nose = step_nose(p, opening);
@@ -50,12 +54,16 @@ Result<MechanismParts> add_horizontal_translation(Scaffold& scaffold, const Base
     if (!step.ok)
         return step;
     MechanismParts parts = step.value;
-    const double y0 = p.offset, y1 = p.offset + p.width, a = p.run_ground, b = p.run_backdrop;
+    // M and its slit stop short of the step's ends: the paper left there keeps the riser and
+    // the tread one piece (a slit as long as the nose would cut them apart).
+    const double bridge = std::min(slit_bridge, 0.2 * p.width);
+    const double y0 = p.offset + bridge, y1 = p.offset + p.width - bridge;
+    const double a = p.run_ground, b = p.run_backdrop;
     const int M = m.patch({{0, y0, 0}, {p.reach, y0, 0}, {p.reach, y1, 0}, {0, y1, 0}},
                           PatchRole::other, "M");
     // Flat on the ground at the design state; it lifts with the nose.
     m.tab(host.ground, M, {0, y0, 0}, {0, y1, 0}, FoldDirection::valley);
-    m.sweeps(y0, y1);
+    m.sweeps(p.offset, p.offset + p.width);
     Result<MechanismParts> added = m.finish();
     if (!added.ok)
         return added;

@@ -1,0 +1,101 @@
+"""Lay a design out for cutting and write every production file into one folder.
+
+    sheet_set = layout(scaffold, paper="A3", kerf=0.1)
+    paths = export_sheets(sheet_set, "out/sheets")
+
+`layout` is the core's layout_sheets (docs/SHEET_FORMAT.md) as a dict. `export_sheets` writes
+sheets.dxf (all sheets side by side), sheets.svg (sheets-2.svg, … for further sheets), sheets.pdf
+(one page per sheet), instructions.pdf, report.json and sheets.json (the sheet set itself), re-reads the DXF to check it, and returns
+the paths by kind. No FreeCAD needed.
+"""
+
+import json
+import os
+
+from .dxf_checks import check_dxf
+from .dxf_writer import write_dxf
+from .instructions_pdf import write_instructions
+from .pdf_writer import write_pdf
+from .svg_writer import write_svg
+
+# The core's options and their defaults (SheetOptions in core/include/popup/sheet_layout.hpp).
+LAYOUT_DEFAULTS = {
+    "paper": "A4",
+    "margin": 10.0,
+    "spacing": 2.0,
+    "rotate": True,
+    "kerf": 0.1,
+    "min_gap": 1.0,
+    "tab_width": 8.0,
+    "tab_angle": 45.0,
+    "min_tab_width": 3.0,
+    "min_feature": 3.0,
+    "min_corner_angle": 30.0,
+    "fold_hints": False,
+    "round_trip_angles": 13,
+}
+
+
+def layout(scaffold, **options):
+    """The sheet set of a scaffold as a dict; raises popupcore.DesignError (a ValueError) naming
+    a bad option and its range, or a piece that does not fit the paper."""
+    from popupwb.core import popupcore
+
+    unknown = sorted(set(options) - set(LAYOUT_DEFAULTS))
+    if unknown:
+        raise ValueError(
+            f"unknown sheet option(s) {', '.join(unknown)}; known: " f"{', '.join(LAYOUT_DEFAULTS)}"
+        )
+    return json.loads(popupcore.layout_sheets(scaffold, **{**LAYOUT_DEFAULTS, **options}))
+
+
+def report(sheet_set, dxf_check=None):
+    """What report.json holds: the counts, the checks and every diagnostic."""
+    pieces = [
+        {
+            "id": p["id"],
+            "sheet": p["sheet"],
+            "patches": [patch["id"] for patch in p["patches"]],
+            "tabs": [t["code"] for t in p["tabs"]],
+            "glue": [g["code"] for g in p["glue"]],
+        }
+        for p in sheet_set["pieces"]
+    ]
+    shelf = sheet_set["shelf_sheet_count"]
+    return {
+        "paper": sheet_set["paper"],
+        "options": sheet_set["options"],
+        "pieces": pieces,
+        "sheets": len(sheet_set["sheets"]),
+        "shelf_packer_sheets": shelf,
+        "sheets_vs_shelf_packer": len(sheet_set["sheets"]) / shelf if shelf else None,
+        "tabs": sum(len(p["tabs"]) for p in sheet_set["pieces"]),
+        "cut_length": sheet_set["cut_length"],
+        "stack_height": sheet_set["stack_height"],
+        "round_trip": sheet_set["round_trip"],
+        "assembly": [step["text"] for step in sheet_set["assembly"]],
+        "errors": [d for d in sheet_set["diagnostics"] if d["severity"] == "error"],
+        "warnings": [d for d in sheet_set["diagnostics"] if d["severity"] == "warning"],
+        "dxf_check": dxf_check,
+    }
+
+
+def export_sheets(sheet_set, out_dir, style=None, registration_marks=False):
+    """Writes the production files into out_dir (created if needed); returns {kind: path(s)}."""
+    os.makedirs(out_dir, exist_ok=True)
+    paths = {
+        "dxf": write_dxf(sheet_set, os.path.join(out_dir, "sheets.dxf"), style),
+        "svg": write_svg(sheet_set, os.path.join(out_dir, "sheets.svg"), style),
+        "pdf": write_pdf(sheet_set, os.path.join(out_dir, "sheets.pdf"), style, registration_marks),
+        "instructions": write_instructions(
+            sheet_set, os.path.join(out_dir, "instructions.pdf"), style
+        ),
+    }
+    paths["sheet_set"] = os.path.join(out_dir, "sheets.json")
+    with open(paths["sheet_set"], "w") as f:
+        json.dump(sheet_set, f)
+    check = check_dxf(paths["dxf"], expected_cut_length=sheet_set["cut_length"])
+    paths["report"] = os.path.join(out_dir, "report.json")
+    with open(paths["report"], "w") as f:
+        json.dump(report(sheet_set, check), f, indent=2)
+    return paths
