@@ -43,6 +43,7 @@ bench: build
 	$(BUILD)/bench/popup_bench --benchmark_min_time=0.2
 	POPUP_BUILD_DIR=$(CURDIR)/$(BUILD) FREECAD_USER_HOME=$(CURDIR)/$(BUILD)/sandbox/home \
 	  $(PYTHON) bench/freecad_recompute_bench.py
+	POPUP_BUILD_DIR=$(CURDIR)/$(BUILD) $(PYTHON) bench/sheets_bench.py
 
 lint:
 	clang-format --dry-run --Werror $$(git ls-files '*.cpp' '*.hpp')

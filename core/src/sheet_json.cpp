@@ -10,7 +10,10 @@ namespace {
 
 using nlohmann::json;
 
-json point(const Vec2& p) { return json::array({p.x(), p.y()}); }
+json point(const Vec2& p)
+{
+    return json::array({p.x(), p.y()});
+}
 
 json loop(const Loop2& l)
 {
@@ -36,15 +39,20 @@ json regions(const std::vector<Region>& rs)
     return out;
 }
 
-const char* side(bool front) { return front ? "front" : "back"; }
+const char* side(bool front)
+{
+    return front ? "front" : "back";
+}
 
 json piece_json(const SheetSet& set, const SheetPiece& p)
 {
-    json patches = json::array(), folds = json::array(), tabs = json::array(),
-         glue = json::array(), labels = json::array();
+    json patches = json::array(), folds = json::array(), tabs = json::array(), glue = json::array(),
+         labels = json::array();
     for (const FlatPatch& fp : p.patches)
-        patches.push_back(
-            {{"id", fp.id}, {"name", fp.name}, {"outer", loop(fp.outer)}, {"holes", loops(fp.holes)}});
+        patches.push_back({{"id", fp.id},
+                           {"name", fp.name},
+                           {"outer", loop(fp.outer)},
+                           {"holes", loops(fp.holes)}});
     for (const FoldLine& f : p.folds)
         folds.push_back({{"hinge", f.hinge},
                          {"from", point(f.from)},
@@ -73,9 +81,9 @@ json piece_json(const SheetSet& set, const SheetPiece& p)
                           {"position", point(l.position)},
                           {"height", l.height},
                           {"angle", l.angle}});
-    return {{"id", p.id},          {"sheet", p.sheet},         {"rotation", p.rotation},
-            {"patches", patches},  {"cut", regions(p.cut)},    {"cut_nominal", regions(p.cut_nominal)},
-            {"folds", folds},      {"tabs", tabs},             {"glue", glue},
+    return {{"id", p.id},         {"sheet", p.sheet},      {"rotation", p.rotation},
+            {"patches", patches}, {"cut", regions(p.cut)}, {"cut_nominal", regions(p.cut_nominal)},
+            {"folds", folds},     {"tabs", tabs},          {"glue", glue},
             {"labels", labels}};
 }
 
@@ -115,36 +123,38 @@ std::string sheet_set_to_json(const SheetSet& set)
                                {"code", d.diagnostic.code},
                                {"message", d.diagnostic.message},
                                {"subject", d.diagnostic.subject}});
-    const json doc = {
-        {"format", "popup-sheets"},
-        {"version", 1},
-        {"paper", {{"name", o.nest.paper.name}, {"width", o.nest.paper.width}, {"height", o.nest.paper.height}}},
-        {"options",
-         {{"margin", o.nest.margin},
-          {"spacing", o.nest.spacing},
-          {"kerf", o.kerf},
-          {"min_gap", o.min_gap},
-          {"tab_width", o.tab_width},
-          {"tab_angle", o.tab_angle},
-          {"min_tab_width", o.min_tab_width},
-          {"min_feature", o.min_feature},
-          {"min_corner_angle", o.min_corner_angle},
-          {"paper_thickness", set.paper_thickness},
-          {"rotate", o.nest.rotate},
-          {"fold_hints", o.fold_hints}}},
-        {"card_size", set.card_size},
-        {"sheets", sheets},
-        {"shelf_sheet_count", set.shelf_sheet_count},
-        {"pieces", pieces},
-        {"assembly", assembly},
-        {"cut_length", set.cut_length},
-        {"stack_height", set.stack_height},
-        {"round_trip",
-         {{"max_error", set.round_trip.max_error},
-          {"tolerance", set.round_trip.tolerance},
-          {"angles", set.round_trip.angles},
-          {"ok", set.round_trip.ok}}},
-        {"diagnostics", diagnostics}};
+    const json doc = {{"format", "popup-sheets"},
+                      {"version", 1},
+                      {"paper",
+                       {{"name", o.nest.paper.name},
+                        {"width", o.nest.paper.width},
+                        {"height", o.nest.paper.height}}},
+                      {"options",
+                       {{"margin", o.nest.margin},
+                        {"spacing", o.nest.spacing},
+                        {"kerf", o.kerf},
+                        {"min_gap", o.min_gap},
+                        {"tab_width", o.tab_width},
+                        {"tab_angle", o.tab_angle},
+                        {"min_tab_width", o.min_tab_width},
+                        {"min_feature", o.min_feature},
+                        {"min_corner_angle", o.min_corner_angle},
+                        {"paper_thickness", set.paper_thickness},
+                        {"rotate", o.nest.rotate},
+                        {"fold_hints", o.fold_hints}}},
+                      {"card_size", set.card_size},
+                      {"sheets", sheets},
+                      {"shelf_sheet_count", set.shelf_sheet_count},
+                      {"pieces", pieces},
+                      {"assembly", assembly},
+                      {"cut_length", set.cut_length},
+                      {"stack_height", set.stack_height},
+                      {"round_trip",
+                       {{"max_error", set.round_trip.max_error},
+                        {"tolerance", set.round_trip.tolerance},
+                        {"angles", set.round_trip.angles},
+                        {"ok", set.round_trip.ok}}},
+                      {"diagnostics", diagnostics}};
     return doc.dump();
 }
 

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <sstream>
 
 #include "popup/pieces.hpp"
+#include "popup/simulate_fold.hpp"
 #include "sheets/assembly_order.hpp"
 #include "sheets/clipper_ops.hpp"
 #include "sheets/fold_directions.hpp"
@@ -113,6 +115,22 @@ void classify_folds(const Scaffold& s, LocalPiece& piece, const BendSamples& ben
     }
 }
 
+// From the design angle to closed in `count` even steps, plus the fold-direction samples
+// (150°, 90°, 30°) where they fall between: every fold shows its bend in one of them.
+std::vector<double> sweep_angles(const Scaffold& s, int count)
+{
+    std::vector<double> angles;
+    for (int k = 0; k < count; ++k)
+        angles.push_back(s.design_angle * (1.0 - double(k) / (count - 1)));
+    for (double degrees : {150.0, 90.0, 30.0})
+        angles.push_back(degrees * M_PI / 180.0);
+    std::sort(angles.begin(), angles.end(), std::greater<double>());
+    angles.erase(std::unique(angles.begin(), angles.end(),
+                             [](double a, double b) { return std::abs(a - b) < 1e-9; }),
+                 angles.end());
+    return angles;
+}
+
 // Paper cannot overlap itself on the sheet: such a piece must be split at a tab joint.
 void report_self_overlap(const Scaffold& s, const LocalPiece& piece,
                          std::vector<SheetDiagnostic>& diagnostics)
@@ -206,18 +224,21 @@ Result<SheetSet> layout_sheets(const Scaffold& input, const SheetOptions& option
             position[id] = int(pieces.size());
         pieces.push_back(std::move(flat.value));
     }
-    const BendSamples bends = sample_bends(s);
+    // One sweep of the design serves the fold directions, the round trip and the stack height.
+    const std::vector<double> angles = sweep_angles(s, options.round_trip_angles);
+    const Result<FoldSweep> designed = simulate_fold(s, angles);
+    const BendSamples bends = sample_bends(s, designed.value.states);
     for (LocalPiece& piece : pieces)
         classify_folds(s, piece, bends, notes);
     add_glue_tabs(s, pieces, position, bends, options, notes);
     for (const Glue& g : s.glue)
         if (position.at(g.patch_a) != position.at(g.patch_b))
-            notes.push_back({"warning",
-                             {"glue_without_tab",
-                              "patches " + std::to_string(g.patch_a) + " and " +
-                                  std::to_string(g.patch_b) +
-                                  " are glued face to face: no tab is drawn for them",
-                              "patch " + std::to_string(g.patch_a)}});
+            notes.push_back(
+                {"warning",
+                 {"glue_without_tab",
+                  "patches " + std::to_string(g.patch_a) + " and " + std::to_string(g.patch_b) +
+                      " are glued face to face: no tab is drawn for them",
+                  "patch " + std::to_string(g.patch_a)}});
     std::vector<NestShape> shapes;
     for (size_t k = 0; k < pieces.size(); ++k) {
         LocalPiece& piece = pieces[k];
@@ -311,8 +332,10 @@ Result<SheetSet> layout_sheets(const Scaffold& input, const SheetOptions& option
         step.text = assembly_text(set, set.pieces[k], step.joins);
         set.assembly.push_back(std::move(step));
     }
-    set.round_trip = round_trip(s, set, to_sheet, notes);
-    set.stack_height = stack_height(s, set, to_sheet);
+    set.round_trip = round_trip(s, set, to_sheet, designed, angles, notes);
+    const auto& states = designed.value.states;
+    if (designed.ok && !states.empty() && states.back().angle == 0.0)
+        set.stack_height = stack_height(s, set, to_sheet, states.back().poses);
     return r;
 }
 

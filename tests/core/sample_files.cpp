@@ -17,6 +17,7 @@ std::vector<SampleFile> sample_files()
         {"tests/data/colliding_walls.json", colliding_walls_card()},
         {"tests/data/sticking_out_tent.json", sticking_out_tent_card()},
         {"tests/data/mechanisms/demo_card.json", demo_card()},
+        {"tests/data/many_pieces.json", many_piece_card(4)},
     };
     // One card per mechanism type, made by the generators (tab joints where sheets meet).
     for (const NamedDesign& d : single_mechanism_cards()) {

@@ -168,12 +168,12 @@ Scaffold demo_card()
 
 Scaffold many_piece_card(int boxes)
 {
-    Scaffold s = card(380, 130);
-    const double pitch = 380.0 / boxes;
+    Scaffold s = card(240, 120);
+    const double pitch = 240.0 / boxes;
     for (int k = 0; k < boxes; ++k) {
         const std::string n = "Box" + std::to_string(k);
-        const MechanismParts b = must(
-            add_box_fold(s, central_fold(s), box(k * pitch + 5, pitch - 10, 30, 30), n), n);
+        const MechanismParts b =
+            must(add_box_fold(s, central_fold(s), box(k * pitch + 5, pitch - 10, 30, 30), n), n);
         must(add_tent_fold(s, b.offered[0], tent(2, 0.3 * (pitch - 10), 10, 14), n + "Tent"),
              n + "Tent");
         must(add_floating_layer(s, b.offered[0],

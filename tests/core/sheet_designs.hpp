@@ -19,7 +19,7 @@ std::vector<NamedDesign> single_mechanism_cards();
 /// layer and a rotation arm on its top and a step on its side, a v-fold and a v-box beside it.
 Scaffold demo_card();
 
-/// A 380 × 260 mm card with `boxes` boxes side by side, each carrying a tent and a floating
+/// A 240 × 240 mm card (open) with `boxes` boxes side by side, each carrying a tent and a floating
 /// layer on its top and a step on each side: 1 + 13 × boxes pieces.
 Scaffold many_piece_card(int boxes);
 

@@ -10,16 +10,16 @@ namespace popup {
 
 /// How to lay a card out for cutting. Lengths in mm, angles in degrees.
 struct SheetOptions {
-    NestOptions nest;              ///< paper, margin, spacing, rotations
-    double kerf = 0.1;             ///< cut width; cut lines move out by half of it
-    double min_gap = 1.0;          ///< spacing must be at least kerf + min_gap
-    double tab_width = 8.0;        ///< glue tab depth, away from its crease
-    double tab_angle = 45.0;       ///< angle between the crease and a tab's side, (0, 90]
-    double min_tab_width = 3.0;    ///< narrowest tab worth gluing
-    double min_feature = 3.0;      ///< die cutting: narrower paper gets a warning
+    NestOptions nest;               ///< paper, margin, spacing, rotations
+    double kerf = 0.1;              ///< cut width; cut lines move out by half of it
+    double min_gap = 1.0;           ///< spacing must be at least kerf + min_gap
+    double tab_width = 8.0;         ///< glue tab depth, away from its crease
+    double tab_angle = 45.0;        ///< angle between the crease and a tab's side, (0, 90]
+    double min_tab_width = 3.0;     ///< narrowest tab worth gluing
+    double min_feature = 3.0;       ///< die cutting: narrower paper gets a warning
     double min_corner_angle = 30.0; ///< die cutting: sharper convex corners get a warning
-    bool fold_hints = false;       ///< print M/V beside each fold
-    int round_trip_angles = 13;    ///< fold angles sampled by the round trip, ≥ 2
+    bool fold_hints = false;        ///< print M/V beside each fold
+    int round_trip_angles = 13;     ///< fold angles sampled by the round trip, ≥ 2
 };
 
 /// Checks every option; errors name the option, its value and the allowed range.
@@ -49,8 +49,8 @@ struct FoldLine {
 struct GlueTab {
     std::string code;
     int hinge = 0;
-    int patch = 0;  ///< the patch it hangs from
-    Loop2 polygon;  ///< first edge = the crease
+    int patch = 0; ///< the patch it hangs from
+    Loop2 polygon; ///< first edge = the crease
     double width = 0.0;
     int target_piece = 0;
     int target_patch = 0;
@@ -117,10 +117,10 @@ struct SheetDiagnostic {
 
 struct SheetSet {
     SheetOptions options;
-    double card_size = 0.0; ///< the design's size (Scaffold::size), the tolerance scale
+    double card_size = 0.0;       ///< the design's size (Scaffold::size), the tolerance scale
     double paper_thickness = 0.0; ///< the design's (mm)
     int sheet_count = 0;
-    int shelf_sheet_count = 0; ///< the bounding-box shelf packer's count, the baseline
+    int shelf_sheet_count = 0;      ///< the bounding-box shelf packer's count, the baseline
     std::vector<SheetPiece> pieces; ///< the card first
     std::vector<AssemblyStep> assembly;
     double cut_length = 0.0;   ///< total length of the kerf-compensated cut loops

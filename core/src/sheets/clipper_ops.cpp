@@ -45,8 +45,7 @@ double area_outside(const Loop2& a, const Loop2& outer, const std::vector<Loop2>
     region.AddPaths(oriented({outer}), ClipperLib::ptSubject, true);
     region.AddPaths(oriented(holes), ClipperLib::ptClip, true);
     ClipperLib::Paths paper;
-    region.Execute(ClipperLib::ctDifference, paper, ClipperLib::pftNonZero,
-                   ClipperLib::pftNonZero);
+    region.Execute(ClipperLib::ctDifference, paper, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
     ClipperLib::Clipper clipper;
     clipper.AddPaths(oriented({a}), ClipperLib::ptSubject, true);
     clipper.AddPaths(paper, ClipperLib::ptClip, true);

@@ -2,19 +2,14 @@
 
 #include <cmath>
 
-#include "popup/simulate_fold.hpp"
-
 namespace popup::sheets {
 
-BendSamples sample_bends(const Scaffold& s)
+BendSamples sample_bends(const Scaffold& s, const std::vector<FoldState>& sweep)
 {
-    constexpr double degree = M_PI / 180.0;
     BendSamples samples;
     samples.states.emplace_back(s.patches.size(), Pose{});
-    Result<FoldSweep> sweep = simulate_fold(s, {150 * degree, 90 * degree, 30 * degree});
-    if (sweep.ok)
-        for (const FoldState& state : sweep.value.states)
-            samples.states.push_back(state.poses);
+    for (const FoldState& state : sweep)
+        samples.states.push_back(state.poses);
     return samples;
 }
 

@@ -3,7 +3,7 @@
 // the design state (a box's front V at 180°), so the card is sampled on its way closed too.
 #include <vector>
 
-#include "popup/scaffold.hpp"
+#include "popup/simulate_fold.hpp"
 
 namespace popup::sheets {
 
@@ -12,7 +12,8 @@ struct BendSamples {
     std::vector<std::vector<Pose>> states;
 };
 
-BendSamples sample_bends(const Scaffold& s);
+/// The design state plus every state of a sweep of the design toward closed.
+BendSamples sample_bends(const Scaffold& s, const std::vector<FoldState>& sweep);
 
 /// Which way patch b turns away from patch a about a hinge through `on_hinge` (design state),
 /// seen from `normal_a`, a's printed side: valley when b comes toward that side. `bent` is false

@@ -87,8 +87,7 @@ void cut_outline(LocalPiece& piece, double kerf)
     clipper.AddPaths(counter_clockwise(paper), ClipperLib::ptSubject, true);
     clipper.AddPaths(counter_clockwise(openings), ClipperLib::ptClip, true);
     ClipperLib::PolyTree tree;
-    clipper.Execute(ClipperLib::ctDifference, tree, ClipperLib::pftNonZero,
-                    ClipperLib::pftNonZero);
+    clipper.Execute(ClipperLib::ctDifference, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
     piece.cut_nominal.clear();
     collect(tree, piece.cut_nominal);
     piece.cut = kerf > 0 ? offset(region_paths(piece.cut_nominal), 0.5 * kerf) : piece.cut_nominal;
@@ -104,8 +103,7 @@ void check_die_cutting(const LocalPiece& piece, const std::string& piece_id,
     clipper.AddPaths(nominal, ClipperLib::ptSubject, true);
     clipper.AddPaths(opened, ClipperLib::ptClip, true);
     Paths lost;
-    clipper.Execute(ClipperLib::ctDifference, lost, ClipperLib::pftNonZero,
-                    ClipperLib::pftNonZero);
+    clipper.Execute(ClipperLib::ctDifference, lost, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
     // Slivers along the outline are rounding; a lost part at least half a feature across counts.
     const double significant = 0.25 * options.min_feature * options.min_feature;
     for (const ClipperLib::Path& part : lost) {
@@ -131,7 +129,8 @@ void check_die_cutting(const LocalPiece& piece, const std::string& piece_id,
             const Vec2 in = loop[i] - loop[(i + n - 1) % n];
             const Vec2 out = loop[(i + 1) % n] - loop[i];
             const double turn = in.x() * out.y() - in.y() * out.x();
-            const double corner = std::acos(std::clamp(-in.normalized().dot(out.normalized()), -1.0, 1.0));
+            const double corner =
+                std::acos(std::clamp(-in.normalized().dot(out.normalized()), -1.0, 1.0));
             if (turn > 0 && corner < limit) {
                 std::ostringstream m;
                 m.precision(4);

@@ -11,7 +11,10 @@ namespace popup::sheets {
 
 namespace {
 
-Vec3 lift(const Vec2& p) { return {p.x(), p.y(), 0.0}; }
+Vec3 lift(const Vec2& p)
+{
+    return {p.x(), p.y(), 0.0};
+}
 
 Pose turn_about(const Vec3& point, const Vec3& axis, double angle)
 {
@@ -38,6 +41,7 @@ struct Rebuilt {
 } // namespace
 
 RoundTrip round_trip(const Scaffold& s, const SheetSet& sheets, const std::vector<Pose>& to_sheet,
+                     const Result<FoldSweep>& designed, const std::vector<double>& angles,
                      std::vector<SheetDiagnostic>& diagnostics)
 {
     RoundTrip result;
@@ -74,7 +78,8 @@ RoundTrip round_trip(const Scaffold& s, const SheetSet& sheets, const std::vecto
                     continue;
                 const Vec3 axis = lift(f.to - f.from).normalized();
                 const Pose design = inverse(sheet_pose(b)).then(sheet_pose(a));
-                const Pose fold = turn_about(lift(f.from), axis, angle_about(design.rotation, axis));
+                const Pose fold =
+                    turn_about(lift(f.from), axis, angle_about(design.rotation, axis));
                 re.from_sheet[b] = fold.then(re.from_sheet.at(a));
                 queue.push_back(b);
             }
@@ -109,7 +114,8 @@ RoundTrip round_trip(const Scaffold& s, const SheetSet& sheets, const std::vecto
         const SheetPiece& piece = sheets.pieces[k];
         int start = -1;
         for (const GlueTab& t : piece.tabs) // its own tab onto a piece in place
-            if (const GlueArea* g = glue_area(t); start < 0 && g && re.from_sheet.count(t.target_patch)) {
+            if (const GlueArea* g = glue_area(t);
+                start < 0 && g && re.from_sheet.count(t.target_patch)) {
                 join(t.patch, t.polygon, t.target_patch, g->polygon);
                 start = t.patch;
             }
@@ -139,8 +145,8 @@ RoundTrip round_trip(const Scaffold& s, const SheetSet& sheets, const std::vecto
             Patch& p = remade.patches[remade.patch_index(fp.id)];
             for (size_t i = 0; i < fp.outer.size(); ++i) {
                 p.outer[i] = f.apply(lift(fp.outer[i]));
-                result.max_error = std::max(result.max_error,
-                                            (p.outer[i] - s.find_patch(fp.id)->outer[i]).norm());
+                result.max_error =
+                    std::max(result.max_error, (p.outer[i] - s.find_patch(fp.id)->outer[i]).norm());
             }
             for (size_t j = 0; j < fp.holes.size(); ++j)
                 for (size_t i = 0; i < fp.holes[j].size(); ++i)
@@ -156,21 +162,16 @@ RoundTrip round_trip(const Scaffold& s, const SheetSet& sheets, const std::vecto
     }
 
     // Through the simulator: the re-made card against the design over the sweep.
-    const int n = std::max(sheets.options.round_trip_angles, 2);
-    std::vector<double> angles;
-    for (int k = 0; k < n; ++k)
-        angles.push_back(s.design_angle * (1.0 - double(k) / (n - 1)));
-    Result<FoldSweep> designed = simulate_fold(s, angles);
     Result<FoldSweep> refolded = simulate_fold(remade, angles);
     if (!refolded.ok || !designed.ok) {
         const Diagnostics& why = refolded.ok ? designed.diagnostics : refolded.diagnostics;
-        diagnostics.push_back({"error",
-                               {"round_trip_failed",
-                                std::string("round trip: the ") +
-                                    (refolded.ok ? "design" : "re-folded card") +
-                                    " does not simulate: " +
-                                    (why.empty() ? std::string("no reason given") : why.front().message),
-                                "round trip"}});
+        diagnostics.push_back(
+            {"error",
+             {"round_trip_failed",
+              std::string("round trip: the ") + (refolded.ok ? "design" : "re-folded card") +
+                  " does not simulate: " +
+                  (why.empty() ? std::string("no reason given") : why.front().message),
+              "round trip"}});
         return result;
     }
     const auto& a = designed.value.states;
@@ -181,10 +182,10 @@ RoundTrip round_trip(const Scaffold& s, const SheetSet& sheets, const std::vecto
         ++result.angles;
         for (size_t i = 0; i < s.patches.size(); ++i)
             for (size_t v = 0; v < s.patches[i].outer.size(); ++v)
-                result.max_error = std::max(
-                    result.max_error, (a[k].poses[i].apply(s.patches[i].outer[v]) -
-                                       b[k].poses[i].apply(remade.patches[i].outer[v]))
-                                          .norm());
+                result.max_error =
+                    std::max(result.max_error, (a[k].poses[i].apply(s.patches[i].outer[v]) -
+                                                b[k].poses[i].apply(remade.patches[i].outer[v]))
+                                                   .norm());
     }
     result.ok = result.max_error <= result.tolerance && result.angles == int(a.size());
     if (!result.ok) {

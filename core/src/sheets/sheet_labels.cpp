@@ -78,8 +78,8 @@ void add_labels(LocalPiece& piece, const std::string& piece_id, bool fold_hints)
             box.extend(p);
         for (int i = 1; i < grid; ++i)
             for (int j = 1; j < grid; ++j) {
-                const Vec2 q = box.min() + Vec2(box.sizes().x() * i / grid,
-                                                box.sizes().y() * j / grid);
+                const Vec2 q =
+                    box.min() + Vec2(box.sizes().x() * i / grid, box.sizes().y() * j / grid);
                 if (!on_paper(piece, q))
                     continue;
                 const double c = clearance(piece, q);
@@ -91,7 +91,8 @@ void add_labels(LocalPiece& piece, const std::string& piece_id, bool fold_hints)
     }
     piece.labels.push_back({piece_id, "piece", best, std::clamp(0.6 * room, 1.5, 8.0), 0.0});
     for (const GlueTab& t : piece.tabs)
-        piece.labels.push_back({t.code, "tab", mean(t.polygon), std::clamp(0.45 * t.width, 1.0, 5.0),
+        piece.labels.push_back({t.code, "tab", mean(t.polygon),
+                                std::clamp(0.45 * t.width, 1.0, 5.0),
                                 reading_angle(t.polygon[0], t.polygon[1])});
     for (const GlueArea& g : piece.glue) {
         const double depth = distance_to_segment(g.polygon[2], g.polygon[0], g.polygon[1]);

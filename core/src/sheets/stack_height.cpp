@@ -1,7 +1,6 @@
 #include "stack_height.hpp"
 
 #include "../polygon_2d.hpp"
-#include "popup/simulate_fold.hpp"
 
 namespace popup::sheets {
 
@@ -11,12 +10,9 @@ constexpr int grid = 80;
 
 } // namespace
 
-double stack_height(const Scaffold& s, const SheetSet& sheets, const std::vector<Pose>& to_sheet)
+double stack_height(const Scaffold& s, const SheetSet& sheets, const std::vector<Pose>& to_sheet,
+                    const std::vector<Pose>& poses)
 {
-    Result<FoldSweep> closed = simulate_fold(s, {0.0});
-    if (!closed.ok || closed.value.states.empty())
-        return 0.0;
-    const std::vector<Pose>& poses = closed.value.states.front().poses;
     const int ground = s.patch_index(s.ground);
     const Patch& g = s.patches[ground];
     const Pose& gp = poses[ground];

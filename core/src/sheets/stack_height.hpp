@@ -7,7 +7,8 @@ namespace popup::sheets {
 
 /// Height of the closed card: paper layers (patches and glued tabs) over the thickest point,
 /// times the paper thickness. Patches are projected onto the ground at the closed state and the
-/// layers counted on a grid. `to_sheet` as for round_trip. Zero when the card does not close.
-double stack_height(const Scaffold& s, const SheetSet& sheets, const std::vector<Pose>& to_sheet);
+/// layers counted on a grid. `to_sheet` as for round_trip; `closed` the patch poses at 0°.
+double stack_height(const Scaffold& s, const SheetSet& sheets, const std::vector<Pose>& to_sheet,
+                    const std::vector<Pose>& closed);
 
 } // namespace popup::sheets
