@@ -233,20 +233,28 @@ CARD_DOCUMENT = textwrap.dedent(
 )
 
 
-def test_check_fcstd_with_a_card_checks_its_whole_assembly(tmp_path, user_home):
+@pytest.fixture(scope="module")
+def card_documents(tmp_path_factory, user_home):
+    """card.FCStd (an A5 card with a box carrying a tent) and bad_card.FCStd (its tent broken)."""
+    folder = tmp_path_factory.mktemp("cards")
     env = dict(os.environ)
     env["PYTHONPATH"] = os.pathsep.join(
         [os.path.join(BUILD_DIR, "python"), os.path.join(SOURCE_DIR, "Workbench"), FREECAD_LIB]
     )
     env.update(FREECAD_USER_HOME=user_home, HOME=user_home)
     proc = subprocess.run(
-        ["/usr/bin/python3", "-c", CARD_DOCUMENT, str(tmp_path)],
+        ["/usr/bin/python3", "-c", CARD_DOCUMENT, str(folder)],
         capture_output=True,
         text=True,
         timeout=300,
         env=env,
     )
     assert proc.returncode == 0, proc.stderr
+    return folder
+
+
+def test_check_fcstd_with_a_card_checks_its_whole_assembly(card_documents, user_home):
+    tmp_path = card_documents
     proc = popup("check", str(tmp_path / "card.FCStd"), "--json", home=user_home)
     assert proc.returncode == 0, proc.stderr
     report = json.loads(proc.stdout)
@@ -264,3 +272,46 @@ def test_check_broken_fcstd(tmp_path, user_home):
     path = tmp_path / "broken.FCStd"
     path.write_bytes(b"this is not a zip archive")
     assert_clean_error(popup("check", str(path), home=user_home), str(path))
+
+
+def test_sheet_writes_every_file(card_documents, user_home, tmp_path):
+    out = tmp_path / "sheets"
+    proc = popup(
+        "sheet", str(card_documents / "card.FCStd"), "--out", str(out), "--json", home=user_home
+    )
+    assert proc.returncode == 0, proc.stderr
+    report = json.loads(proc.stdout)
+    # The card, the box's strip, backbone and two end-panel pieces, and the tent.
+    assert len(report["pieces"]) == 6
+    assert 1 <= report["sheets"] <= report["shelf_packer_sheets"]
+    assert report["round_trip"]["ok"] and report["errors"] == []
+    assert report["dxf_check"]["audit_errors"] == 0 and report["object"] == "Card"
+    for name in ("sheets.dxf", "sheets.svg", "sheets.pdf", "instructions.pdf", "report.json"):
+        assert (out / name).stat().st_size > 0, name
+    text = popup("sheet", str(card_documents / "card.FCStd"), "--out", str(out), home=user_home)
+    assert text.returncode == 0 and "round trip:" in text.stdout and "ok" in text.stdout
+
+
+def test_sheet_of_a_card_with_a_broken_mechanism_names_it(card_documents, user_home, tmp_path):
+    path = str(card_documents / "bad_card.FCStd")
+    proc = popup("sheet", path, "--out", str(tmp_path), home=user_home)
+    assert_clean_error(proc, path, "Tent: Foot = -3 mm")
+
+
+@pytest.mark.parametrize(
+    "options, fragments",
+    [
+        (["--paper", "A9"], ["A9", "A4, A3, Letter, Tabloid"]),
+        (["--paper", "A3", "--kerf", "-1"], ["kerf = -1", "0 to 2 mm"]),
+        (["--paper", "A3", "--tab-angle", "120"], ["tab_angle = 120"]),
+        ([], ["piece P1", "does not fit the printable area 190.0 x 277.0 mm of A4"]),
+    ],
+)
+def test_sheet_bad_input_is_named(options, fragments, tmp_path):
+    design = data("mechanisms/demo_card.json")
+    proc = popup("sheet", design, "--out", str(tmp_path), *options)
+    assert_clean_error(proc, *fragments)
+
+
+def test_sheet_needs_an_output_folder():
+    assert_clean_error(popup("sheet", data("mechanisms/tent.json")), "--out")
