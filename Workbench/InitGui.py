@@ -7,7 +7,7 @@ class PopUpWorkbench(FreeCADGui.Workbench):
     MenuText = "PopUp"
     ToolTip = (
         "Paper pop-up design: cards with nested mechanisms (tent, step, v-fold, box, v-box), "
-        "folded on a slider, checked for validity; design files"
+        "folded on a slider, checked for validity, laid out on cutting sheets; design files"
     )
 
     def __init__(self):

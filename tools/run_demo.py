@@ -205,9 +205,17 @@ BUILD_CARD = textwrap.dedent(
         f.write("\\n")
     with open(txt_path, "w", encoding="utf-8") as f:
         f.write(format_report(report).rstrip("\\n") + "\\n")
+    # The cutting sheets as a feature with its TechDraw pages (the open A4 card needs A3).
+    sheets = make.make_cutting_sheet(card, paper="A3", name="CuttingSheet")
+    doc.recompute()
+    if "Invalid" in sheets.State:
+        sys.exit("cutting sheet in error: " + "; ".join(sheets.Diagnostics))
     doc.saveAs(fcstd)
     for obj in features:
         print("%s: %d faces" % (obj.Label, len(obj.Shape.Faces)))
+    print("CuttingSheet: %d pieces on %d sheet(s), %d TechDraw page(s)" % (
+        sheets.PieceCount, sheets.SheetCount,
+        len([o for o in doc.Objects if o.TypeId == "TechDraw::DrawPage"])))
     """
 )
 
@@ -287,8 +295,11 @@ RENDER_MACRO = textwrap.dedent(
             doc = FreeCAD.openDocument(job["fcstd"])
             Gui.updateGui()
             for obj in doc.Objects:
-                obj.ViewObject.Visibility = True  # saved headless: every object opens hidden
-            view = Gui.getDocument(doc.Name).ActiveView
+                # Saved headless, every object opens hidden: show the design, not the sheets.
+                shown = any(p in obj.PropertiesList for p in ("FoldAngle", "Host", "DesignFile"))
+                obj.ViewObject.Visibility = shown
+            # A TechDraw page may open as the active window: draw in the 3D view.
+            view = Gui.getDocument(doc.Name).mdiViewsOfType("Gui::View3DInventor")[0]
             for shot in job["shots"]:
                 if shot.get("fold_angle") is not None:
                     doc.getObject(shot["object"]).FoldAngle = shot["fold_angle"]

@@ -541,7 +541,7 @@ def test_horizontal_translation_slides_m_through_the_slit(doc, popup):
         70.0,
     )
     x, z = popup.core.horizontal_translation_tip(params, math.radians(90.0))
-    tip = popup_vector((x, 60.0, z))
+    tip = popup_vector((x, 65.0, z))  # M stops 5 mm short of the step's ends (the slit's bridge)
     assert min((v.Point - tip).Length for v in slider.Shape.Vertexes) < 1e-9
     scaffold = popup.assembly.assembly_of(card).scaffold
     assert len(scaffold.slits) == 1

@@ -4,13 +4,17 @@ from popupwb.commands import (
     animate,
     check_validity,
     create_card,
+    create_cutting_sheet,
     create_mechanism,
+    export_sheets,
     load_design,
 )
 
-# Toolbar and menu order: make a card, nest mechanisms on it, check and play it; design files.
+# Toolbar and menu order: make a card, nest mechanisms on it, check and play it, lay it out on
+# cutting sheets and export them; design files.
 COMMANDS = (
     [create_card.COMMAND_ID]
     + create_mechanism.COMMAND_IDS
-    + [check_validity.COMMAND_ID, animate.COMMAND_ID, load_design.COMMAND_ID]
+    + [check_validity.COMMAND_ID, animate.COMMAND_ID]
+    + [create_cutting_sheet.COMMAND_ID, export_sheets.COMMAND_ID, load_design.COMMAND_ID]
 )

@@ -1,6 +1,7 @@
 """Headless constructors of PopUp objects: what commands, macros and tests call."""
 
 from popupwb.make.make_card import make_card
+from popupwb.make.make_cutting_sheet import make_cutting_sheet
 from popupwb.make.make_mechanisms import (
     make_box_fold,
     make_floating_layer,
@@ -18,6 +19,7 @@ from popupwb.make.make_scaffold import make_scaffold
 __all__ = [
     "make_box_fold",
     "make_card",
+    "make_cutting_sheet",
     "make_floating_layer",
     "make_horizontal_translation",
     "make_mechanism",

@@ -16,6 +16,10 @@ down (Scale < 1).
 Pages are found again by two properties of the page, CuttingSheet (the owner's Name, not a link:
 a link would leave every new page Touched after the recompute that made it) and SheetIndex; every
 update reuses them and removes those of sheets that are gone.
+
+FreeCAD 0.20 defers removing an object during a recompute to the recompute's end, and then
+removes whatever bears that name again at the end of every later recompute: a name removed here
+during a recompute is never given to a new object again.
 """
 
 import os
@@ -46,6 +50,7 @@ _FIT = 1e-6  # mm: a paper this much larger than a template still fits it
 _CAP_HEIGHT_PER_EM = 0.7
 # TechDraw cosmetic line styles: 1 continuous, 2 dash, 3 dot, 4 dash-dot, 5 dash-dot-dot.
 LINE_STYLES = range(1, 6)
+_REMOVED_NAMES = set()  # (document, object name) removed during a recompute: never reused
 
 
 def template_for(width, height):
@@ -105,16 +110,30 @@ def remove_pages(owner):
 
 def remove_page(page):
     doc = page.Document
-    names = [o.Name for o in page_objects(page)]
-    for name in names:  # the page first: TechDraw then drops its views itself
-        if doc.getObject(name) is not None:
-            doc.removeObject(name)
+    for name in [o.Name for o in page_objects(page)]:
+        _remove_object(doc, name)  # the page first: TechDraw then drops its views itself
+
+
+def _remove_object(doc, name):
+    if doc.Recomputing:
+        _REMOVED_NAMES.add((doc.Name, name))
+    if doc.getObject(name) is not None:
+        doc.removeObject(name)
+
+
+def _add_object(doc, type_id, name):
+    """doc.addObject, under a name this module never removed during a recompute."""
+    candidate, number = name, 0
+    while (doc.Name, candidate) in _REMOVED_NAMES or doc.getObject(candidate) is not None:
+        number += 1
+        candidate = f"{name}{number:03d}"
+    return doc.addObject(type_id, candidate)
 
 
 def _new_page(owner, index, template_path):
     doc = owner.Document
-    template = doc.addObject("TechDraw::DrawSVGTemplate", f"{owner.Name}Template")
-    page = doc.addObject("TechDraw::DrawPage", f"{owner.Name}Page")
+    template = _add_object(doc, "TechDraw::DrawSVGTemplate", f"{owner.Name}Template")
+    page = _add_object(doc, "TechDraw::DrawPage", f"{owner.Name}Page")
     page.addProperty(
         "App::PropertyString", "CuttingSheet", "PopUp", "Name of the CuttingSheet drawing this page"
     )
@@ -128,9 +147,9 @@ def _new_page(owner, index, template_path):
     page.KeepUpdated = True
     template.Template = template_path
     page.Template = template  # before addView, which fails on a page without template
-    outline = doc.addObject("Part::Feature", f"{owner.Name}Outline")
+    outline = _add_object(doc, "Part::Feature", f"{owner.Name}Outline")
     outline.Visibility = False
-    view = doc.addObject("TechDraw::DrawViewPart", f"{owner.Name}View")
+    view = _add_object(doc, "TechDraw::DrawViewPart", f"{owner.Name}View")
     page.addView(view)
     view.Source = [outline]
     view.Direction = FreeCAD.Vector(0, 0, 1)
@@ -189,12 +208,13 @@ def _draw_labels(page, pieces, scale):
     labels = [label for piece in pieces for label in piece["labels"]]
     annotations = [v for v in page.Views if v.TypeId == "TechDraw::DrawViewAnnotation"]
     for extra in annotations[len(labels) :]:
-        doc.removeObject(extra.Name)
+        page.removeView(extra)  # now, not when the removal happens at the recompute's end
+        _remove_object(doc, extra.Name)
     for number, label in enumerate(labels):
         if number < len(annotations):
             annotation = annotations[number]
         else:
-            annotation = doc.addObject("TechDraw::DrawViewAnnotation", f"{page.Name}Label")
+            annotation = _add_object(doc, "TechDraw::DrawViewAnnotation", f"{page.Name}Label")
             page.addView(annotation)
             annotation.LockPosition = True
         annotation.Label = f"{page.Label} {label['kind']} {label['text']}"

@@ -1,0 +1,83 @@
+"""PopUp_ExportSheets: writes the selected CuttingSheet's production files (sheets.dxf, .svg,
+.pdf, instructions.pdf, report.json, sheets.json) into a folder chosen in a dialog.
+
+The files come from the layout the CuttingSheet keeps (SheetSetJson): what it shows is what is
+written, with no second layout. export_cutting_sheet() does the work without GUI; it lives with
+the feature because importing this package needs the GUI.
+"""
+
+import json
+
+import FreeCAD
+import FreeCADGui
+
+import popupwb
+from popupwb.features.cutting_sheet import export_cutting_sheet, is_cutting_sheet
+
+COMMAND_ID = "PopUp_ExportSheets"
+
+
+def selected_cutting_sheet(doc):
+    """The first selected CuttingSheet, else the document's only one, else None."""
+    if doc is None:
+        return None
+    for obj in FreeCADGui.Selection.getSelection(doc.Name):
+        if is_cutting_sheet(obj):
+            return obj
+    sheets = [o for o in doc.Objects if is_cutting_sheet(o)]
+    return sheets[0] if len(sheets) == 1 else None
+
+
+class ExportSheetsCommand:
+    def GetResources(self):
+        return {
+            "Pixmap": popupwb.icon_path(COMMAND_ID),
+            "MenuText": "Export cutting sheets",
+            "ToolTip": "Write the selected cutting sheet (or the only one) as DXF, SVG and PDF, "
+            "with assembly instructions and a report, into a folder",
+        }
+
+    def IsActive(self):
+        doc = FreeCAD.ActiveDocument
+        return doc is not None and any(is_cutting_sheet(o) for o in doc.Objects)
+
+    def Activated(self):
+        from PySide import QtGui
+
+        obj = selected_cutting_sheet(FreeCAD.ActiveDocument)
+        if obj is None:
+            FreeCAD.Console.PrintError(
+                f"{COMMAND_ID}: select a cutting sheet (the document has several)\n"
+            )
+            return
+        folder = QtGui.QFileDialog.getExistingDirectory(
+            FreeCADGui.getMainWindow(), f"Export {obj.Label} into"
+        )
+        if not folder:
+            return
+        try:
+            paths = export_cutting_sheet(obj, folder)
+        except (OSError, ValueError) as error:
+            FreeCAD.Console.PrintError(f"{COMMAND_ID}: {error}\n")
+            return
+        report(obj, paths)
+
+
+def report(obj, paths):
+    """Prints the written files and the layout's findings to the report view."""
+    lines = [f"{obj.Label}: wrote"]
+    for kind, written in paths.items():
+        for path in written if isinstance(written, list) else [written]:
+            lines.append(f"  {kind}: {path}")
+    FreeCAD.Console.PrintMessage("\n".join(lines) + "\n")
+    for line in obj.Diagnostics:
+        FreeCAD.Console.PrintWarning(f"{obj.Label}: {line}\n")
+    with open(paths["report"]) as f:
+        checks = json.load(f)
+    if not checks["round_trip"]["ok"]:
+        FreeCAD.Console.PrintError(f"{obj.Label}: the flat pieces do not fold back into the card\n")
+    for error in checks["errors"]:
+        FreeCAD.Console.PrintError(f"{obj.Label}: {error['message']}\n")
+
+
+FreeCADGui.addCommand(COMMAND_ID, ExportSheetsCommand())

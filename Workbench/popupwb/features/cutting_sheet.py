@@ -1,0 +1,297 @@
+"""CuttingSheet: a PopUpCard laid out flat on sheets of paper, to cut, crease and glue.
+
+Recompute lays out the card's current design with the core (sheets.export.layout,
+docs/SHEET_FORMAT.md) and keeps the sheet set in SheetSetJson, so export writes what is shown
+without laying out again. Shape: one sub-compound per sheet, side by side like sheets.dxf (sheet k
+at x = k * (paper width + 20 mm)), holding each patch as an exact planar face at z = 0, then the
+fold lines and the tab outlines as wires. With MakePages, one TechDraw page per sheet
+(sheets.techdraw_pages).
+
+A changed FoldAngle recomputes the card, and so this feature: it lays out again only when the
+design, an option or the page settings changed (InputDigest). The module path, class name and
+property names are stored in .FCStd files: never rename them.
+"""
+
+import collections
+import hashlib
+import json
+import re
+
+import FreeCAD
+
+from popupwb import assembly
+from popupwb.features.property_adder import property_adder
+from popupwb.stateless_proxy import StatelessProxy
+
+TYPE = "PopUp::CuttingSheet"
+VERSION = "1"
+CUSTOM = "Custom"
+PAPERS = ["A4", "A3", "Letter", "Tabloid", CUSTOM]
+
+# A layout option as a property: kind "length" (App::PropertyDistance, signed so that the core,
+# not FreeCAD's clamping, judges a negative value), "angle" (degrees) or "bool".
+Option = collections.namedtuple("Option", "prop name kind doc")
+OPTIONS = (
+    Option("Margin", "margin", "length", "Blank border kept on every side of the paper"),
+    Option("Spacing", "spacing", "length", "Gap between pieces, at least Kerf + 1 mm"),
+    Option("Kerf", "kerf", "length", "Width the cutter removes; cut lines move out by half"),
+    Option("TabWidth", "tab_width", "length", "Depth of a glue tab, away from its crease"),
+    Option("TabAngle", "tab_angle", "angle", "Angle between a tab's crease and its sides"),
+    Option("MinTabWidth", "min_tab_width", "length", "Narrowest glue tab worth gluing"),
+    Option("MinFeature", "min_feature", "length", "Narrower paper is reported as fragile"),
+    Option("FoldHints", "fold_hints", "bool", "Print M or V beside each fold"),
+)
+_PROPERTY_TYPES = {
+    "length": "App::PropertyDistance",
+    "angle": "App::PropertyAngle",
+    "bool": "App::PropertyBool",
+}
+LINE_STYLE_NAMES = "1 continuous, 2 dash, 3 dot, 4 dash-dot, 5 dash-dot-dot"
+
+
+def is_cutting_sheet(obj):
+    """True for document objects driven by CuttingSheet."""
+    return getattr(getattr(obj, "Proxy", None), "TYPE", None) == TYPE
+
+
+class CuttingSheet(StatelessProxy):
+    """Proxy of a Part::FeaturePython: the flat layout of its Card."""
+
+    TYPE = TYPE
+
+    def __init__(self, obj):
+        obj.Proxy = self
+        self.add_properties(obj)
+
+    def add_properties(self, obj):
+        """Adds every property that is missing, so files written by older versions upgrade."""
+        from popupwb.sheets.export import LAYOUT_DEFAULTS
+
+        have = set(obj.PropertiesList)
+        add = property_adder(obj, "Sheets")
+        add("App::PropertyLink", "Card", "The PopUpCard laid out on the sheets")
+        if "Paper" not in have:
+            obj.addProperty(
+                "App::PropertyEnumeration",
+                "Paper",
+                "Sheets",
+                "Paper size (portrait); Custom uses PaperWidth and PaperHeight",
+            )
+            obj.Paper = PAPERS
+            obj.Paper = LAYOUT_DEFAULTS["paper"]
+        add("App::PropertyDistance", "PaperWidth", "Paper width when Paper is Custom", 210.0)
+        add("App::PropertyDistance", "PaperHeight", "Paper height when Paper is Custom", 297.0)
+        for option in OPTIONS:
+            add(_PROPERTY_TYPES[option.kind], option.prop, option.doc, LAYOUT_DEFAULTS[option.name])
+        add(
+            "App::PropertyInteger",
+            "MountainStyle",
+            f"TechDraw line style of mountain folds on the pages ({LINE_STYLE_NAMES})",
+            4,
+        )
+        add(
+            "App::PropertyInteger",
+            "ValleyStyle",
+            f"TechDraw line style of valley folds on the pages ({LINE_STYLE_NAMES})",
+            2,
+        )
+        add("App::PropertyBool", "MakePages", "Draw one TechDraw page per sheet", True)
+
+        report = property_adder(obj, "Report")
+        for name, doc in (
+            ("SheetCount", "Sheets of paper used"),
+            ("ShelfSheetCount", "Sheets a simple shelf packer would use, for comparison"),
+            ("PieceCount", "Pieces to cut"),
+            ("TabCount", "Glue tabs"),
+        ):
+            report("App::PropertyInteger", name, doc, 0, mode=1, output=True)
+        for name, doc in (
+            ("CutLength", "Total length of the cut lines"),
+            ("StackHeight", "Thickness of the folded card's thickest stack of paper"),
+            ("RoundTripError", "Largest distance between the re-folded flat pieces and the design"),
+        ):
+            report("App::PropertyLength", name, doc, 0.0, mode=1, output=True)
+        report(
+            "App::PropertyBool",
+            "RoundTripOk",
+            "True when the flat pieces fold back into the design within 1e-6 x the card's size",
+            False,
+            mode=1,
+            output=True,
+        )
+        report(
+            "App::PropertyStringList",
+            "Diagnostics",
+            "Findings of the last layout (severity: code: message [subject])",
+            mode=1,
+            output=True,
+        )
+        report(
+            "App::PropertyString",
+            "SheetSetJson",
+            "The last layout (docs/SHEET_FORMAT.md), what export writes",
+            "",
+            mode=2,
+            output=True,
+        )
+        report(
+            "App::PropertyString",
+            "InputDigest",
+            "Digest of the design and settings the outputs were made from",
+            "",
+            mode=2,
+            output=True,
+        )
+        add("App::PropertyString", "Version", "Version of this object's properties", VERSION, 1)
+
+    # --- FreeCAD callbacks ------------------------------------------------------------------
+
+    def onDocumentRestored(self, obj):
+        self.add_properties(obj)
+        if FreeCAD.GuiUp:
+            from popupwb.viewproviders.card_viewprovider import attach_if_missing
+            from popupwb.viewproviders.cutting_sheet_viewprovider import (
+                CuttingSheetViewProvider,
+            )
+
+            attach_if_missing(obj, CuttingSheetViewProvider)
+
+    def execute(self, obj):
+        from popupwb.sheets import export
+
+        built = assembly.assembly_of(self._card(obj))
+        options = layout_options(obj)
+        self._check_styles(obj)
+        digest = hashlib.sha1(
+            repr((built.key, options, obj.MakePages, obj.MountainStyle, obj.ValleyStyle)).encode()
+        ).hexdigest()[:16]
+        if digest == obj.InputDigest and self._pages_complete(obj):
+            return  # a new FoldAngle: same design, same sheets
+        try:
+            sheet_set = export.layout(built.scaffold, **options)
+        except ValueError as error:  # DesignError names the option and its range
+            raise self._error(obj, property_message(str(error), obj)) from error
+        errors = [d for d in sheet_set["diagnostics"] if d["severity"] == "error"]
+        if errors:
+            raise self._error(obj, "; ".join(f"{d['subject']}: {d['message']}" for d in errors))
+        self._show(obj, sheet_set)
+        obj.InputDigest = digest
+
+    # --- steps of execute -------------------------------------------------------------------
+
+    def _card(self, obj):
+        """The linked card, built; raises naming what is wrong with it."""
+        card = obj.Card
+        if card is None or not assembly.is_card(card):
+            found = "empty" if card is None else card.Label
+            raise self._error(obj, f"Card = {found}, must be a PopUpCard")
+        built = assembly.assembly_of(card)
+        if built.card_error:
+            raise self._error(
+                obj, f"the card {card.Label} is in error, fix it first: {built.card_error}"
+            )
+        if built.errors:
+            # Sheets without a mechanism the user designed would be wrong: none rather than those.
+            name, message = next(iter(built.errors.items()))
+            label = obj.Document.getObject(name).Label
+            raise self._error(obj, f"{label} of {card.Label} is in error, fix it first: {message}")
+        return card
+
+    def _check_styles(self, obj):
+        from popupwb.sheets.techdraw_pages import LINE_STYLES
+
+        for name in ("MountainStyle", "ValleyStyle"):
+            value = getattr(obj, name)
+            if obj.MakePages and value not in LINE_STYLES:
+                raise self._error(obj, f"{name} = {value}, must be 1 to 5 ({LINE_STYLE_NAMES})")
+
+    def _pages_complete(self, obj):
+        from popupwb.sheets.techdraw_pages import pages_of
+
+        pages = len(pages_of(obj))
+        return pages == (obj.SheetCount if obj.MakePages else 0)
+
+    def _error(self, obj, message):
+        """Records `message` and returns it as the ValueError execute raises: FreeCAD puts the
+        feature in error and keeps the last good shape; export refuses an empty SheetSetJson."""
+        message = f"{obj.Label}: {message}"
+        obj.Diagnostics = [f"error: {message}"]
+        obj.SheetSetJson = ""
+        obj.InputDigest = ""
+        obj.RoundTripOk = False
+        return ValueError(message)
+
+    def _show(self, obj, sheet_set):
+        import Part
+
+        from popupwb.sheets import techdraw_pages
+        from popupwb.sheets.dxf_writer import SHEET_GAP
+        from popupwb.sheets.sheet_shapes import flat_sheet
+
+        pitch = sheet_set["paper"]["width"] + SHEET_GAP
+        sheets = []
+        for index in range(len(sheet_set["sheets"])):
+            sheet = flat_sheet(sheet_set, index)
+            sheet.translate(FreeCAD.Vector(index * pitch, 0.0, 0.0))
+            sheets.append(sheet)
+        placement = obj.Placement  # assigning Shape resets it to the shape's own
+        obj.Shape = Part.makeCompound(sheets)
+        obj.Placement = placement
+
+        pieces = sheet_set["pieces"]
+        obj.SheetCount = len(sheet_set["sheets"])
+        obj.ShelfSheetCount = sheet_set["shelf_sheet_count"]
+        obj.PieceCount = len(pieces)
+        obj.TabCount = sum(len(piece["tabs"]) for piece in pieces)
+        obj.CutLength = sheet_set["cut_length"]
+        obj.StackHeight = sheet_set["stack_height"]
+        obj.RoundTripError = sheet_set["round_trip"]["max_error"]
+        obj.RoundTripOk = bool(sheet_set["round_trip"]["ok"])
+        obj.Diagnostics = [diagnostic_line(d) for d in sheet_set["diagnostics"]]
+        obj.SheetSetJson = json.dumps(sheet_set)
+        if obj.MakePages:
+            techdraw_pages.update_pages(obj, sheet_set, obj.MountainStyle, obj.ValleyStyle)
+        else:
+            techdraw_pages.remove_pages(obj)
+
+
+def layout_options(obj):
+    """The core's layout options from the properties (mm, degrees)."""
+    if obj.Paper == CUSTOM:
+        paper = f"{obj.PaperWidth.Value}x{obj.PaperHeight.Value}"
+    else:
+        paper = obj.Paper
+    options = {"paper": paper}
+    for option in OPTIONS:
+        value = getattr(obj, option.prop)
+        options[option.name] = bool(value) if option.kind == "bool" else float(value.Value)
+    return options
+
+
+def property_message(text, obj):
+    """The core's "option: message; ..." with each option named by its property:
+    "tab_angle: tab_angle = 0, must be ..." becomes "TabAngle: tab_angle = 0, must be ..."."""
+    names = {option.name: option.prop for option in OPTIONS}
+    names["paper"] = "PaperWidth/PaperHeight" if obj.Paper == CUSTOM else "Paper"
+    return re.sub(
+        r"(^|; )(\w+): ", lambda m: f"{m.group(1)}{names.get(m.group(2), m.group(2))}: ", text
+    )
+
+
+def diagnostic_line(diagnostic):
+    """A sheet set diagnostic as one line: "warning: code: message [subject]"."""
+    from popupwb.validity import format_diagnostic
+
+    return f"{diagnostic['severity']}: {format_diagnostic(diagnostic)}"
+
+
+def export_cutting_sheet(obj, folder):
+    """Writes the production files of the CuttingSheet `obj` into `folder` (created if needed) from
+    the layout it keeps; returns {kind: path(s)} as export.export_sheets. Raises ValueError when
+    `obj` has no layout (in error, or never recomputed)."""
+    from popupwb.sheets import export
+
+    if "Invalid" in obj.State or not obj.SheetSetJson:
+        reason = obj.getStatusString() if "Invalid" in obj.State else "never recomputed"
+        raise ValueError(f"{obj.Label}: no layout to export ({reason}); fix it and recompute")
+    return export.export_sheets(json.loads(obj.SheetSetJson), folder)

@@ -1,0 +1,57 @@
+"""make_cutting_sheet: a CuttingSheet laying out a PopUpCard, headless or in the GUI."""
+
+import FreeCAD
+
+from popupwb import assembly
+from popupwb.features.cutting_sheet import CUSTOM, OPTIONS, PAPERS, CuttingSheet
+
+
+def make_cutting_sheet(
+    card,
+    paper="A4",
+    paper_width=None,
+    paper_height=None,
+    make_pages=True,
+    name="CuttingSheet",
+    **options,
+):
+    """Adds a CuttingSheet of `card` (a PopUpCard) to the card's document.
+
+    `paper` is A4, A3, Letter, Tabloid or Custom; `paper_width` and `paper_height` (mm) make it
+    Custom. Other keywords are the core's layout options or the property names: margin, spacing,
+    kerf, tab_width, min_tab_width, min_feature (mm), tab_angle (degrees), fold_hints. The caller
+    recomputes.
+    """
+    if not assembly.is_card(card):
+        raise ValueError(
+            f"make_cutting_sheet: card {getattr(card, 'Label', card)} must be a PopUpCard"
+        )
+    if paper not in PAPERS:
+        raise ValueError(f"make_cutting_sheet: paper = {paper!r}, must be one of {PAPERS}")
+    by_key = {}
+    for option in OPTIONS:
+        by_key[option.name] = by_key[option.prop] = option.prop
+    unknown = sorted(set(options) - set(by_key))
+    if unknown:
+        raise TypeError(
+            f"make_cutting_sheet: unknown option(s) {unknown}; known: "
+            f"{[option.name for option in OPTIONS]}"
+        )
+    obj = card.Document.addObject("Part::FeaturePython", name)
+    CuttingSheet(obj)
+    obj.Card = card
+    obj.Paper = paper
+    if paper_width is not None or paper_height is not None:
+        obj.Paper = CUSTOM
+        if paper_width is not None:
+            obj.PaperWidth = paper_width
+        if paper_height is not None:
+            obj.PaperHeight = paper_height
+    for key, value in options.items():
+        setattr(obj, by_key[key], value)
+    obj.MakePages = make_pages
+    if FreeCAD.GuiUp:
+        from popupwb.viewproviders.cutting_sheet_viewprovider import CuttingSheetViewProvider
+
+        CuttingSheetViewProvider(obj.ViewObject)
+    return obj

@@ -1,0 +1,47 @@
+"""View provider of a CuttingSheet: its icon, its TechDraw pages (and the outlines they draw) as
+children in the tree, and deleting them with it. Module and class names are stored in .FCStd
+files."""
+
+import popupwb
+from popupwb.stateless_proxy import StatelessProxy
+
+
+class CuttingSheetViewProvider(StatelessProxy):
+    """Proxy of the CuttingSheet's Gui::ViewProviderPartExt. Keeps no saved state."""
+
+    ICON = "PopUp_CuttingSheet"
+
+    def __init__(self, vobj):
+        vobj.Proxy = self
+        self.Object = vobj.Object
+
+    def attach(self, vobj):
+        self.Object = vobj.Object
+
+    def getIcon(self):
+        return popupwb.icon_path(self.ICON)
+
+    def updateData(self, obj, prop):
+        return None
+
+    def onChanged(self, vobj, prop):
+        return None
+
+    def claimChildren(self):
+        from popupwb.sheets.techdraw_pages import page_objects, pages_of
+
+        obj = getattr(self, "Object", None)
+        if obj is None:
+            return []
+        children = []
+        for page in pages_of(obj):
+            children.append(page)
+            children.extend(o for o in page_objects(page) if o.TypeId == "Part::Feature")
+        return children
+
+    def onDelete(self, vobj, subelements):
+        # FreeCAD 0.20 calls no unsetupObject of Python features: the pages go here.
+        from popupwb.sheets.techdraw_pages import remove_pages
+
+        remove_pages(vobj.Object)
+        return True
