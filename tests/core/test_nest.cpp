@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <polyclipping/clipper.hpp>
 #include <string>
 #include <tuple>
-#include <polyclipping/clipper.hpp>
 
 #include "nest_shapes_fixture.hpp"
 #include "popup/nest.hpp"

@@ -143,10 +143,10 @@ inline void add_outline(const NestShape& shape, std::size_t index, const NestOpt
                              outline.width <= printable.height();
     if (!fits_upright && !fits_turned) {
         const Paper& paper = options.paper;
-        const std::string paper_label =
-            paper.name.empty() ? "the " + format_mm(paper.width, 1) + " x " +
-                                     format_mm(paper.height, 1) + " mm paper"
-                               : paper.name;
+        const std::string paper_label = paper.name.empty()
+                                            ? "the " + format_mm(paper.width, 1) + " x " +
+                                                  format_mm(paper.height, 1) + " mm paper"
+                                            : paper.name;
         result.fail("piece_does_not_fit",
                     label + " (" + format_mm(size.x(), 1) + " x " + format_mm(size.y(), 1) +
                         " mm) does not fit the printable area " +

@@ -166,9 +166,8 @@ public:
         std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
             return outlines_[a].area > outlines_[b].area;
         });
-        const double printable_mm2 =
-            static_cast<double>(printable_.width()) * printable_.height() /
-            (clipper_scale * clipper_scale);
+        const double printable_mm2 = static_cast<double>(printable_.width()) * printable_.height() /
+                                     (clipper_scale * clipper_scale);
         for (std::size_t shape : order) {
             std::optional<Spot> spot;
             std::size_t sheet = 0;
@@ -200,11 +199,10 @@ public:
                 placement.sheet = static_cast<int>(s);
                 placement.rotation_deg = 90.0 * orientation.quarter_turns;
                 // sheet point = turned (p - shift) - frame_origin + position, in units
-                placement.translation =
-                    to_vec2({placed.position.X - orientation.frame_origin.X,
-                             placed.position.Y - orientation.frame_origin.Y}) -
-                    nest_detail::quarter_turn(outlines_[placed.shape].shift,
-                                              orientation.quarter_turns);
+                placement.translation = to_vec2({placed.position.X - orientation.frame_origin.X,
+                                                 placed.position.Y - orientation.frame_origin.Y}) -
+                                        nest_detail::quarter_turn(outlines_[placed.shape].shift,
+                                                                  orientation.quarter_turns);
             }
         }
         result.sheet_count = static_cast<int>(sheets_.size());
@@ -229,8 +227,8 @@ private:
     {
         const Orientation& moving = variants_[shape].orientations[o];
         // Inner-fit rectangle: the frame origin keeps the outline within the printable area.
-        const Bounds inner_fit{printable_.left, printable_.bottom,
-                               printable_.right - moving.width, printable_.top - moving.height};
+        const Bounds inner_fit{printable_.left, printable_.bottom, printable_.right - moving.width,
+                               printable_.top - moving.height};
         if (inner_fit.width() < 0 || inner_fit.height() < 0)
             return std::nullopt;
         // Clipper drops a zero-width rectangle: widen it by one unit (a nanometre, far inside
@@ -254,8 +252,8 @@ private:
                 placed.position.Y + fixed_box.bottom - moving.grown_box.top >= top)
                 continue;
             for (const Path& loop : cached_no_fit_polygon(placed, shape, o))
-                clipper.AddPath(nest_detail::translated(loop, placed.position),
-                                ClipperLib::ptClip, true);
+                clipper.AddPath(nest_detail::translated(loop, placed.position), ClipperLib::ptClip,
+                                true);
         }
         Paths free;
         clipper.Execute(ClipperLib::ctDifference, free, ClipperLib::pftNonZero,

@@ -95,9 +95,8 @@ Result<Nesting> shelf_pack(const std::vector<NestShape>& shapes, const NestOptio
         Placement& placement = result.value.placements[box.shape];
         placement.sheet = shelf->sheet;
         placement.rotation_deg = 90.0 * quarter_turns;
-        placement.translation =
-            to_vec2({corner.X - turned_low.X, corner.Y - turned_low.Y}) -
-            nest_detail::quarter_turn(outline.shift, quarter_turns);
+        placement.translation = to_vec2({corner.X - turned_low.X, corner.Y - turned_low.Y}) -
+                                nest_detail::quarter_turn(outline.shift, quarter_turns);
     }
     result.value.sheet_count = static_cast<int>(sheet_top.size());
     return result;
