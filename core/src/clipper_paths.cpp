@@ -33,6 +33,18 @@ Loop2 to_loop(const ClipperLib::Path& path)
     return loop;
 }
 
+ClipperLib::Paths counter_clockwise_paths(const std::vector<Loop2>& loops)
+{
+    ClipperLib::Paths paths;
+    for (const Loop2& loop : loops) {
+        ClipperLib::Path path = to_path(loop);
+        if (!ClipperLib::Orientation(path))
+            ClipperLib::ReversePath(path);
+        paths.push_back(std::move(path));
+    }
+    return paths;
+}
+
 double path_area(const ClipperLib::Path& path)
 {
     return ClipperLib::Area(path) / (clipper_scale * clipper_scale);

@@ -14,6 +14,9 @@ ClipperLib::IntPoint to_int_point(const Vec2& p);
 Vec2 to_vec2(const ClipperLib::IntPoint& p);
 ClipperLib::Path to_path(const Loop2& loop);
 Loop2 to_loop(const ClipperLib::Path& path);
+/// The loops as paths, each turned counter-clockwise: filled non-zero, winding then does not
+/// matter.
+ClipperLib::Paths counter_clockwise_paths(const std::vector<Loop2>& loops);
 /// Area in mm² (signed: positive for counter-clockwise).
 double path_area(const ClipperLib::Path& path);
 

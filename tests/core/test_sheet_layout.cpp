@@ -39,24 +39,25 @@ double area(const ClipperLib::Paths& paths)
     return a;
 }
 
-double overlap(const Loop2& a, const Loop2& b)
+// Area (mm²) of the Clipper operation between two loops.
+double clipped(const Loop2& a, const Loop2& b, ClipperLib::ClipType operation)
 {
     ClipperLib::Clipper c;
     c.AddPath(path_of(a), ClipperLib::ptSubject, true);
     c.AddPath(path_of(b), ClipperLib::ptClip, true);
     ClipperLib::Paths out;
-    c.Execute(ClipperLib::ctIntersection, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    c.Execute(operation, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
     return area(out);
+}
+
+double overlap(const Loop2& a, const Loop2& b)
+{
+    return clipped(a, b, ClipperLib::ctIntersection);
 }
 
 double outside(const Loop2& a, const Loop2& region)
 {
-    ClipperLib::Clipper c;
-    c.AddPath(path_of(a), ClipperLib::ptSubject, true);
-    c.AddPath(path_of(region), ClipperLib::ptClip, true);
-    ClipperLib::Paths out;
-    c.Execute(ClipperLib::ctDifference, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-    return area(out);
+    return clipped(a, region, ClipperLib::ctDifference);
 }
 
 double segment_distance(const Vec2& p, const Vec2& q, const Vec2& a, const Vec2& b)

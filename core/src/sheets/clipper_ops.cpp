@@ -6,18 +6,6 @@ namespace popup::sheets {
 
 namespace {
 
-ClipperLib::Paths oriented(const std::vector<Loop2>& loops)
-{
-    ClipperLib::Paths paths;
-    for (const Loop2& loop : loops) {
-        ClipperLib::Path path = to_path(loop);
-        if (!ClipperLib::Orientation(path))
-            ClipperLib::ReversePath(path);
-        paths.push_back(std::move(path));
-    }
-    return paths;
-}
-
 double total_area(const ClipperLib::Paths& paths)
 {
     double area = 0.0;
@@ -31,8 +19,8 @@ double total_area(const ClipperLib::Paths& paths)
 double overlap_area(const std::vector<Loop2>& a, const std::vector<Loop2>& b)
 {
     ClipperLib::Clipper clipper;
-    clipper.AddPaths(oriented(a), ClipperLib::ptSubject, true);
-    clipper.AddPaths(oriented(b), ClipperLib::ptClip, true);
+    clipper.AddPaths(counter_clockwise_paths(a), ClipperLib::ptSubject, true);
+    clipper.AddPaths(counter_clockwise_paths(b), ClipperLib::ptClip, true);
     ClipperLib::Paths result;
     clipper.Execute(ClipperLib::ctIntersection, result, ClipperLib::pftNonZero,
                     ClipperLib::pftNonZero);
@@ -42,12 +30,12 @@ double overlap_area(const std::vector<Loop2>& a, const std::vector<Loop2>& b)
 double area_outside(const Loop2& a, const Loop2& outer, const std::vector<Loop2>& holes)
 {
     ClipperLib::Clipper region;
-    region.AddPaths(oriented({outer}), ClipperLib::ptSubject, true);
-    region.AddPaths(oriented(holes), ClipperLib::ptClip, true);
+    region.AddPaths(counter_clockwise_paths({outer}), ClipperLib::ptSubject, true);
+    region.AddPaths(counter_clockwise_paths(holes), ClipperLib::ptClip, true);
     ClipperLib::Paths paper;
     region.Execute(ClipperLib::ctDifference, paper, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
     ClipperLib::Clipper clipper;
-    clipper.AddPaths(oriented({a}), ClipperLib::ptSubject, true);
+    clipper.AddPaths(counter_clockwise_paths({a}), ClipperLib::ptSubject, true);
     clipper.AddPaths(paper, ClipperLib::ptClip, true);
     ClipperLib::Paths result;
     clipper.Execute(ClipperLib::ctDifference, result, ClipperLib::pftNonZero,

@@ -14,18 +14,6 @@ using ClipperLib::Paths;
 
 constexpr double miter_limit = 8.0; // keeps tab and card corners sharp under the kerf offset
 
-Paths counter_clockwise(const std::vector<Loop2>& loops)
-{
-    Paths paths;
-    for (const Loop2& loop : loops) {
-        ClipperLib::Path path = to_path(loop);
-        if (!ClipperLib::Orientation(path))
-            ClipperLib::ReversePath(path);
-        paths.push_back(std::move(path));
-    }
-    return paths;
-}
-
 void collect(const ClipperLib::PolyNode& node, std::vector<Region>& regions)
 {
     for (const ClipperLib::PolyNode* outer : node.Childs) {
@@ -84,8 +72,8 @@ void cut_outline(LocalPiece& piece, double kerf)
         openings.insert(openings.end(), holes.begin(), holes.end());
 
     ClipperLib::Clipper clipper;
-    clipper.AddPaths(counter_clockwise(paper), ClipperLib::ptSubject, true);
-    clipper.AddPaths(counter_clockwise(openings), ClipperLib::ptClip, true);
+    clipper.AddPaths(counter_clockwise_paths(paper), ClipperLib::ptSubject, true);
+    clipper.AddPaths(counter_clockwise_paths(openings), ClipperLib::ptClip, true);
     ClipperLib::PolyTree tree;
     clipper.Execute(ClipperLib::ctDifference, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
     piece.cut_nominal.clear();
