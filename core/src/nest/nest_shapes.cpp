@@ -1,15 +1,19 @@
 // True-shape nesting with no-fit polygons, bottom-left first fit (the placement of SVGnest and
-// Deepnest, without their genetic search over orders). Shapes go largest first; each takes the
-// lowest, then leftmost, spot on the first sheet that has room, over its allowed quarter turns.
+// Deepnest, without their genetic search over orders: four greedy orders are tried and the best
+// kept). Each shape takes the lowest, then leftmost, spot on the first sheet that has room, over
+// its allowed quarter turns.
 // Spots come from Clipper: the inner-fit rectangle minus the union of the no-fit polygons with
 // the shapes already on the sheet. Outlines are grown by half the spacing (plus a hair against
 // rounding) so that touching grown outlines keep the full spacing. Only outer loops count: no
 // shape goes into another's hole (holes in pop-up pieces are slits and windows, seldom roomy).
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <functional>
 #include <map>
 #include <numeric>
 #include <optional>
+#include <random>
 #include <tuple>
 
 #include "convex_parts.hpp"
@@ -29,6 +33,7 @@ using ClipperLib::Paths;
 using nest_detail::Bounds;
 using nest_detail::Outline;
 
+constexpr int kSwapRounds = 24;  // order swaps tried after the greedy orders
 constexpr double kSafety = 1e-4; // mm added to half the spacing: Clipper rounds to whole nm
 
 /// One allowed quarter turn of a shape, in a frame where the turned outline's bounding box
@@ -158,14 +163,10 @@ public:
         }
     }
 
-    /// Each shape's sheet and spot, largest shapes first.
-    void place_all()
+    /// Each shape's sheet and spot, in the given order (on empty sheets).
+    void place_all(const std::vector<std::size_t>& order)
     {
-        std::vector<std::size_t> order(outlines_.size());
-        std::iota(order.begin(), order.end(), 0);
-        std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-            return outlines_[a].area > outlines_[b].area;
-        });
+        sheets_.clear();
         const double printable_mm2 = static_cast<double>(printable_.width()) * printable_.height() /
                                      (clipper_scale * clipper_scale);
         for (std::size_t shape : order) {
@@ -185,6 +186,20 @@ public:
             sheets_[sheet].placed.push_back({shape, spot->orientation, spot->position});
             sheets_[sheet].used_area += outlines_[shape].area;
         }
+    }
+
+    /// How high the last sheet is filled: of two nestings on as many sheets, the lower leaves
+    /// more room.
+    cInt last_sheet_top() const
+    {
+        cInt top = 0;
+        if (sheets_.empty())
+            return top;
+        for (const Placed& placed : sheets_.back().placed)
+            top =
+                std::max(top, placed.position.Y +
+                                  variants_[placed.shape].orientations[placed.orientation].height);
+        return top;
     }
 
     Nesting nesting() const
@@ -300,10 +315,55 @@ Result<Nesting> nest_shapes(const std::vector<NestShape>& shapes, const NestOpti
     const Result<std::vector<Outline>> prepared = nest_detail::prepare_outlines(shapes, options);
     if (!prepared.ok)
         return nest_detail::failed_nesting(prepared);
-    Nester nester(prepared.value, options);
-    nester.place_all();
+    // Bottom-left fill depends on the order: try the usual greedy orders (largest area, longest
+    // side, largest bounding box, widest) and keep the best. No-fit polygons are cached across.
+    const std::vector<Outline>& outlines = prepared.value;
+    const std::vector<std::function<double(const Outline&)>> keys{
+        [](const Outline& o) { return o.area; },
+        [](const Outline& o) { return double(std::max(o.width, o.height)); },
+        [](const Outline& o) { return double(o.width) * double(o.height); },
+        [](const Outline& o) { return double(std::min(o.width, o.height)); },
+    };
+    Nester nester(outlines, options);
     Result<Nesting> result;
-    result.value = nester.nesting();
+    cInt best_top = 0;
+    std::vector<std::size_t> best_order;
+    auto attempt = [&](const std::vector<std::size_t>& order) {
+        nester.place_all(order);
+        Nesting candidate = nester.nesting();
+        const cInt top = nester.last_sheet_top();
+        if (!best_order.empty() &&
+            std::tie(candidate.sheet_count, top) >= std::tie(result.value.sheet_count, best_top))
+            return;
+        result.value = std::move(candidate);
+        best_top = top;
+        best_order = order;
+    };
+    for (const auto& key : keys) {
+        std::vector<std::size_t> order(outlines.size());
+        std::iota(order.begin(), order.end(), 0);
+        std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+            return key(outlines[a]) > key(outlines[b]);
+        });
+        attempt(order);
+    }
+    // Then a short hill climb: swap two shapes of the best order, keep what packs better. A
+    // fixed seed keeps the result the same on every run.
+    // No order needs fewer sheets than the area allows: stop there.
+    double total_area = 0.0;
+    for (const Outline& o : outlines)
+        total_area += o.area;
+    const Bounds printable = nest_detail::printable_area(options);
+    const int fewest = int(std::ceil(total_area * clipper_scale * clipper_scale /
+                                     (double(printable.width()) * double(printable.height()))));
+    std::mt19937 random(20261122u);
+    for (int round = 0;
+         round < kSwapRounds && outlines.size() > 1 && result.value.sheet_count > fewest; ++round) {
+        std::vector<std::size_t> order = best_order;
+        std::uniform_int_distribution<std::size_t> pick(0, order.size() - 1);
+        std::swap(order[pick(random)], order[pick(random)]);
+        attempt(order);
+    }
     return result;
 }
 
