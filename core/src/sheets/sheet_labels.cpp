@@ -96,7 +96,9 @@ void add_labels(LocalPiece& piece, const std::string& piece_id, bool fold_hints)
                                 reading_angle(t.polygon[0], t.polygon[1])});
     for (const GlueArea& g : piece.glue) {
         const double depth = distance_to_segment(g.polygon[2], g.polygon[0], g.polygon[1]);
-        piece.labels.push_back({g.code, "glue", mean(g.polygon), std::clamp(0.45 * depth, 1.0, 5.0),
+        // A tab glued to the paper's other face: the mark is printed here, the glue goes there.
+        const std::string text = g.front ? g.code : g.code + " (back)";
+        piece.labels.push_back({text, "glue", mean(g.polygon), std::clamp(0.3 * depth, 1.0, 5.0),
                                 reading_angle(g.polygon[0], g.polygon[1])});
     }
     if (!fold_hints)
