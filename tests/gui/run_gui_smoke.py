@@ -42,6 +42,8 @@ COMMANDS = [
     "PopUp_CheckValidity",
     "PopUp_Animate",
     "PopUp_LoadDesign",
+    "PopUp_CuttingSheet",
+    "PopUp_ExportSheets",
 ]
 WIDTH, HEIGHT = 800, 600
 
@@ -286,6 +288,38 @@ def main():
 
     mechanisms()
     motion_mechanisms()
+    cutting_sheet()
+
+
+def cutting_sheet():
+    # PopUp_CuttingSheet on the selected card, its TechDraw page, and the export past its dialog.
+    from popupwb import make
+    from popupwb.features.cutting_sheet import export_cutting_sheet
+
+    doc = FreeCAD.newDocument("GuiSmokeSheets")
+    card = make.make_card(doc, preset="A5")
+    make.make_tent_fold(card, name="Tent")
+    doc.recompute()
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(card)
+    Gui.runCommand("PopUp_CuttingSheet")
+    sheets = [o for o in doc.Objects if "SheetSetJson" in o.PropertiesList]
+    pages = [o for o in doc.Objects if o.TypeId == "TechDraw::DrawPage"]
+    sheet = sheets[0] if sheets else None
+    result["cutting_sheet"] = (
+        len(sheets) == 1
+        and "Invalid" not in sheet.State
+        and sheet.PieceCount == 2
+        and sheet.Shape.isValid()
+        and len(pages) == sheet.SheetCount
+        and sheet.RoundTripOk
+    )
+    folder = os.path.join(os.path.dirname(CONFIG["result"]), "sheets")
+    paths = export_cutting_sheet(sheet, folder) if sheet else {}
+    result["sheets_exported"] = all(
+        os.path.isfile(paths.get(k, "")) for k in ("dxf", "pdf", "instructions", "report")
+    )
+    FreeCAD.closeDocument(doc.Name)
 
 
 def motion_mechanisms():
@@ -490,6 +524,8 @@ def main():
     ]:
         check(f"{command} builds on the selected card", result.get(command) is True)
     check("PopUp_LoadDesign is one undo step", result.get("load_undone") is True)
+    check("PopUp_CuttingSheet lays out the selected card", result.get("cutting_sheet") is True)
+    check("the cutting sheet exports its files", result.get("sheets_exported") is True)
     check("demo card reported valid", result.get("valid") is True, result.get("diagnostics"))
     pixels = result.get("non_white_pixels", 0)
     check(
