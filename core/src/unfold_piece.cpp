@@ -113,7 +113,8 @@ Result<FlatPiece> unfold_piece(const Scaffold& input, const std::vector<int>& pi
         if (gap > tol) {
             std::ostringstream m;
             m << "hinge " << h->id << " closes a loop of folds that does not lie flat: its two "
-              << "sides land " << gap << " mm apart (make one hinge of the loop a tab joint: \"joint\": \"tab\")";
+              << "sides land " << gap
+              << " mm apart (make one hinge of the loop a tab joint: \"joint\": \"tab\")";
             r.fail("not_developable", m.str(), "hinge " + std::to_string(h->id));
         }
     }
