@@ -9,6 +9,7 @@
 #include <polyclipping/clipper.hpp>
 
 #include "popup/card.hpp"
+#include "popup/mechanisms/floating_layer.hpp"
 #include "popup/mechanisms/rotation_arm.hpp"
 #include "popup/sheet_layout.hpp"
 #include "sheet_designs.hpp"
@@ -379,4 +380,34 @@ TEST(SheetLayout, ManyPieceCardNestsTighterThanShelves)
     const SheetSet square = layout_sheets(s, o).value;
     expect_usable(s, square, "many pieces, 300 mm squares");
     EXPECT_LE(square.sheet_count, 0.8 * square.shelf_sheet_count);
+}
+
+TEST(SheetLayout, CrowdedJointsMakeRoomForEachOther)
+{
+    // A platform reaching 0.5 mm past its legs: the legs' tabs need the room under the platform
+    // that the backbone's tab took first; the backbone's narrows to leave them the narrowest tab.
+    Scaffold layer = make_card(CardParams{200, 140}).value;
+    FloatingLayerParams p;
+    p.offset = 40;
+    p.width = 40.7;
+    p.height = 29.8;
+    p.support = 8.0;
+    p.overhang = 0.5;
+    ASSERT_TRUE(add_floating_layer(layer, central_fold(layer), p).ok);
+    const SheetSet crowded = layout_sheets(layer, a3()).value;
+    expect_usable(layer, crowded, "crowded platform");
+
+    // A short arm: the tab along its spine is held back from the spine's ends, where the rounded
+    // outline must still join it to its wing.
+    Scaffold arm = make_card(CardParams{200, 140}).value;
+    RotationArmParams r;
+    r.offset = 40;
+    r.spine = 23.3;
+    r.run = 13.9;
+    r.arm = 5.5;
+    ASSERT_TRUE(add_rotation_arm(arm, central_fold(arm), r).ok);
+    const SheetSet short_arm = layout_sheets(arm, a3()).value;
+    expect_usable(arm, short_arm, "short arm");
+    for (const SheetPiece& piece : short_arm.pieces)
+        EXPECT_EQ(piece.cut_nominal.size(), 1u) << piece.id;
 }

@@ -1,9 +1,12 @@
 #include "glue_tabs.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
+#include <tuple>
 
+#include "../polygon_2d.hpp"
 #include "clipper_ops.hpp"
 
 namespace popup::sheets {
@@ -37,6 +40,18 @@ Vec2 mean(const Loop2& loop)
     return sum / double(loop.size());
 }
 
+// The segment runs through the polygon's inside (touching its edge is not crossing).
+bool crosses(const Loop2& polygon, const Vec2& a, const Vec2& b)
+{
+    constexpr int samples = 64;
+    for (int k = 1; k < samples; ++k) {
+        const Vec2 q = a + (b - a) * (double(k) / samples);
+        if (point_in_polygon_or_near(polygon, q, -1e-6))
+            return true;
+    }
+    return false;
+}
+
 std::string patch_name(const Scaffold& s, int id)
 {
     const Patch& p = *s.find_patch(id);
@@ -66,7 +81,7 @@ struct Fit {
 // joint h that overlaps nothing; width 0 when even the narrowest does.
 Fit fit_tab(const Scaffold& s, const Hinge& h, const LocalPiece& carrier, int carrier_patch,
             const LocalPiece& target, int target_patch, const BendSamples& bends,
-            const SheetOptions& options)
+            const SheetOptions& options, const std::vector<Loop2>& reserved = {})
 {
     bool bent = false;
     const bool front =
@@ -89,10 +104,25 @@ Fit fit_tab(const Scaffold& s, const Hinge& h, const LocalPiece& carrier, int ca
     std::vector<Loop2> own = carrier.flat.outlines;
     for (const GlueTab& t : carrier.tabs)
         own.push_back(t.polygon);
-    std::vector<Loop2> taken;
+    std::vector<Loop2> taken = reserved;
     for (const GlueArea& g : target.glue)
         if (g.front == front) // the paper's other face is free
             taken.push_back(g.polygon);
+    // Where other pieces stand on the target patch's same face: a glue area reaching under them
+    // would be glued over by their own tabs.
+    std::vector<std::array<Vec2, 2>> standing;
+    for (const Hinge& other : s.hinges) {
+        if (other.kind != JointKind::tab || other.id == h.id ||
+            (other.patch_a != target_patch && other.patch_b != target_patch))
+            continue;
+        const int on = other.patch_a == target_patch ? other.patch_b : other.patch_a;
+        const bool on_front =
+            bend_direction(s, bends, target_patch, target.printed_normal(s, target_patch), on,
+                           other.from, bent) == FoldDirection::valley;
+        if (on_front == front) // a piece on the paper's other face is no obstacle
+            standing.push_back({target.flat_point(s, target_patch, other.from),
+                                target.flat_point(s, target_patch, other.to)});
+    }
     const int slot = target.index_of.at(target_patch);
     const Loop2& paper = target.flat.outlines[slot];
     const std::vector<Loop2>& paper_holes = target.flat.holes[slot];
@@ -108,7 +138,10 @@ Fit fit_tab(const Scaffold& s, const Hinge& h, const LocalPiece& carrier, int ca
                         trapezoid(ita, itb, side, width, angle), width, front, crease};
                 if (overlap_area({fit.tab}, own) <= overlap_tolerance &&
                     area_outside(fit.area, paper, paper_holes) <= overlap_tolerance &&
-                    overlap_area({fit.area}, taken) <= overlap_tolerance)
+                    overlap_area({fit.area}, taken) <= overlap_tolerance &&
+                    std::none_of(standing.begin(), standing.end(), [&](const auto& line) {
+                        return crosses(fit.area, line[0], line[1]);
+                    }))
                     return fit;
             }
     return {};
@@ -137,6 +170,69 @@ bool already_tabbed(const Scaffold& s, const Hinge& h, const std::vector<LocalPi
     return false;
 }
 
+const Hinge& hinge_by_id(const Scaffold& s, int id)
+{
+    return *std::find_if(s.hinges.begin(), s.hinges.end(),
+                         [&](const Hinge& h) { return h.id == id; });
+}
+
+// When a joint finds no room, the glue areas already in its way may narrow to leave it the
+// narrowest tab: each is fitted again around that reservation. Returns the joint's fit (width 0
+// when that fails too, and then `pieces` is as it was).
+Fit fit_making_room(const Scaffold& s, const Hinge& h, std::vector<LocalPiece>& pieces,
+                    const std::map<int, int>& position, int carrier_patch, int target_patch,
+                    const BendSamples& bends, const SheetOptions& options)
+{
+    const double angle = options.tab_angle * M_PI / 180.0;
+    LocalPiece& target = pieces[position.at(target_patch)];
+    const Vec2 ta = target.flat_point(s, target_patch, h.from);
+    const Vec2 tb = target.flat_point(s, target_patch, h.to);
+    const Vec2 into = -outward(ta, tb, mean(target.outline(target_patch)));
+    for (const Vec2& side : {into, Vec2(-into)}) {
+        const Loop2 need = trapezoid(ta, tb, side, options.min_tab_width, angle);
+        const std::vector<LocalPiece> before = pieces;
+        std::vector<GlueArea> in_the_way;
+        for (const GlueArea& g : pieces[position.at(target_patch)].glue)
+            if (overlap_area({need}, {g.polygon}) > overlap_tolerance)
+                in_the_way.push_back(g);
+        bool moved = !in_the_way.empty();
+        for (const GlueArea& g : in_the_way) {
+            LocalPiece& other = pieces[g.tab_piece];
+            LocalPiece& under = pieces[position.at(g.patch)];
+            const auto tab = std::find_if(other.tabs.begin(), other.tabs.end(),
+                                          [&](const GlueTab& t) { return t.hinge == g.hinge; });
+            const GlueTab kept = *tab;
+            other.tabs.erase(tab);
+            other.folds.erase(
+                std::find_if(other.folds.begin(), other.folds.end(), [&](const FoldLine& f) {
+                    return f.kind == JointKind::tab && f.hinge == g.hinge;
+                }));
+            under.glue.erase(std::find_if(under.glue.begin(), under.glue.end(),
+                                          [&](const GlueArea& a) { return a.hinge == g.hinge; }));
+            const Fit refit = fit_tab(s, hinge_by_id(s, g.hinge), other, kept.patch, under, g.patch,
+                                      bends, options, {need});
+            if (refit.width == 0.0) {
+                moved = false;
+                break;
+            }
+            other.tabs.push_back({kept.code, kept.hinge, kept.patch, refit.tab, refit.width,
+                                  kept.target_piece, kept.target_patch, refit.front});
+            other.folds.push_back(
+                {g.hinge, refit.tab[0], refit.tab[1], refit.crease, JointKind::tab});
+            under.glue.push_back({g.code, g.hinge, g.patch, refit.area, g.tab_piece, refit.front});
+        }
+        if (moved) {
+            const Fit fit =
+                fit_tab(s, h, pieces[position.at(carrier_patch)], carrier_patch,
+                        pieces[position.at(target_patch)], target_patch, bends, options);
+            if (fit.width > 0.0)
+                return fit;
+        }
+        pieces = before;
+    }
+    return {};
+}
+
 } // namespace
 
 void add_glue_tabs(const Scaffold& s, std::vector<LocalPiece>& pieces,
@@ -163,6 +259,12 @@ void add_glue_tabs(const Scaffold& s, std::vector<LocalPiece>& pieces,
                 fit = fit_tab(s, h, pieces[position.at(earlier)], earlier,
                               pieces[position.at(later)], later, bends, options);
             }
+            for (const auto& [carrier, target] :
+                 {std::pair(later, earlier), std::pair(earlier, later)})
+                if (fit.width == 0.0) {
+                    std::tie(carrier_patch, target_patch) = std::tie(carrier, target);
+                    fit = fit_making_room(s, h, pieces, position, carrier, target, bends, options);
+                }
             const std::string subject = "hinge " + std::to_string(h.id);
             if (fit.width == 0.0) {
                 diagnostics.push_back(

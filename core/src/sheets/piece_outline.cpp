@@ -13,6 +13,7 @@ namespace {
 using ClipperLib::Paths;
 
 constexpr double miter_limit = 8.0; // keeps tab and card corners sharp under the kerf offset
+constexpr double hairline = 1e-4;   // mm: gaps this narrow between a piece's parts are rounding
 
 void collect(const ClipperLib::PolyNode& node, std::vector<Region>& regions)
 {
@@ -35,6 +36,15 @@ Paths region_paths(const std::vector<Region>& regions)
             paths.push_back(to_path(h));
     }
     return paths;
+}
+
+Paths offset_paths(const Paths& paths, double distance)
+{
+    ClipperLib::ClipperOffset offsetter(miter_limit);
+    offsetter.AddPaths(paths, ClipperLib::jtMiter, ClipperLib::etClosedPolygon);
+    Paths out;
+    offsetter.Execute(out, distance * clipper_scale);
+    return out;
 }
 
 std::vector<Region> offset(const Paths& paths, double distance)
@@ -71,8 +81,16 @@ void cut_outline(LocalPiece& piece, double kerf)
     for (const auto& holes : piece.flat.holes)
         openings.insert(openings.end(), holes.begin(), holes.end());
 
+    ClipperLib::Clipper merge;
+    merge.AddPaths(counter_clockwise_paths(paper), ClipperLib::ptSubject, true);
+    Paths merged;
+    merge.Execute(ClipperLib::ctUnion, merged, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    // A tab held back from its crease's ends meets its patch between vertices, where rounding to
+    // whole nanometres can leave a hairline gap: close it (grow, then shrink back).
+    merged = offset_paths(offset_paths(merged, hairline), -hairline);
+
     ClipperLib::Clipper clipper;
-    clipper.AddPaths(counter_clockwise_paths(paper), ClipperLib::ptSubject, true);
+    clipper.AddPaths(merged, ClipperLib::ptSubject, true);
     clipper.AddPaths(counter_clockwise_paths(openings), ClipperLib::ptClip, true);
     ClipperLib::PolyTree tree;
     clipper.Execute(ClipperLib::ctDifference, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
