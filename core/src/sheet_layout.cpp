@@ -194,8 +194,7 @@ Result<SheetSet> layout_sheets(const Scaffold& input, const SheetOptions& option
     }
     Result<Scaffold> checked = validate_scaffold(input);
     if (!checked.ok) {
-        r.ok = false;
-        r.diagnostics = checked.diagnostics;
+        r.fail_with(checked.diagnostics);
         return r;
     }
     const Scaffold& s = checked.value;
@@ -214,8 +213,7 @@ Result<SheetSet> layout_sheets(const Scaffold& input, const SheetOptions& option
     for (int g : order) {
         Result<LocalPiece> flat = lay_flat(s, groups[g], 1e-6 * std::max(set.card_size, 1.0));
         if (!flat.ok) {
-            r.ok = false;
-            r.diagnostics = flat.diagnostics;
+            r.fail_with(flat.diagnostics);
             return r;
         }
         flat.value.depth = depth[g];
@@ -262,8 +260,7 @@ Result<SheetSet> layout_sheets(const Scaffold& input, const SheetOptions& option
 
     Result<Nesting> nesting = nest_shapes(shapes, options.nest);
     if (!nesting.ok) {
-        r.ok = false;
-        r.diagnostics = nesting.diagnostics;
+        r.fail_with(nesting.diagnostics);
         return r;
     }
     set.sheet_count = nesting.value.sheet_count;

@@ -39,8 +39,7 @@ Result<FlatPiece> unfold_piece(const Scaffold& input, const std::vector<int>& pi
     Result<FlatPiece> r;
     Result<Scaffold> checked = validate_scaffold(input);
     if (!checked.ok) {
-        r.ok = false;
-        r.diagnostics = checked.diagnostics;
+        r.fail_with(checked.diagnostics);
         return r;
     }
     const Scaffold& s = checked.value;

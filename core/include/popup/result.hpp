@@ -27,6 +27,12 @@ template <class T> struct Result {
         ok = false;
         diagnostics.push_back({std::move(code), std::move(message), std::move(subject)});
     }
+    /// Fails with the diagnostics of a step that failed.
+    void fail_with(const Diagnostics& why)
+    {
+        ok = false;
+        diagnostics = why;
+    }
     void warn(std::string code, std::string message, std::string subject = {})
     {
         diagnostics.push_back({std::move(code), std::move(message), std::move(subject)});

@@ -43,8 +43,7 @@ Result<LocalPiece> lay_flat(const Scaffold& s, const std::vector<int>& patches, 
     Result<LocalPiece> r;
     Result<FlatPiece> flat = unfold_piece(s, patches);
     if (!flat.ok) {
-        r.ok = false;
-        r.diagnostics = flat.diagnostics;
+        r.fail_with(flat.diagnostics);
         return r;
     }
     LocalPiece& piece = r.value;
