@@ -1,14 +1,16 @@
-// True-shape nesting with no-fit polygons, bottom-left first fit (the placement of SVGnest and
-// Deepnest, without their genetic search over orders: four greedy orders are tried and the best
-// kept). Each shape takes the lowest, then leftmost, spot on the first sheet that has room, over
-// its allowed quarter turns.
+// True-shape nesting with no-fit polygons and bottom-left placement (the placement of SVGnest and
+// Deepnest). Sheets are filled one at a time: shapes are offered in an order, and each one that
+// still fits takes its lowest, then leftmost, spot over its allowed quarter turns. The sheet keeps
+// the fill, among a few orders, that covers the most area: the usual greedy orders (largest
+// area, longest side, largest bounding box, widest) and then swaps of two shapes in the best one
+// (a short hill climb, seeded, so every run gives the same nesting).
 // Spots come from Clipper: the inner-fit rectangle minus the union of the no-fit polygons with
-// the shapes already on the sheet. Outlines are grown by half the spacing (plus a hair against
-// rounding) so that touching grown outlines keep the full spacing. Only outer loops count: no
-// shape goes into another's hole (holes in pop-up pieces are slits and windows, seldom roomy).
+// the shapes already on the sheet (each the union of the sums of convex parts). Outlines are grown
+// by half the spacing (plus a hair against rounding) so that touching grown outlines keep the full
+// spacing. Only outer loops count: no shape goes into another's hole (holes in pop-up pieces are
+// slits and windows, seldom roomy).
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <functional>
 #include <map>
 #include <numeric>
@@ -33,8 +35,8 @@ using ClipperLib::Paths;
 using nest_detail::Bounds;
 using nest_detail::Outline;
 
-constexpr int kSwapRounds = 24;  // order swaps tried after the greedy orders
-constexpr double kSafety = 1e-4; // mm added to half the spacing: Clipper rounds to whole nm
+constexpr int kSwapsPerSheet = 12; // orders tried per sheet after the greedy ones
+constexpr double kSafety = 1e-4;   // mm added to half the spacing: Clipper rounds to whole nm
 
 /// One allowed quarter turn of a shape, in a frame where the turned outline's bounding box
 /// starts at the origin.
@@ -60,7 +62,8 @@ struct Placed {
 
 struct Sheet {
     std::vector<Placed> placed;
-    double used_area = 0.0; ///< of the outlines, mm²
+    double used_area = 0.0;  ///< of the outlines, mm²
+    std::size_t content = 0; ///< equal for sheets holding the same outlines at the same spots
 };
 
 bool same_loop(const Path& a, const Path& b)
@@ -163,51 +166,39 @@ public:
         }
     }
 
-    /// Each shape's sheet and spot, in the given order (on empty sheets).
-    void place_all(const std::vector<std::size_t>& order)
+    /// An empty sheet filled from `candidates`, in order, with every shape that still fits.
+    Sheet fill_sheet(const std::vector<std::size_t>& candidates)
     {
-        sheets_.clear();
         const double printable_mm2 = static_cast<double>(printable_.width()) * printable_.height() /
                                      (clipper_scale * clipper_scale);
-        for (std::size_t shape : order) {
-            std::optional<Spot> spot;
-            std::size_t sheet = 0;
-            for (; sheet < sheets_.size(); ++sheet) {
-                // Outlines never overlap, so a sheet without the area left has no room either.
-                const bool area_left =
-                    sheets_[sheet].used_area + outlines_[shape].area <= printable_mm2;
-                if (area_left && (spot = best_spot(shape, sheets_[sheet])))
-                    break;
-            }
-            if (!spot) {
-                sheets_.emplace_back();
-                spot = best_spot(shape, sheets_.back()); // validated: fits an empty sheet
-            }
-            sheets_[sheet].placed.push_back({shape, spot->orientation, spot->position});
-            sheets_[sheet].used_area += outlines_[shape].area;
+        Sheet sheet;
+        for (std::size_t shape : candidates) {
+            // Outlines never overlap, so a sheet without the area left has no room either.
+            if (sheet.used_area + outlines_[shape].area > printable_mm2)
+                continue;
+            if (const std::optional<Spot> spot = best_spot(shape, sheet))
+                add(sheet, {shape, spot->orientation, spot->position});
         }
+        return sheet;
     }
 
-    /// How high the last sheet is filled: of two nestings on as many sheets, the lower leaves
-    /// more room.
-    cInt last_sheet_top() const
+    /// How high the sheet is filled: of two fills covering as much, the lower leaves more room.
+    cInt top_of(const Sheet& sheet) const
     {
         cInt top = 0;
-        if (sheets_.empty())
-            return top;
-        for (const Placed& placed : sheets_.back().placed)
+        for (const Placed& placed : sheet.placed)
             top =
                 std::max(top, placed.position.Y +
                                   variants_[placed.shape].orientations[placed.orientation].height);
         return top;
     }
 
-    Nesting nesting() const
+    Nesting nesting(const std::vector<Sheet>& sheets) const
     {
         Nesting result;
         result.placements.resize(outlines_.size());
-        for (std::size_t s = 0; s < sheets_.size(); ++s) {
-            for (const Placed& placed : sheets_[s].placed) {
+        for (std::size_t s = 0; s < sheets.size(); ++s) {
+            for (const Placed& placed : sheets[s].placed) {
                 const Orientation& orientation =
                     variants_[placed.shape].orientations[placed.orientation];
                 Placement& placement = result.placements[placed.shape];
@@ -220,21 +211,42 @@ public:
                                                                   orientation.quarter_turns);
             }
         }
-        result.sheet_count = static_cast<int>(sheets_.size());
+        result.sheet_count = static_cast<int>(sheets.size());
         return result;
     }
 
 private:
+    void add(Sheet& sheet, const Placed& placed)
+    {
+        const auto content = contents_.emplace(
+            std::make_tuple(sheet.content, variants_[placed.shape].first_twin, placed.orientation,
+                            placed.position.X, placed.position.Y),
+            contents_.size() + 1);
+        sheet.content = content.first->second;
+        sheet.placed.push_back(placed);
+        sheet.used_area += outlines_[placed.shape].area;
+    }
+
     std::optional<Spot> best_spot(std::size_t shape, const Sheet& sheet)
     {
         std::optional<Spot> best;
         const std::vector<Orientation>& orientations = variants_[shape].orientations;
         for (std::size_t o = 0; o < orientations.size(); ++o) {
-            const std::optional<IntPoint> position = lowest_spot(shape, o, sheet);
+            const std::optional<IntPoint> position = cached_lowest_spot(shape, o, sheet);
             if (position && (!best || Spot{o, *position} < *best))
                 best = Spot{o, *position};
         }
         return best;
+    }
+
+    /// Orders that start alike fill a sheet alike for a while: spots are remembered per content.
+    std::optional<IntPoint> cached_lowest_spot(std::size_t shape, std::size_t o, const Sheet& sheet)
+    {
+        const auto key = std::make_tuple(sheet.content, variants_[shape].first_twin, o);
+        auto found = lowest_spots_.find(key);
+        if (found == lowest_spots_.end())
+            found = lowest_spots_.emplace(key, lowest_spot(shape, o, sheet)).first;
+        return found->second;
     }
 
     /// The bottom-left position of the shape in this orientation on the sheet, if any.
@@ -304,9 +316,23 @@ private:
     const std::vector<Outline>& outlines_;
     const Bounds printable_;
     std::vector<Variants> variants_;
-    std::vector<Sheet> sheets_;
     std::map<std::array<std::size_t, 4>, Paths> no_fit_polygons_;
+    /// Sheet contents as a tree: (content before, twin, orientation, position) -> content.
+    std::map<std::tuple<std::size_t, std::size_t, std::size_t, cInt, cInt>, std::size_t> contents_;
+    std::map<std::tuple<std::size_t, std::size_t, std::size_t>, std::optional<IntPoint>>
+        lowest_spots_;
 };
+
+/// The shapes by decreasing size; equal sizes keep their order.
+std::vector<std::size_t> largest_first(std::vector<std::size_t> shapes,
+                                       const std::vector<Outline>& outlines,
+                                       const std::function<double(const Outline&)>& size)
+{
+    std::stable_sort(shapes.begin(), shapes.end(), [&](std::size_t a, std::size_t b) {
+        return size(outlines[a]) > size(outlines[b]);
+    });
+    return shapes;
+}
 
 } // namespace
 
@@ -315,55 +341,48 @@ Result<Nesting> nest_shapes(const std::vector<NestShape>& shapes, const NestOpti
     const Result<std::vector<Outline>> prepared = nest_detail::prepare_outlines(shapes, options);
     if (!prepared.ok)
         return nest_detail::failed_nesting(prepared);
-    // Bottom-left fill depends on the order: try the usual greedy orders (largest area, longest
-    // side, largest bounding box, widest) and keep the best. No-fit polygons are cached across.
     const std::vector<Outline>& outlines = prepared.value;
-    const std::vector<std::function<double(const Outline&)>> keys{
+    const std::array<std::function<double(const Outline&)>, 4> sizes{
         [](const Outline& o) { return o.area; },
-        [](const Outline& o) { return double(std::max(o.width, o.height)); },
-        [](const Outline& o) { return double(o.width) * double(o.height); },
-        [](const Outline& o) { return double(std::min(o.width, o.height)); },
+        [](const Outline& o) { return static_cast<double>(std::max(o.width, o.height)); },
+        [](const Outline& o) { return static_cast<double>(o.width) * o.height; },
+        [](const Outline& o) { return static_cast<double>(std::min(o.width, o.height)); },
     };
+
     Nester nester(outlines, options);
+    std::mt19937 random(20261122u); // its output is fixed by the standard; the % below too
+    std::vector<std::size_t> remaining(outlines.size());
+    std::iota(remaining.begin(), remaining.end(), 0);
+    std::vector<Sheet> sheets;
+    while (!remaining.empty()) {
+        Sheet best;
+        std::vector<std::size_t> best_order;
+        const auto try_order = [&](const std::vector<std::size_t>& order) {
+            Sheet sheet = nester.fill_sheet(order);
+            if (best_order.empty() || std::make_tuple(sheet.used_area, -nester.top_of(sheet)) >
+                                          std::make_tuple(best.used_area, -nester.top_of(best))) {
+                best = std::move(sheet);
+                best_order = order;
+            }
+        };
+        for (const auto& size : sizes)
+            try_order(largest_first(remaining, outlines, size));
+        for (int swap = 0; swap < kSwapsPerSheet && best.placed.size() < remaining.size(); ++swap) {
+            std::vector<std::size_t> order = best_order;
+            std::swap(order[random() % order.size()], order[random() % order.size()]);
+            try_order(order);
+        }
+
+        const auto on_sheet = [&](std::size_t shape) {
+            return std::any_of(best.placed.begin(), best.placed.end(),
+                               [&](const Placed& placed) { return placed.shape == shape; });
+        };
+        remaining.erase(std::remove_if(remaining.begin(), remaining.end(), on_sheet),
+                        remaining.end());
+        sheets.push_back(std::move(best));
+    }
     Result<Nesting> result;
-    cInt best_top = 0;
-    std::vector<std::size_t> best_order;
-    auto attempt = [&](const std::vector<std::size_t>& order) {
-        nester.place_all(order);
-        Nesting candidate = nester.nesting();
-        const cInt top = nester.last_sheet_top();
-        if (!best_order.empty() &&
-            std::tie(candidate.sheet_count, top) >= std::tie(result.value.sheet_count, best_top))
-            return;
-        result.value = std::move(candidate);
-        best_top = top;
-        best_order = order;
-    };
-    for (const auto& key : keys) {
-        std::vector<std::size_t> order(outlines.size());
-        std::iota(order.begin(), order.end(), 0);
-        std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-            return key(outlines[a]) > key(outlines[b]);
-        });
-        attempt(order);
-    }
-    // Then a short hill climb: swap two shapes of the best order, keep what packs better. A
-    // fixed seed keeps the result the same on every run.
-    // No order needs fewer sheets than the area allows: stop there.
-    double total_area = 0.0;
-    for (const Outline& o : outlines)
-        total_area += o.area;
-    const Bounds printable = nest_detail::printable_area(options);
-    const int fewest = int(std::ceil(total_area * clipper_scale * clipper_scale /
-                                     (double(printable.width()) * double(printable.height()))));
-    std::mt19937 random(20261122u);
-    for (int round = 0;
-         round < kSwapRounds && outlines.size() > 1 && result.value.sheet_count > fewest; ++round) {
-        std::vector<std::size_t> order = best_order;
-        std::uniform_int_distribution<std::size_t> pick(0, order.size() - 1);
-        std::swap(order[pick(random)], order[pick(random)]);
-        attempt(order);
-    }
+    result.value = nester.nesting(sheets);
     return result;
 }
 
