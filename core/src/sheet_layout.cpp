@@ -206,8 +206,7 @@ Result<SheetSet> layout_sheets(const Scaffold& input, const SheetOptions& option
 
     // Pieces in assembly order, each laid flat in its own frame.
     const std::vector<std::vector<int>> groups = cut_pieces(s);
-    std::vector<int> depth;
-    const std::vector<int> order = assembly_order(s, groups, depth, notes);
+    const std::vector<int> order = assembly_order(s, groups, notes);
     std::vector<LocalPiece> pieces;
     std::map<int, int> position;
     for (int g : order) {
@@ -216,7 +215,6 @@ Result<SheetSet> layout_sheets(const Scaffold& input, const SheetOptions& option
             r.fail_with(flat.diagnostics);
             return r;
         }
-        flat.value.depth = depth[g];
         report_self_overlap(s, flat.value, notes);
         for (int id : groups[g])
             position[id] = int(pieces.size());

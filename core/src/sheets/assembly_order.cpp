@@ -7,7 +7,7 @@
 namespace popup::sheets {
 
 std::vector<int> assembly_order(const Scaffold& s, const std::vector<std::vector<int>>& pieces,
-                                std::vector<int>& depth, std::vector<SheetDiagnostic>& diagnostics)
+                                std::vector<SheetDiagnostic>& diagnostics)
 {
     std::map<int, int> piece_of;
     for (size_t k = 0; k < pieces.size(); ++k)
@@ -26,7 +26,7 @@ std::vector<int> assembly_order(const Scaffold& s, const std::vector<std::vector
     for (const Glue& g : s.glue)
         join(g.patch_a, g.patch_b);
 
-    depth.assign(pieces.size(), -1);
+    std::vector<int> depth(pieces.size(), -1); // joints between each piece and the card
     std::vector<int> order;
     const int card = piece_of.at(s.ground);
     depth[card] = 0;

@@ -20,7 +20,7 @@ constexpr double narrowing = 0.85;         // each retry keeps this share of the
 // its sides leaning in at `angle` (radians) from the segment. The first edge is the segment.
 Loop2 trapezoid(const Vec2& from, const Vec2& to, const Vec2& side, double depth, double angle)
 {
-    const Vec2 along = unit(to - from);
+    const Vec2 along = (to - from).normalized();
     const double lean = angle >= M_PI / 2 ? 0.0 : depth / std::tan(angle);
     return {from, to, to + depth * side - lean * along, from + depth * side + lean * along};
 }
@@ -28,7 +28,7 @@ Loop2 trapezoid(const Vec2& from, const Vec2& to, const Vec2& side, double depth
 // Unit normal to the segment pointing away from `away_from`.
 Vec2 outward(const Vec2& from, const Vec2& to, const Vec2& away_from)
 {
-    Vec2 n = left_normal(unit(to - from));
+    Vec2 n = left_normal((to - from).normalized());
     return n.dot(away_from - from) > 0 ? Vec2(-n) : n;
 }
 

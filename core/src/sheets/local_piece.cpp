@@ -14,11 +14,6 @@ Vec3 LocalPiece::printed_normal(const Scaffold& s, int patch) const
     return flat.unfold[index_of.at(patch)].rotation.transpose() * root.normal;
 }
 
-Vec2 unit(const Vec2& v)
-{
-    return v.normalized();
-}
-
 Vec2 left_normal(const Vec2& direction)
 {
     return {-direction.y(), direction.x()};

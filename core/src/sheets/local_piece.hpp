@@ -12,7 +12,6 @@ namespace popup::sheets {
 struct LocalPiece {
     FlatPiece flat;
     std::map<int, int> index_of; ///< patch id → index in flat.patches
-    int depth = 0;               ///< tab joints between it and the card (assembly order)
     std::vector<FoldLine> folds;
     std::vector<GlueTab> tabs;
     std::vector<GlueArea> glue;
@@ -33,8 +32,7 @@ struct LocalPiece {
 /// share an edge share its exact coordinates (Clipper merges them in the outline).
 Result<LocalPiece> lay_flat(const Scaffold& s, const std::vector<int>& patches, double tol);
 
-/// Unit direction along the hinge line in 2D, and the unit normal on the left of it.
-Vec2 unit(const Vec2& v);
+/// The unit normal on the left of a unit direction.
 Vec2 left_normal(const Vec2& direction);
 
 } // namespace popup::sheets

@@ -67,7 +67,7 @@ void add_slit_slots(const Scaffold& s, LocalPiece& piece)
             continue;
         const Vec2 a = piece.flat_point(s, slit.patch_cut, slit.from);
         const Vec2 b = piece.flat_point(s, slit.patch_cut, slit.to);
-        const Vec2 across = s.paper_thickness * left_normal(unit(b - a));
+        const Vec2 across = s.paper_thickness * left_normal((b - a).normalized());
         piece.slots.push_back({a - across, b - across, b + across, a + across});
     }
 }

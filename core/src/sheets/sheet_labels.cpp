@@ -104,7 +104,7 @@ void add_labels(LocalPiece& piece, const std::string& piece_id, bool fold_hints)
     if (!fold_hints)
         return;
     for (const FoldLine& f : piece.folds) {
-        const Vec2 along = unit(f.to - f.from);
+        const Vec2 along = (f.to - f.from).normalized();
         const Vec2 beside = 0.5 * (f.from + f.to) + 2.5 * left_normal(along);
         piece.labels.push_back({f.direction == FoldDirection::mountain ? "M" : "V", "fold", beside,
                                 2.5, reading_angle(f.from, f.to)});
