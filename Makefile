@@ -10,7 +10,7 @@ DEBS := cmake make g++ pkg-config freecad \
 	libcgal-dev libeigen3-dev pybind11-dev python3-dev nlohmann-json3-dev libassimp-dev \
 	python3-ezdxf python3-pytest python3-numpy libgtest-dev libbenchmark-dev \
 	libpolyclipping-dev python3-svgwrite python3-reportlab python3-matplotlib librecad \
-	xvfb xauth clang-format black
+	xvfb xauth clang-format black patch
 
 .PHONY: all deps build test demo bench lint format install install-dev clean
 

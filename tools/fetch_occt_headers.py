@@ -45,7 +45,9 @@ def installed_occt():
     out = run(["dpkg-query", "-W", "-f", fmt, DEV_PACKAGE])
     fields = out.stdout.split()
     if out.returncode != 0 or len(fields) != 4 or fields[0] != "installed":
-        raise Unavailable(f"{DEV_PACKAGE} is not installed: run `make deps` (or apt-get install it)")
+        raise Unavailable(
+            f"{DEV_PACKAGE} is not installed: run `make deps` (or apt-get install it)"
+        )
     return fields[1], fields[2], fields[3]
 
 
@@ -136,9 +138,7 @@ def download_source(root, package, version, entries):
             f"({entries[0][0]})"
         )
     download = os.path.join(root, "download")
-    src = run(
-        ["apt-get", *opts, "source", "--download-only", f"{package}={version}"], cwd=download
-    )
+    src = run(["apt-get", *opts, "source", "--download-only", f"{package}={version}"], cwd=download)
     dsc = os.path.join(download, f"{package}_{strip_epoch(version)}.dsc")
     if src.returncode != 0 or not os.path.exists(dsc):
         raise Unavailable(
@@ -321,7 +321,9 @@ def main():
         print(f"PopUp cannot build its OCCT code here: {err}", file=sys.stderr)
         return 1
     if supplied:
-        print(f"OCCT headers from Debian's source package into {out}/include: {', '.join(supplied)}")
+        print(
+            f"OCCT headers from Debian's source package into {out}/include: {', '.join(supplied)}"
+        )
     if absent:
         print(f"note: included by OCCT, in no package and not in its source: {', '.join(absent)}")
     return 0
