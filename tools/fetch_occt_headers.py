@@ -131,10 +131,11 @@ def download_source(root, package, version, entries):
             f.write(f"deb-src{signed} {uri} {suite} {component}\n")
     opts = apt_options(root)
     upd = run(["apt-get", *opts, "update"])
-    if upd.returncode != 0 or "\nE:" in "\n" + upd.stderr:
+    indexes = glob.glob(os.path.join(root, "state", "lists", "*_Sources*"))
+    if upd.returncode != 0 or not indexes:
         raise Unavailable(
             "cannot read Debian's source index (apt-get update with a private deb-src list "
-            f"failed: {last_line(upd.stderr)}); this machine needs access to Debian's archive "
+            f"failed: {first_problem(upd.stderr)}); this machine needs access to Debian's archive "
             f"({entries[0][0]})"
         )
     download = os.path.join(root, "download")
@@ -151,6 +152,12 @@ def download_source(root, package, version, entries):
 
 def strip_epoch(version):
     return version.split(":", 1)[1] if ":" in version else version
+
+
+def first_problem(text):
+    """apt's first error or warning line: the cause, not the summary."""
+    lines = [l for l in text.splitlines() if l.startswith(("E:", "W:"))]
+    return lines[0] if lines else last_line(text)
 
 
 def last_line(text):
@@ -315,6 +322,8 @@ def main():
     args = parser.parse_args()
     out = os.path.abspath(args.out)
     try:
+        if not os.path.isfile(os.path.join(args.include_dir, "Standard.hxx")):
+            raise Unavailable(f"no OCCT headers in {args.include_dir}: install {DEV_PACKAGE}")
         roots = project_includes(args.sources, args.include_dir)
         supplied, absent = supply(roots, args.include_dir, out)
     except Unavailable as err:
