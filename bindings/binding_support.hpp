@@ -4,29 +4,53 @@
 #include <stdexcept>
 
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 
 #include "popup/result.hpp"
 
 namespace popup::bindings {
 
-/// Raised for invalid designs and parameters; popupcore.DesignError on the Python side.
-struct DesignFailure : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
 inline std::string join(const Diagnostics& diagnostics)
 {
     std::ostringstream s;
     for (size_t i = 0; i < diagnostics.size(); ++i)
-        s << (i ? "; " : "") << diagnostics[i].subject << ": " << diagnostics[i].message;
+        s << (i ? "; " : "") << diagnostics[i].message;
     return s.str();
+}
+
+/// Raised for invalid designs and parameters; popupcore.DesignError on the Python side, which
+/// carries the diagnostics as `.diagnostics` (a list of dicts).
+struct DesignFailure : std::runtime_error {
+    explicit DesignFailure(Diagnostics why)
+        : std::runtime_error(join(why)), diagnostics(std::move(why))
+    {
+    }
+    Diagnostics diagnostics;
+};
+
+/// A diagnostic as the dict every Python caller and --json output uses (docs/SHEET_FORMAT.md).
+inline pybind11::dict diagnostic_dict(const Diagnostic& d)
+{
+    namespace py = pybind11;
+    return py::dict(py::arg("code") = to_string(d.code),
+                    py::arg("severity") = to_string(d.severity), py::arg("message") = d.message,
+                    py::arg("patches") = d.patches, py::arg("parameter") = d.parameter,
+                    py::arg("angle_deg") = d.angle_deg);
+}
+
+inline pybind11::list diagnostic_list(const Diagnostics& diagnostics)
+{
+    pybind11::list out;
+    for (const Diagnostic& d : diagnostics)
+        out.append(diagnostic_dict(d));
+    return out;
 }
 
 /// The value, or DesignFailure with every diagnostic.
 template <class T> T unwrap(Result<T> r)
 {
     if (!r.ok)
-        throw DesignFailure(join(r.diagnostics));
+        throw DesignFailure(std::move(r.diagnostics));
     return std::move(r.value);
 }
 

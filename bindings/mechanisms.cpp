@@ -22,13 +22,7 @@ namespace {
 // Mechanism errors already name the mechanism and the parameter in their message.
 MechanismParts added(Result<MechanismParts> r)
 {
-    if (!r.ok) {
-        std::string text;
-        for (const Diagnostic& d : r.diagnostics)
-            text += (text.empty() ? "" : "; ") + d.message;
-        throw bindings::DesignFailure(text);
-    }
-    return std::move(r.value);
+    return bindings::unwrap(std::move(r));
 }
 
 template <class Params, class Add>
@@ -50,7 +44,8 @@ void bind_mechanisms(py::module_& m)
         .def(py::init<>())
         .def_readwrite("width", &CardParams::width)
         .def_readwrite("depth", &CardParams::depth)
-        .def_readwrite("paper_thickness", &CardParams::paper_thickness);
+        .def_readwrite("paper_thickness", &CardParams::paper_thickness)
+        .def_readwrite("name", &CardParams::name);
     m.def(
         "make_card", [](const CardParams& p) { return bindings::unwrap(make_card(p)); },
         py::arg("params"), "A card open flat: ground id 0, backdrop id 1 (DesignError if bad).");

@@ -40,10 +40,6 @@ py::array_t<double> loop_array(const Loop3& loop)
 
 py::dict report_dict(const ValidityReport& r)
 {
-    py::list diagnostics;
-    for (const Diagnostic& d : r.diagnostics)
-        diagnostics.append(py::dict(py::arg("code") = d.code, py::arg("message") = d.message,
-                                    py::arg("subject") = d.subject));
     py::list crossings;
     for (const Crossing& c : r.crossings)
         crossings.append(py::dict(py::arg("patch_a") = c.patch_a, py::arg("patch_b") = c.patch_b,
@@ -62,7 +58,7 @@ py::dict report_dict(const ValidityReport& r)
                                          : py::object(py::float_(r.locked_at * 180.0 / M_PI));
     d["model_size"] = r.model_size;
     d["crossings"] = crossings;
-    d["diagnostics"] = diagnostics;
+    d["diagnostics"] = diagnostic_list(r.diagnostics);
     return d;
 }
 
@@ -100,7 +96,9 @@ PYBIND11_MODULE(popupcore, m)
             if (p)
                 std::rethrow_exception(p);
         } catch (const DesignFailure& e) {
-            PyErr_SetString(design_error, e.what());
+            py::object error = py::reinterpret_borrow<py::object>(design_error)(e.what());
+            error.attr("diagnostics") = diagnostic_list(e.diagnostics);
+            PyErr_SetObject(design_error, error.ptr());
         } catch (const Standard_Failure& e) {
             const char* msg = e.GetMessageString();
             PyErr_SetString(
@@ -117,12 +115,27 @@ PYBIND11_MODULE(popupcore, m)
           "'cgal' so the translators can be checked.");
 
     py::class_<Diagnostic>(m, "Diagnostic")
-        .def_readonly("code", &Diagnostic::code)
+        .def_property_readonly("code", [](const Diagnostic& d) { return to_string(d.code); })
+        .def_property_readonly("severity",
+                               [](const Diagnostic& d) { return to_string(d.severity); })
         .def_readonly("message", &Diagnostic::message)
-        .def_readonly("subject", &Diagnostic::subject)
+        .def_readonly("patches", &Diagnostic::patches)
+        .def_readonly("parameter", &Diagnostic::parameter)
+        .def_readonly("angle_deg", &Diagnostic::angle_deg)
+        .def("to_dict", &diagnostic_dict, "The diagnostic as a dict (the --json shape).")
         .def("__repr__", [](const Diagnostic& d) {
-            return "<Diagnostic " + d.code + " " + d.subject + ": " + d.message + ">";
+            return std::string("<Diagnostic ") + to_string(d.code) + " " + to_string(d.severity) +
+                   ": " + d.message + ">";
         });
+    m.def(
+        "diagnostic_codes",
+        [] {
+            std::vector<std::string> names;
+            for (DiagnosticCode c : all_diagnostic_codes())
+                names.push_back(to_string(c));
+            return names;
+        },
+        "Every diagnostic code, in the order of docs/DIAGNOSTICS.md.");
 
     py::class_<Patch>(m, "Patch")
         .def_readonly("id", &Patch::id)

@@ -13,7 +13,6 @@ raises, or whose host failed, adds nothing; its message is remembered for its ow
 import collections
 import hashlib
 import math
-import re
 
 CARD_TYPE = "PopUp::Card"
 CENTRAL_FOLD = "central fold"  # popupcore.central_fold(card).name
@@ -172,7 +171,7 @@ class Assembly:
             if sweep.complete and sweep.states:
                 state = sweep.states[0]
             else:
-                findings = "; ".join(f"{d.subject}: {d.message}" for d in sweep.diagnostics)
+                findings = "; ".join(d.message for d in sweep.diagnostics)
                 if sweep.locked_at >= 0.0:
                     reason = f"the design locks at {math.degrees(sweep.locked_at):.2f}°"
                 else:
@@ -227,6 +226,7 @@ def _card_params(card):
     params.width = _number(card.Width)
     params.depth = _number(card.Depth)
     params.paper_thickness = _number(card.PaperThickness)
+    params.name = card.Label
     return params
 
 
@@ -245,13 +245,6 @@ def _resolve_pair(obj, pairs):
     return None
 
 
-def _card_message(text, label):
-    """The core's card errors, "Card.Depth: Card: Depth = 0 mm, must be ...; ...", named after the
-    card's Label: "Greeting: Depth = 0 mm, must be ..."."""
-    text = re.sub(r"(^|; )Card\.\w+: ", r"\1", text)
-    return re.sub(r"(^|; )Card: ", lambda m: f"{m.group(1)}{label}: ", text)
-
-
 def build(card):
     """A new Assembly of `card` (no cache; assembly_of() is the cached entry point)."""
     from popupwb.core import popupcore
@@ -260,7 +253,7 @@ def build(card):
     try:
         scaffold = popupcore.make_card(_card_params(card))
     except ValueError as error:  # DesignError
-        assembly.card_error = _card_message(str(error), card.Label)
+        assembly.card_error = str(error)  # names the card by its Label and the parameter
         for obj in mechanisms_of(card):
             assembly.errors[
                 obj.Name

@@ -252,7 +252,7 @@ def cmd_sheet(args):
             f"(tolerance {trip['tolerance']:.3g} mm) - {'ok' if trip['ok'] else 'FAILED'}"
         )
         for d in errors + report["warnings"]:
-            print(f"{d['severity']}: {d['subject']}: {d['message']}")
+            print(f"{d['severity']}: {d['code']}: {d['message']}")
     return EXIT_INVALID if errors else EXIT_VALID
 
 

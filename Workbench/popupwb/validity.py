@@ -6,7 +6,6 @@ them); run_check() imports both when called.
 """
 
 import math
-import re
 
 _VERDICTS = (
     ("foldable", "foldable"),
@@ -14,14 +13,11 @@ _VERDICTS = (
     ("intersection_free", "intersection-free"),
     ("enclosed", "enclosed"),
 )
-_PATCH_ID = re.compile(r"\bpatch (\d+)\b")
 
 
 def format_diagnostic(diagnostic):
-    """A diagnostic dict as one line, "code: message [subject]" (no brackets without subject)."""
-    text = f"{diagnostic.get('code', '')}: {diagnostic.get('message', '')}"
-    subject = diagnostic.get("subject")
-    return f"{text} [{subject}]" if subject else text
+    """A diagnostic dict as one line, "code: message" (the message names what it is about)."""
+    return f"{diagnostic.get('code', '')}: {diagnostic.get('message', '')}"
 
 
 def format_report(report):
@@ -86,8 +82,16 @@ def run_check(obj, samples=181, clearance=0.0):
     return report
 
 
-def _design_error(message, subject):
-    return {"code": "design_error", "message": message, "subject": subject}
+def design_error(message, parameter=None):
+    """A finding of the workbench's own: a design or mechanism that does not load or build."""
+    return {
+        "code": "design_error",
+        "severity": "error",
+        "message": message,
+        "patches": [],
+        "parameter": parameter,
+        "angle_deg": None,
+    }
 
 
 def _check_scaffold(obj, samples, clearance):
@@ -98,16 +102,17 @@ def _check_scaffold(obj, samples, clearance):
         return popupcore.check_validity(
             scaffold_of(obj), samples=samples, clearance=clearance
         ).to_dict()
+    except popupcore.DesignError as error:
+        return {"valid": False, "diagnostics": list(error.diagnostics)}
     except ValueError as error:
-        return {"valid": False, "diagnostics": [_design_error(str(error), "DesignFile")]}
+        return {"valid": False, "diagnostics": [design_error(str(error), "DesignFile")]}
 
 
 def offending_patches(report):
-    """Ids of the patches the report's findings name ("patch 7 (Box001.TG)")."""
+    """Ids of the patches the report's findings are about (their `patches` field)."""
     ids = set()
     for d in report.get("diagnostics") or []:
-        for text in (d.get("subject") or "", d.get("message") or ""):
-            ids.update(int(m) for m in _PATCH_ID.findall(text))
+        ids.update(int(i) for i in d.get("patches") or [])
     return ids
 
 
@@ -120,13 +125,13 @@ def _check_card(card, samples, clearance):
 
     built = assembly.assembly_of(card)
     if built.card_error:
-        return {"valid": False, "diagnostics": [_design_error(built.card_error, card.Label)]}
+        return {"valid": False, "diagnostics": [design_error(built.card_error)]}
     report = popupcore.check_validity(
         built.scaffold, samples=samples, clearance=clearance
     ).to_dict()
     doc = card.Document
     for name, message in built.errors.items():
-        report["diagnostics"].append(_design_error(message, doc.getObject(name).Label))
+        report["diagnostics"].append(design_error(message))
     report["valid"] = bool(report["valid"]) and not built.errors
     card.CheckedDesign = built.digest
     if FreeCAD.GuiUp:

@@ -33,7 +33,9 @@ Result<BodyGraph> build_body_graph(const Scaffold& s)
     g.ground = g.body_of_patch[s.patch_index(s.ground)];
     g.backdrop = g.body_of_patch[s.patch_index(s.backdrop)];
     if (g.ground == g.backdrop) {
-        r.fail("base_glued", "the ground and the backdrop are glued into one rigid body", "glue");
+        r.fail(DiagnosticCode::base_glued,
+               "the ground and the backdrop are glued into one rigid body",
+               about_patches({s.ground, s.backdrop}));
         return r;
     }
 

@@ -10,11 +10,11 @@ Result<Scaffold> make_card(const CardParams& p)
 {
     Result<Scaffold> r;
     if (!(p.width > 0 && p.width <= 2000))
-        range_error(r.diagnostics, "Card", "Width", p.width, "mm", "> 0 and <= 2000 mm");
+        range_error(r.diagnostics, p.name, "Width", p.width, "mm", "> 0 and <= 2000 mm");
     if (!(p.depth > 0 && p.depth <= 2000))
-        range_error(r.diagnostics, "Card", "Depth", p.depth, "mm", "> 0 and <= 2000 mm");
+        range_error(r.diagnostics, p.name, "Depth", p.depth, "mm", "> 0 and <= 2000 mm");
     if (!(p.paper_thickness >= 0 && p.paper_thickness <= 5))
-        range_error(r.diagnostics, "Card", "PaperThickness", p.paper_thickness, "mm",
+        range_error(r.diagnostics, p.name, "PaperThickness", p.paper_thickness, "mm",
                     ">= 0 and <= 5 mm");
     if (!r.diagnostics.empty()) {
         r.ok = false;

@@ -136,9 +136,8 @@ std::vector<Crossing> find_crossings(const Scaffold& input, const FoldState& sta
 {
     Result<Scaffold> checked = validate_scaffold(input);
     if (!checked.ok)
-        throw std::invalid_argument(
-            "find_crossings: invalid scaffold: " + checked.diagnostics.front().subject + ": " +
-            checked.diagnostics.front().message);
+        throw std::invalid_argument("find_crossings: invalid scaffold: " +
+                                    checked.diagnostics.front().message);
     const Scaffold& s = checked.value;
     if (state.poses.size() != s.patches.size())
         throw std::invalid_argument("find_crossings: the state has " +
@@ -169,16 +168,15 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
     const Scaffold& s = checked.value;
     const double size = s.size();
     report.model_size = size;
-    auto add = [&](std::string code, std::string message, std::string subject) {
-        report.diagnostics.push_back({std::move(code), std::move(message), std::move(subject)});
+    auto add = [&](DiagnosticCode code, std::string message, DiagnosticSubject about = {}) {
+        report.diagnostics.push_back(Diagnostic::error(code, std::move(message), std::move(about)));
     };
     if (options.samples < 2 || options.samples > 100000 || !(options.clearance >= 0.0) ||
         options.refine_depth < 0 || options.refine_depth > 30) {
-        add("bad_option",
+        add(DiagnosticCode::bad_option,
             "samples must be 2..100000, clearance >= 0 mm and refine_depth 0..30 (got " +
                 std::to_string(options.samples) + ", " + std::to_string(options.clearance) + ", " +
-                std::to_string(options.refine_depth) + ")",
-            "options");
+                std::to_string(options.refine_depth) + ")");
         return report;
     }
     Result<BodyGraph> graph = build_body_graph(s);
@@ -221,15 +219,16 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
                     worst = int(i);
                 }
         if (report.flatness_at_zero > flat_tolerance)
-            add("not_flat_when_closed",
+            add(DiagnosticCode::not_flat_when_closed,
                 describe(s.patches[worst]) + " stands " + mm(report.flatness_at_zero) +
                     " off the page plane when the card is closed (allowed " + mm(flat_tolerance) +
                     ")",
-                describe(s.patches[worst]));
+                about_patches({s.patches[worst].id}, 0.0));
     }
     const bool branch_ok =
-        std::none_of(sim.diagnostics.begin(), sim.diagnostics.end(),
-                     [](const Diagnostic& d) { return d.code == "branch_not_followed"; });
+        std::none_of(sim.diagnostics.begin(), sim.diagnostics.end(), [](const Diagnostic& d) {
+            return d.code == DiagnosticCode::branch_not_followed;
+        });
     report.foldable = sim.ok && sweep.complete && closed &&
                       report.flatness_at_zero <= flat_tolerance &&
                       report.max_hinge_residual <= 1e-9 * size && branch_ok;
@@ -250,10 +249,10 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
             std::ostringstream names;
             for (size_t k = 0; k < motion.moving_patches.size(); ++k)
                 names << (k ? ", " : "") << describe(*s.find_patch(motion.moving_patches[k]));
-            add("unstable",
+            add(DiagnosticCode::unstable,
                 std::to_string(motion.dimension) + " free motion(s) besides the fold angle at " +
                     deg(st.angle) + ": " + names.str() + " can move while the base is held still",
-                names.str());
+                about_patches(motion.moving_patches, st.angle * 180.0 / M_PI));
         }
     }
     report.stable = unstable_samples == 0 && !sweep.states.empty();
@@ -294,10 +293,10 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
         const Patch& a = s.patches[key.first];
         const Patch& b = s.patches[key.second];
         report.crossings.push_back({a.id, b.id, f.angle, f.depth});
-        add("intersection",
+        add(DiagnosticCode::intersection,
             describe(a) + " passes through " + describe(b) + " from " + deg(f.angle) +
                 " (deepest " + mm(f.depth) + ")",
-            describe(a) + " / " + describe(b));
+            about_patches({a.id, b.id}, f.angle * 180.0 / M_PI));
     }
     report.intersection_free = findings.empty() && !sweep.states.empty();
 
@@ -331,12 +330,12 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
                 std::ostringstream m;
                 m << describe(s.patches[i]) << " sticks out of the closed card by " << mm(worst)
                   << " at y = " << where.x() << " mm, z = " << where.y() << " mm";
-                add("not_enclosed", m.str(), describe(s.patches[i]));
+                add(DiagnosticCode::not_enclosed, m.str(), about_patches({s.patches[i].id}, 0.0));
             }
         }
     } else {
-        add("enclosure_unknown", "the card never closes, so enclosure cannot be judged",
-            "scaffold");
+        add(DiagnosticCode::enclosure_unknown,
+            "the card never closes, so enclosure cannot be judged");
     }
     return report;
 }

@@ -223,17 +223,17 @@ Result<Scaffold> scaffold_from_json(const std::string& text)
     try {
         j = json::parse(text);
     } catch (const json::exception& e) { // syntax errors, and numbers beyond double range
-        r.fail("bad_json", std::string("not valid JSON: ") + e.what(), "(file)");
+        r.fail(DiagnosticCode::bad_json, std::string("not valid JSON: ") + e.what());
         return r;
     }
     Scaffold s;
     try {
         s = read_scaffold(j);
     } catch (const FieldError& e) {
-        r.fail("bad_field", e.message, e.field);
+        r.fail(DiagnosticCode::bad_field, e.field + ": " + e.message, about_parameter(e.field));
         return r;
     } catch (const json::exception& e) {
-        r.fail("bad_field", e.what(), "(file)");
+        r.fail(DiagnosticCode::bad_field, e.what());
         return r;
     }
     return validate_scaffold(std::move(s));
@@ -288,7 +288,7 @@ Result<Scaffold> load_scaffold(const std::string& path)
     std::ifstream in(path);
     if (!in) {
         Result<Scaffold> r;
-        r.fail("unreadable_file", "cannot open design file '" + path + "'", path);
+        r.fail(DiagnosticCode::unreadable_file, "cannot open design file '" + path + "'");
         return r;
     }
     std::ostringstream text;

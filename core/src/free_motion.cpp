@@ -44,9 +44,8 @@ FreeMotion free_motion(const Scaffold& input, const FoldState& state)
 {
     Result<Scaffold> checked = validate_scaffold(input);
     if (!checked.ok)
-        throw std::invalid_argument(
-            "free_motion: invalid scaffold: " + checked.diagnostics.front().subject + ": " +
-            checked.diagnostics.front().message);
+        throw std::invalid_argument("free_motion: invalid scaffold: " +
+                                    checked.diagnostics.front().message);
     if (state.poses.size() != checked.value.patches.size())
         throw std::invalid_argument("free_motion: the state has " +
                                     std::to_string(state.poses.size()) + " poses for " +

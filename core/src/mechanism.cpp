@@ -11,7 +11,8 @@ void range_error(Diagnostics& errors, const std::string& mechanism, const std::s
     std::ostringstream m;
     m << mechanism << ": " << parameter << " = " << value << (unit.empty() ? "" : " ") << unit
       << ", must be " << range;
-    errors.push_back({"bad_parameter", m.str(), mechanism + "." + parameter});
+    errors.push_back(
+        Diagnostic::error(DiagnosticCode::bad_parameter, m.str(), about_parameter(parameter)));
 }
 
 void check_flat_host(const std::string& mechanism, const BasePatchPair& host,
@@ -22,7 +23,7 @@ void check_flat_host(const std::string& mechanism, const BasePatchPair& host,
     std::ostringstream m;
     m << mechanism << ": host " << host.name << " is open " << host.opening * 180 / M_PI
       << "° at the design state; " << kind << " needs a host open flat (180°)";
-    errors.push_back({"bad_host", m.str(), mechanism + ".Host"});
+    errors.push_back(Diagnostic::error(DiagnosticCode::bad_host, m.str(), about_parameter("Host")));
 }
 
 void check_run(Diagnostics& errors, const std::string& mechanism, const std::string& parameter,

@@ -118,11 +118,13 @@ std::string sheet_set_to_json(const SheetSet& set)
                             {"text", step.text}});
     }
     json diagnostics = json::array();
-    for (const SheetDiagnostic& d : set.diagnostics)
-        diagnostics.push_back({{"severity", d.severity},
-                               {"code", d.diagnostic.code},
-                               {"message", d.diagnostic.message},
-                               {"subject", d.diagnostic.subject}});
+    for (const Diagnostic& d : set.diagnostics)
+        diagnostics.push_back({{"code", to_string(d.code)},
+                               {"severity", to_string(d.severity)},
+                               {"message", d.message},
+                               {"patches", d.patches},
+                               {"parameter", d.parameter ? json(*d.parameter) : json(nullptr)},
+                               {"angle_deg", d.angle_deg ? json(*d.angle_deg) : json(nullptr)}});
     const json doc = {{"format", "popup-sheets"},
                       {"version", 1},
                       {"paper",

@@ -36,7 +36,9 @@ void check_range(Diagnostics& errors, const std::string& name, double value, dou
 {
     const bool below = low_open ? !(value > low) : !(value >= low);
     if (below || !(value <= high))
-        errors.push_back({"bad_option", name + " = " + number(value) + ", must be " + range, name});
+        errors.push_back(Diagnostic::error(DiagnosticCode::bad_option,
+                                           name + " = " + number(value) + ", must be " + range,
+                                           about_parameter(name)));
 }
 
 // Quarter turns are exact, so placed creases stay exactly on the placed patch edges.
@@ -85,7 +87,7 @@ double loop_length(const Loop2& loop)
 }
 
 void classify_folds(const Scaffold& s, LocalPiece& piece, const BendSamples& bends,
-                    std::vector<SheetDiagnostic>& diagnostics)
+                    Diagnostics& diagnostics)
 {
     for (size_t i = 0; i < piece.flat.folds.size(); ++i) {
         const Hinge& h = *std::find_if(s.hinges.begin(), s.hinges.end(),
@@ -100,11 +102,11 @@ void classify_folds(const Scaffold& s, LocalPiece& piece, const BendSamples& ben
             const bool flipped = printed.dot(s.find_patch(h.patch_a)->normal) < 0;
             if (direction == FoldDirection::unspecified) {
                 direction = FoldDirection::valley;
-                diagnostics.push_back({"warning",
-                                       {"flat_fold",
+                diagnostics.push_back(
+                    Diagnostic::warning(DiagnosticCode::flat_fold,
                                         "hinge " + std::to_string(h.id) +
                                             " never bends and has no direction: drawn as a valley",
-                                        "hinge " + std::to_string(h.id)}});
+                                        about_patches({h.patch_a, h.patch_b})));
             } else if (flipped) {
                 direction = direction == FoldDirection::valley ? FoldDirection::mountain
                                                                : FoldDirection::valley;
@@ -132,22 +134,20 @@ std::vector<double> sweep_angles(const Scaffold& s, int count)
 }
 
 // Paper cannot overlap itself on the sheet: such a piece must be split at a tab joint.
-void report_self_overlap(const Scaffold& s, const LocalPiece& piece,
-                         std::vector<SheetDiagnostic>& diagnostics)
+void report_self_overlap(const Scaffold& s, const LocalPiece& piece, Diagnostics& diagnostics)
 {
     const auto& ids = piece.flat.patches;
     for (size_t i = 0; i < ids.size(); ++i)
         for (size_t j = i + 1; j < ids.size(); ++j) {
             const double area = overlap_area({piece.flat.outlines[i]}, {piece.flat.outlines[j]});
             if (area > 1e-4)
-                diagnostics.push_back(
-                    {"error",
-                     {"piece_overlaps_itself",
-                      "laid flat, patches " + std::to_string(ids[i]) + " (" +
-                          s.find_patch(ids[i])->name + ") and " + std::to_string(ids[j]) + " (" +
-                          s.find_patch(ids[j])->name + ") overlap by " + number(area) +
-                          " mm²: make one of their folds a tab joint",
-                      "patch " + std::to_string(ids[i])}});
+                diagnostics.push_back(Diagnostic::error(
+                    DiagnosticCode::piece_overlaps_itself,
+                    "laid flat, patches " + std::to_string(ids[i]) + " (" +
+                        s.find_patch(ids[i])->name + ") and " + std::to_string(ids[j]) + " (" +
+                        s.find_patch(ids[j])->name + ") overlap by " + number(area) +
+                        " mm²: make one of their folds a tab joint",
+                    about_patches({ids[i], ids[j]})));
         }
 }
 
@@ -229,12 +229,11 @@ Result<SheetSet> layout_sheets(const Scaffold& input, const SheetOptions& option
     add_glue_tabs(s, pieces, position, bends, options, notes);
     for (const Glue& g : s.glue)
         if (position.at(g.patch_a) != position.at(g.patch_b))
-            notes.push_back(
-                {"warning",
-                 {"glue_without_tab",
-                  "patches " + std::to_string(g.patch_a) + " and " + std::to_string(g.patch_b) +
-                      " are glued face to face: no tab is drawn for them",
-                  "patch " + std::to_string(g.patch_a)}});
+            notes.push_back(Diagnostic::warning(
+                DiagnosticCode::glue_without_tab,
+                "patches " + std::to_string(g.patch_a) + " and " + std::to_string(g.patch_b) +
+                    " are glued face to face: no tab is drawn for them",
+                about_patches({g.patch_a, g.patch_b})));
     std::vector<NestShape> shapes;
     for (size_t k = 0; k < pieces.size(); ++k) {
         LocalPiece& piece = pieces[k];
@@ -242,11 +241,11 @@ Result<SheetSet> layout_sheets(const Scaffold& input, const SheetOptions& option
         add_slit_slots(s, piece);
         cut_outline(piece, options.kerf);
         if (piece.cut_nominal.size() > 1)
-            notes.push_back({"error",
-                             {"piece_falls_apart",
-                              id + " falls apart into " + std::to_string(piece.cut_nominal.size()) +
-                                  " parts when cut: a slit or hole crosses it from edge to edge",
-                              "piece " + id}});
+            notes.push_back(Diagnostic::error(
+                DiagnosticCode::piece_falls_apart,
+                id + " falls apart into " + std::to_string(piece.cut_nominal.size()) +
+                    " parts when cut: a slit or hole crosses it from edge to edge",
+                about_patches(piece.flat.patches)));
         check_die_cutting(piece, id, options, notes);
         add_labels(piece, id, options.fold_hints);
         const Region* largest = &piece.cut.front();

@@ -20,19 +20,29 @@ std::string degrees(double radians)
     return s.str();
 }
 
-std::string patch_list(const Scaffold& s, const BodyGraph& g, int component)
+/// Ids of the moving patches of one component.
+std::vector<int> component_patches(const Scaffold& s, const BodyGraph& g, int component)
 {
-    std::ostringstream out;
-    bool first = true;
+    std::vector<int> ids;
     for (size_t i = 0; i < s.patches.size(); ++i) {
         const int b = g.body_of_patch[i];
-        if (g.is_base(b) || g.component_of_body[b] != component)
-            continue;
-        out << (first ? "" : ", ") << "patch " << s.patches[i].id;
-        if (!s.patches[i].name.empty())
-            out << " (" << s.patches[i].name << ")";
-        first = false;
+        if (!g.is_base(b) && g.component_of_body[b] == component)
+            ids.push_back(s.patches[i].id);
     }
+    return ids;
+}
+
+/// " (patch 3 (name), patch 4)": the patches a message is about, for a person to read.
+std::string patch_list(const Scaffold& s, const std::vector<int>& ids)
+{
+    std::ostringstream out;
+    for (size_t k = 0; k < ids.size(); ++k) {
+        const Patch& p = *s.find_patch(ids[k]);
+        out << (k ? ", " : " (") << "patch " << p.id;
+        if (!p.name.empty())
+            out << " (" << p.name << ")";
+    }
+    out << (ids.empty() ? "" : ")");
     return out.str();
 }
 
@@ -90,16 +100,19 @@ Result<FoldSweep> sweep_from(const Scaffold& s, const BodyGraph& g, const FoldSo
                 const bool closer = run == &closing;
                 if (sweep.locked_at < 0.0 || (closer ? at > sweep.locked_at : at < sweep.locked_at))
                     sweep.locked_at = at;
-                result.warn("motion_locked",
+                const std::vector<int> ids = component_patches(s, g, int(c));
+                result.warn(DiagnosticCode::motion_locked,
                             std::string("the motion locks at ") + degrees(at) + " while " +
                                 (closer ? "closing" : "opening") +
-                                ": the patches cannot move further without bending or tearing",
-                            patch_list(s, g, int(c)));
+                                ": the patches cannot move further without bending or tearing" +
+                                patch_list(s, ids),
+                            about_patches(ids, at * 180.0 / M_PI));
             }
             if (!track.branch_followed())
-                result.warn("branch_not_followed",
-                            "a flat fold left the design state against its fold direction",
-                            patch_list(s, g, int(c)));
+                result.warn(DiagnosticCode::branch_not_followed,
+                            "a flat fold left the design state against its fold direction" +
+                                patch_list(s, component_patches(s, g, int(c))),
+                            about_patches(component_patches(s, g, int(c))));
         }
     }
     sweep.complete = std::all_of(reached.begin(), reached.end(), [](bool r) { return r; });
@@ -126,7 +139,7 @@ bool prepare(const Scaffold& input, const std::vector<double>& angles, Result<Fo
         if (!(a >= 0.0 && a <= M_PI)) {
             std::ostringstream m;
             m << "fold angle " << a << " rad is outside 0..π (0°..180°)";
-            result.fail("angle_out_of_range", m.str(), "angles");
+            result.fail(DiagnosticCode::angle_out_of_range, m.str(), about_parameter("angles"));
         }
     if (!result.ok)
         return false;
@@ -171,7 +184,9 @@ Result<FoldSweep> simulate_fold(const Scaffold& input, const std::vector<double>
         m << "hinge " << s.hinges[solver.undirected_flat_hinges(c)[0]].id
           << " is flat at the design state, where the motion can branch, and has no fold "
              "direction; set \"fold\" to valley or mountain to choose how it pops";
-        result.warn("undirected_flat_fold", m.str(), patch_list(s, g, int(c)));
+        const Hinge& h = s.hinges[solver.undirected_flat_hinges(c)[0]];
+        result.warn(DiagnosticCode::undirected_flat_fold, m.str(),
+                    about_patches({h.patch_a, h.patch_b}));
     }
     return result;
 }
@@ -186,10 +201,10 @@ Result<FoldSweep> continue_fold(const Scaffold& input, const FoldState& from,
         return result;
     const Scaffold& s = checked.value;
     if (from.poses.size() != s.patches.size() || !(from.angle >= 0.0 && from.angle <= M_PI)) {
-        result.fail("bad_start_state",
+        result.fail(DiagnosticCode::bad_start_state,
                     "the start state has " + std::to_string(from.poses.size()) + " poses for " +
                         std::to_string(s.patches.size()) + " patches, or an angle outside 0..π",
-                    "from");
+                    about_parameter("from"));
         return result;
     }
     const FoldSolver solver(s, graph.value, options);

@@ -44,14 +44,14 @@ Result<FlatPiece> unfold_piece(const Scaffold& input, const std::vector<int>& pi
     }
     const Scaffold& s = checked.value;
     if (piece.empty()) {
-        r.fail("empty_piece", "a piece needs at least one patch", "piece");
+        r.fail(DiagnosticCode::empty_piece, "a piece needs at least one patch");
         return r;
     }
     const std::set<int> members(piece.begin(), piece.end());
     for (int id : piece)
         if (!s.find_patch(id)) {
-            r.fail("unknown_patch", "patch " + std::to_string(id) + " is not in the scaffold",
-                   "piece");
+            r.fail(DiagnosticCode::unknown_patch,
+                   "patch " + std::to_string(id) + " of the piece is not in the scaffold");
             return r;
         }
     std::vector<const Hinge*> folds;
@@ -92,10 +92,10 @@ Result<FlatPiece> unfold_piece(const Scaffold& input, const std::vector<int>& pi
     if (flat.patches.size() != members.size()) {
         for (int id : piece)
             if (!unfold.count(id)) {
-                r.fail("disconnected_piece",
+                r.fail(DiagnosticCode::disconnected_piece,
                        name_of(*s.find_patch(id)) + " is not joined to " +
                            name_of(*s.find_patch(piece.front())) + " by folds of the piece",
-                       name_of(*s.find_patch(id)));
+                       about_patches({id, piece.front()}));
                 break;
             }
         return r;
@@ -114,15 +114,17 @@ Result<FlatPiece> unfold_piece(const Scaffold& input, const std::vector<int>& pi
             m << "hinge " << h->id << " closes a loop of folds that does not lie flat: its two "
               << "sides land " << gap
               << " mm apart (make one hinge of the loop a tab joint: \"joint\": \"tab\")";
-            r.fail("not_developable", m.str(), "hinge " + std::to_string(h->id));
+            r.fail(DiagnosticCode::not_developable, m.str(),
+                   about_patches({h->patch_a, h->patch_b}));
         }
     }
     const Patch& root = *s.find_patch(piece.front());
     for (const auto& [id, u] : unfold)
         for (const Vec3& x : s.find_patch(id)->outer)
             if (std::abs((u.apply(x) - root.origin).dot(root.normal)) > tol) {
-                r.fail("not_flat", name_of(*s.find_patch(id)) + " does not come to lie flat",
-                       name_of(*s.find_patch(id)));
+                r.fail(DiagnosticCode::not_flat,
+                       name_of(*s.find_patch(id)) + " does not come to lie flat",
+                       about_patches({id}));
                 break;
             }
     if (!r.ok)

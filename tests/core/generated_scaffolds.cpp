@@ -31,7 +31,7 @@ Scaffold generated_scaffold(int patch_count)
     if (!valid.ok) {
         std::string why;
         for (const Diagnostic& d : valid.diagnostics)
-            why += "\n  " + d.code + ": " + d.message;
+            why += "\n  " + std::string(to_string(d.code)) + ": " + d.message;
         throw std::logic_error("generated_scaffold(" + std::to_string(patch_count) +
                                ") is invalid:" + why);
     }

@@ -95,7 +95,7 @@ Scaffold validated(Scaffold s)
 {
     Result<Scaffold> r = validate_scaffold(std::move(s));
     for (const Diagnostic& d : r.diagnostics)
-        ADD_FAILURE() << d.code << ": " << d.message << " [" << d.subject << "]";
+        ADD_FAILURE() << to_string(d.code) << ": " << d.message;
     return r.value;
 }
 

@@ -12,7 +12,7 @@ namespace {
 bool has_code(const ValidityReport& r, const std::string& code)
 {
     for (const Diagnostic& d : r.diagnostics)
-        if (d.code == code)
+        if (to_string(d.code) == code)
             return true;
     return false;
 }
@@ -20,7 +20,7 @@ bool has_code(const ValidityReport& r, const std::string& code)
 const Diagnostic* find_code(const ValidityReport& r, const std::string& code)
 {
     for (const Diagnostic& d : r.diagnostics)
-        if (d.code == code)
+        if (to_string(d.code) == code)
             return &d;
     return nullptr;
 }
@@ -65,7 +65,13 @@ TEST(CheckValidity, FiveBarLoopIsNotStable)
     ASSERT_NE(d, nullptr);
     EXPECT_NE(d->message.find("1 free motion"), std::string::npos) << d->message;
     for (const char* id : {"patch 2", "patch 3", "patch 4"})
-        EXPECT_NE(d->subject.find(id), std::string::npos) << d->subject;
+        EXPECT_NE(d->message.find(id), std::string::npos) << d->message;
+    std::vector<int> moving = d->patches;
+    std::sort(moving.begin(), moving.end());
+    EXPECT_EQ(moving, (std::vector<int>{2, 3, 4}));
+    ASSERT_TRUE(d->angle_deg.has_value());
+    EXPECT_GT(*d->angle_deg, 0.0);
+    EXPECT_LT(*d->angle_deg, 180.0);
 }
 
 TEST(CheckValidity, WallsCollidingAt40DegreesAreFound)

@@ -18,9 +18,9 @@ Scaffold tent_card()
     return s;
 }
 
-std::string first_subject(const Result<Scaffold>& r)
+std::string first_parameter(const Result<Scaffold>& r)
 {
-    return r.diagnostics.empty() ? "" : r.diagnostics.front().subject;
+    return r.diagnostics.empty() ? "" : r.diagnostics.front().parameter.value_or("");
 }
 } // namespace
 
@@ -28,7 +28,7 @@ TEST(DesignFile, RoundTripKeepsEveryCoordinateAndFold)
 {
     const Scaffold s = tent_card();
     const Result<Scaffold> back = scaffold_from_json(scaffold_to_json(s));
-    ASSERT_TRUE(back.ok) << first_subject(back);
+    ASSERT_TRUE(back.ok) << first_parameter(back);
     ASSERT_EQ(back.value.patches.size(), s.patches.size());
     ASSERT_EQ(back.value.hinges.size(), s.hinges.size());
     for (size_t i = 0; i < s.patches.size(); ++i) {
@@ -56,7 +56,7 @@ TEST(DesignFile, MissingFileIsNamed)
 {
     const Result<Scaffold> r = load_scaffold("/nonexistent/card.json");
     EXPECT_FALSE(r.ok);
-    EXPECT_EQ(r.diagnostics.front().code, "unreadable_file");
+    EXPECT_EQ(r.diagnostics.front().code, DiagnosticCode::unreadable_file);
     EXPECT_NE(r.diagnostics.front().message.find("/nonexistent/card.json"), std::string::npos);
 }
 
@@ -64,7 +64,7 @@ TEST(DesignFile, MalformedJsonIsReported)
 {
     const Result<Scaffold> r = scaffold_from_json("{\"format\": ");
     EXPECT_FALSE(r.ok);
-    EXPECT_EQ(r.diagnostics.front().code, "bad_json");
+    EXPECT_EQ(r.diagnostics.front().code, DiagnosticCode::bad_json);
 }
 
 TEST(DesignFile, BadFieldsAreNamedByPath)
@@ -76,13 +76,14 @@ TEST(DesignFile, BadFieldsAreNamedByPath)
         t.replace(t.find(from), from.size(), to);
         return scaffold_from_json(t);
     };
-    EXPECT_EQ(first_subject(broken("\"popup-design\"", "\"other\"")), "format");
-    EXPECT_EQ(first_subject(broken("\"version\": 1", "\"version\": 7")), "version");
-    EXPECT_EQ(first_subject(broken("\"ground\": 0", "\"ground\": \"zero\"")), "ground");
-    EXPECT_EQ(first_subject(broken("\"role\": \"support\"", "\"role\": \"roof\"")),
+    EXPECT_EQ(first_parameter(broken("\"popup-design\"", "\"other\"")), "format");
+    EXPECT_EQ(first_parameter(broken("\"version\": 1", "\"version\": 7")), "version");
+    EXPECT_EQ(first_parameter(broken("\"ground\": 0", "\"ground\": \"zero\"")), "ground");
+    EXPECT_EQ(first_parameter(broken("\"role\": \"support\"", "\"role\": \"roof\"")),
               "patches[2].role");
-    EXPECT_EQ(first_subject(broken("\"outline\": [", "\"outlines\": [")), "patches[0].outline");
-    EXPECT_EQ(first_subject(broken("\"fold\": \"valley\"", "\"fold\": \"up\"")), "hinges[0].fold");
+    EXPECT_EQ(first_parameter(broken("\"outline\": [", "\"outlines\": [")), "patches[0].outline");
+    EXPECT_EQ(first_parameter(broken("\"fold\": \"valley\"", "\"fold\": \"up\"")),
+              "hinges[0].fold");
 }
 
 TEST(DesignFile, NullCoordinateIsNamed)
@@ -95,7 +96,7 @@ TEST(DesignFile, NullCoordinateIsNamed)
     text.replace(start, text.find(',', start) - start, "null");
     const Result<Scaffold> r = scaffold_from_json(text);
     EXPECT_FALSE(r.ok);
-    EXPECT_EQ(first_subject(r), "patches[0].outline[0][0]");
+    EXPECT_EQ(first_parameter(r), "patches[0].outline[0][0]");
 }
 
 TEST(DesignFile, SlitsRoundTripAndBadOnesAreNamed)
@@ -109,13 +110,13 @@ TEST(DesignFile, SlitsRoundTripAndBadOnesAreNamed)
     EXPECT_FALSE(back.ok);
     bool named = false;
     for (const Diagnostic& d : back.diagnostics)
-        named |= d.subject == "slit 4" && d.code == "slit_off_plane";
+        named |= d.message.rfind("slit 4: ", 0) == 0 && d.code == DiagnosticCode::slit_off_plane;
     EXPECT_TRUE(named);
     std::string broken = text;
     broken.replace(broken.find("\"slits\": ["), 10, "\"slits\": [{\"patches\": [2]},");
     const Result<Scaffold> bad = scaffold_from_json(broken);
     EXPECT_FALSE(bad.ok);
-    EXPECT_EQ(bad.diagnostics.front().subject, "slits[0].patches");
+    EXPECT_EQ(bad.diagnostics.front().parameter, "slits[0].patches");
 }
 
 TEST(DesignFile, SlitOfAHorizontalTranslationRoundTrips)

@@ -121,7 +121,9 @@ TEST(BoxFold, UnequalDepthsWithEndPanelsAreRefused)
     p.depth_backdrop = 20;
     const auto r = add_box_fold(s, central_fold(s), p);
     EXPECT_FALSE(r.ok);
-    EXPECT_EQ(r.diagnostics.front().subject, "BoxFold.DepthBackdrop");
+    EXPECT_EQ(r.diagnostics.front().parameter, "DepthBackdrop");
+    EXPECT_EQ(r.diagnostics.front().message.rfind("BoxFold: DepthBackdrop = ", 0), 0u)
+        << r.diagnostics.front().message;
 }
 
 TEST(PlacementPreCheck, AgreesWithTheSimulatorOnBoxesAndVFolds)
@@ -235,7 +237,7 @@ TEST(RotationArm, ArmLongerThanSpineSquaredOverRunDipsUnderTheBackdrop)
     p.arm = 1.01 * p.spine * p.spine / p.run;
     const auto refused = add_rotation_arm(s, central_fold(s), p);
     EXPECT_FALSE(refused.ok);
-    EXPECT_EQ(refused.diagnostics.front().subject, "RotationArm.Arm");
+    EXPECT_EQ(refused.diagnostics.front().parameter, "Arm");
     // Built anyway from raw patches, the simulator finds the arm passing through the backdrop.
     p.arm = 1.2 * p.spine * p.spine / p.run;
     const Vec3 O(0, 60, 0), R(0, 100, 0), S(30, 100, 0), Sb(-30, 100, 0), P(-p.arm, 100, 0);
@@ -305,7 +307,7 @@ TEST(MechanismBuilder, AMechanismTooBigForItsHostIsTakenOutAgain)
     step.run_ground = step.run_backdrop = 12;
     const auto r = add_step_fold(s, vfold.value.offered[0], step, "Step");
     EXPECT_FALSE(r.ok);
-    EXPECT_EQ(r.diagnostics.front().code, "mechanism_does_not_fit");
+    EXPECT_EQ(r.diagnostics.front().code, DiagnosticCode::mechanism_does_not_fit);
     EXPECT_NE(r.diagnostics.front().message.find("VFold.wing"), std::string::npos);
     EXPECT_EQ(s.patches.size(), patches);
     EXPECT_EQ(s.hinges.size(), hinges);

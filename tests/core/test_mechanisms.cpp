@@ -143,8 +143,8 @@ TEST(MechanismParameters, BadValuesAreNamedAndLeaveTheScaffoldAlone)
         const auto r = add(s);
         EXPECT_FALSE(r.ok) << parameter;
         ASSERT_FALSE(r.diagnostics.empty()) << parameter;
-        EXPECT_NE(r.diagnostics.front().subject.find(parameter), std::string::npos)
-            << r.diagnostics.front().subject << " / " << parameter;
+        EXPECT_EQ(r.diagnostics.front().parameter, parameter);
+        EXPECT_EQ(r.diagnostics.front().code, DiagnosticCode::bad_parameter);
         EXPECT_NE(r.diagnostics.front().message.find("must be"), std::string::npos);
         EXPECT_EQ(s.patches.size(), base.patches.size());
         EXPECT_EQ(s.hinges.size(), base.hinges.size());
@@ -349,5 +349,5 @@ TEST(BoxFold, SeveralPanelPairsPerEndStayValid)
     Scaffold other = card();
     const auto bad = add_box_fold(other, central_fold(other), p);
     EXPECT_FALSE(bad.ok);
-    EXPECT_EQ(bad.diagnostics.front().subject, "BoxFold.PanelPairs");
+    EXPECT_EQ(bad.diagnostics.front().parameter, "PanelPairs");
 }

@@ -11,7 +11,7 @@ namespace {
 bool has(const Result<Scaffold>& r, const std::string& code, const std::string& subject)
 {
     for (const Diagnostic& d : r.diagnostics)
-        if (d.code == code && d.subject.find(subject) != std::string::npos)
+        if (to_string(d.code) == code && d.message.find(subject) != std::string::npos)
             return true;
     return false;
 }

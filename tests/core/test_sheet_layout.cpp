@@ -101,9 +101,9 @@ SheetOptions a3()
 std::vector<std::string> errors_of(const SheetSet& set)
 {
     std::vector<std::string> errors;
-    for (const SheetDiagnostic& d : set.diagnostics)
-        if (d.severity == "error")
-            errors.push_back(d.diagnostic.message);
+    for (const Diagnostic& d : set.diagnostics)
+        if (d.severity == Severity::error)
+            errors.push_back(d.message);
     return errors;
 }
 
@@ -290,16 +290,18 @@ TEST(SheetLayout, TabsNarrowToFitAndReportWhenNoneFits)
     o.tab_width = 20; // wider than the arm's 40 mm spine allows with 45° sides
     const SheetSet narrowed = layout_sheets(s, o).value;
     bool narrow = false;
-    for (const SheetDiagnostic& d : narrowed.diagnostics)
-        narrow = narrow || d.diagnostic.code == "narrow_tab";
+    for (const Diagnostic& d : narrowed.diagnostics)
+        narrow =
+            narrow || (d.code == DiagnosticCode::narrow_tab && d.severity == Severity::warning);
     EXPECT_TRUE(narrow);
     EXPECT_TRUE(errors_of(narrowed).empty());
 
     o.min_tab_width = 20;
     const SheetSet none = layout_sheets(s, o).value;
     int no_room = 0;
-    for (const SheetDiagnostic& d : none.diagnostics)
-        no_room += d.diagnostic.code == "no_room_for_tab" && d.severity == "error";
+    for (const Diagnostic& d : none.diagnostics)
+        no_room += d.code == DiagnosticCode::no_room_for_tab && d.severity == Severity::error &&
+                   d.patches.size() == 2;
     EXPECT_GE(no_room, 1);
 }
 
@@ -314,9 +316,10 @@ TEST(SheetLayout, APieceThatOverlapsItselfFlatIsReported)
     }
     const SheetSet set = layout_sheets(s, a3()).value;
     bool reported = false;
-    for (const SheetDiagnostic& d : set.diagnostics)
-        reported = reported || (d.diagnostic.code == "piece_overlaps_itself" &&
-                                d.diagnostic.message.find("mm²") != std::string::npos);
+    for (const Diagnostic& d : set.diagnostics)
+        reported =
+            reported || (d.code == DiagnosticCode::piece_overlaps_itself &&
+                         d.message.find("mm²") != std::string::npos && d.patches.size() == 2);
     EXPECT_TRUE(reported);
 }
 
@@ -329,10 +332,10 @@ TEST(SheetLayout, BadOptionsAndPaperAreNamedErrors)
     const Result<SheetSet> bad = layout_sheets(s, o);
     ASSERT_FALSE(bad.ok);
     ASSERT_EQ(bad.diagnostics.size(), 2u);
-    EXPECT_EQ(bad.diagnostics[0].subject, "spacing");
+    EXPECT_EQ(bad.diagnostics[0].parameter, "spacing");
     EXPECT_NE(bad.diagnostics[0].message.find("at least kerf + min_gap = 1.1 mm"),
               std::string::npos);
-    EXPECT_EQ(bad.diagnostics[1].subject, "tab_angle");
+    EXPECT_EQ(bad.diagnostics[1].parameter, "tab_angle");
 
     // The open A4 card (210 × 297) cannot fit A4 paper inside 10 mm margins.
     SheetOptions a4;
@@ -340,7 +343,8 @@ TEST(SheetLayout, BadOptionsAndPaperAreNamedErrors)
     ASSERT_FALSE(small.ok);
     EXPECT_NE(small.diagnostics.front().message.find("does not fit the printable area"),
               std::string::npos);
-    EXPECT_EQ(small.diagnostics.front().subject, "piece P1");
+    EXPECT_EQ(small.diagnostics.front().parameter, "paper");
+    EXPECT_NE(small.diagnostics.front().message.find("piece P1"), std::string::npos);
 
     EXPECT_FALSE(paper_by_name("A9").ok);
     const Result<Paper> custom = paper_by_name("500x400");

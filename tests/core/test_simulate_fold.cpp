@@ -121,7 +121,7 @@ TEST(SimulateFold, AnglesOutsideTheRangeAreRejected)
 {
     const Result<FoldSweep> r = simulate_fold(fixtures::make_card(), {deg(190)});
     EXPECT_FALSE(r.ok);
-    EXPECT_EQ(r.diagnostics.front().code, "angle_out_of_range");
+    EXPECT_EQ(r.diagnostics.front().code, DiagnosticCode::angle_out_of_range);
 }
 
 TEST(SimulateFold, InvalidScaffoldIsReportedNotSimulated)
@@ -130,7 +130,7 @@ TEST(SimulateFold, InvalidScaffoldIsReportedNotSimulated)
     s.patches[0].outer[1].z() = std::nan("");
     const Result<FoldSweep> r = simulate_fold(s, {deg(90)});
     EXPECT_FALSE(r.ok);
-    EXPECT_EQ(r.diagnostics.front().code, "non_finite_coordinate");
+    EXPECT_EQ(r.diagnostics.front().code, DiagnosticCode::non_finite_coordinate);
     EXPECT_TRUE(r.value.states.empty());
 }
 

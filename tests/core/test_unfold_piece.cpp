@@ -114,7 +114,7 @@ TEST(UnfoldPiece, ALoopThatCannotLieFlatIsNamed)
     const Result<FlatPiece> flat = unfold_piece(
         s, std::vector<int>{s.ground, s.backdrop, tent.value.patches[0], tent.value.patches[1]});
     EXPECT_FALSE(flat.ok);
-    EXPECT_EQ(flat.diagnostics.front().code, "not_developable");
+    EXPECT_EQ(flat.diagnostics.front().code, DiagnosticCode::not_developable);
     EXPECT_NE(flat.diagnostics.front().message.find("20 mm"), std::string::npos)
         << flat.diagnostics.front().message;
 }
@@ -129,7 +129,7 @@ TEST(UnfoldPiece, DisconnectedPatchesAreNamed)
     const Result<FlatPiece> flat =
         unfold_piece(s, std::vector<int>{tent.value.patches[0], s.backdrop});
     EXPECT_FALSE(flat.ok);
-    EXPECT_EQ(flat.diagnostics.front().code, "disconnected_piece");
+    EXPECT_EQ(flat.diagnostics.front().code, DiagnosticCode::disconnected_piece);
     EXPECT_FALSE(unfold_piece(s, std::vector<int>{}).ok);
 }
 

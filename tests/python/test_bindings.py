@@ -112,9 +112,13 @@ def test_failing_designs_explain_themselves(reports, name):
     for d in report.diagnostics:
         assert isinstance(d.code, str) and d.code
         assert isinstance(d.message, str) and d.message
-        assert isinstance(d.subject, str)
-    # At least one finding points at a patch or hinge a person can go and fix.
-    assert any(d.subject for d in report.diagnostics), name
+        assert d.code in popupcore.diagnostic_codes()
+        assert d.severity in ("error", "warning", "info")
+        assert all(isinstance(i, int) for i in d.patches)
+    # At least one finding points at patches a person can go and fix, all of them in the design.
+    ids = {p.id for p in load(name).patches}
+    assert any(d.patches for d in report.diagnostics), name
+    assert all(set(d.patches) <= ids for d in report.diagnostics), name
 
 
 def test_report_to_dict_mirrors_attributes(reports):
@@ -131,8 +135,17 @@ def test_report_to_dict_mirrors_attributes(reports):
         else:
             assert d["locked_at_deg"] == pytest.approx(math.degrees(report.locked_at), abs=1e-12)
         assert d["diagnostics"] == [
-            {"code": x.code, "message": x.message, "subject": x.subject} for x in report.diagnostics
+            {
+                "code": x.code,
+                "severity": x.severity,
+                "message": x.message,
+                "patches": list(x.patches),
+                "parameter": x.parameter,
+                "angle_deg": x.angle_deg,
+            }
+            for x in report.diagnostics
         ]
+        assert d["diagnostics"] == [x.to_dict() for x in report.diagnostics]
 
 
 def test_check_validity_takes_options(tent):
@@ -384,7 +397,7 @@ def test_design_error_lists_every_finding(tent):
     raw["patches"][0]["id"] = raw["patches"][1]["id"]  # duplicate id
     raw["paper_thickness"] = -1.0
     message = design_error(raw)
-    assert "used twice" in message and "paper_thickness" in message
+    assert "used twice" in message and "paper thickness" in message
 
 
 # --- exception translation --------------------------------------------------------------------

@@ -26,6 +26,12 @@ INVALID = {
 }
 
 
+def documented_codes():
+    """The diagnostic codes docs/DIAGNOSTICS.md lists (first column of its tables)."""
+    with open(os.path.join(SOURCE_DIR, "docs", "DIAGNOSTICS.md")) as f:
+        return {line.split("`")[1] for line in f if line.startswith("| `")}
+
+
 def data(name):
     path = os.path.join(DATA_DIR, name)
     assert os.path.isfile(path), f"test design {path} is missing"
@@ -89,7 +95,8 @@ def test_json_report():
     assert report["file"] == data("tent_fold.json")
     assert isinstance(report["diagnostics"], list)
     for d in report["diagnostics"]:
-        assert set(d) >= {"code", "message", "subject"}
+        assert set(d) == {"code", "severity", "message", "patches", "parameter", "angle_deg"}
+        assert d["code"] in documented_codes()
 
 
 @pytest.mark.parametrize("name", sorted(INVALID))

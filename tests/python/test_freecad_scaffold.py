@@ -308,13 +308,13 @@ def test_format_report_lists_verdicts_numbers_and_findings(popup):
         "locked_at_deg": 42.0,
         "max_hinge_residual": 1e-9,
         "model_size": 210.0,
-        "diagnostics": [{"code": "locked", "message": "the motion stops", "subject": "hinge 3"}],
+        "diagnostics": [{"code": "motion_locked", "message": "hinge 3: the motion stops"}],
     }
     lines = popup.validity.format_report(report).splitlines()
     assert lines[0] == "INVALID: NOT foldable, stable, intersection-free, enclosed"
     assert any("42.00°" in line for line in lines)
     assert any("210 mm" in line for line in lines)
-    assert lines[-1].strip() == "locked: the motion stops [hinge 3]"
+    assert lines[-1].strip() == "motion_locked: hinge 3: the motion stops"
 
 
 def test_popupcore_is_found_from_the_build_dir_alone(run_fresh_freecad):

@@ -218,7 +218,7 @@ def test_a4_card_does_not_fit_a4_paper(doc, popup, card):
     assert in_error(sheet)
     message = sheet.getStatusString()
     assert (
-        message.startswith("CuttingSheet: piece P1")
+        message.startswith("CuttingSheet: Paper: piece P1")
         and "does not fit the printable area" in message
     )
     assert list(sheet.Diagnostics) == [f"error: {message}"]

@@ -15,7 +15,6 @@ property names are stored in .FCStd files: never rename them.
 import collections
 import hashlib
 import json
-import re
 
 import FreeCAD
 
@@ -122,7 +121,7 @@ class CuttingSheet(StatelessProxy):
         report(
             "App::PropertyStringList",
             "Diagnostics",
-            "Findings of the last layout (severity: code: message [subject])",
+            "Findings of the last layout (severity: code: message)",
             mode=1,
             output=True,
         )
@@ -170,10 +169,10 @@ class CuttingSheet(StatelessProxy):
         try:
             sheet_set = export.layout(built.scaffold, **options)
         except ValueError as error:  # DesignError names the option and its range
-            raise self._error(obj, property_message(str(error), obj)) from error
+            raise self._error(obj, property_message(error, obj)) from error
         errors = [d for d in sheet_set["diagnostics"] if d["severity"] == "error"]
         if errors:
-            raise self._error(obj, "; ".join(f"{d['subject']}: {d['message']}" for d in errors))
+            raise self._error(obj, "; ".join(d["message"] for d in errors))
         self._show(obj, sheet_set)
         obj.InputDigest = digest
 
@@ -268,18 +267,24 @@ def layout_options(obj):
     return options
 
 
-def property_message(text, obj):
-    """The core's "option: message; ..." with each option named by its property:
-    "tab_angle: tab_angle = 0, must be ..." becomes "TabAngle: tab_angle = 0, must be ..."."""
+def property_message(error, obj):
+    """A DesignError's findings, each led by the property of the option at fault:
+    "TabAngle: tab_angle = 0, must be ..."."""
     names = {option.name: option.prop for option in OPTIONS}
     names["paper"] = "PaperWidth/PaperHeight" if obj.Paper == CUSTOM else "Paper"
-    return re.sub(
-        r"(^|; )(\w+): ", lambda m: f"{m.group(1)}{names.get(m.group(2), m.group(2))}: ", text
+    findings = getattr(error, "diagnostics", None)
+    if not findings:
+        return str(error)
+    return "; ".join(
+        f"{names.get(d['parameter'], d['parameter'])}: {d['message']}"
+        if d["parameter"]
+        else d["message"]
+        for d in findings
     )
 
 
 def diagnostic_line(diagnostic):
-    """A sheet set diagnostic as one line: "warning: code: message [subject]"."""
+    """A sheet set diagnostic as one line: "warning: code: message"."""
     from popupwb.validity import format_diagnostic
 
     return f"{diagnostic['severity']}: {format_diagnostic(diagnostic)}"

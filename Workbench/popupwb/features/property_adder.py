@@ -26,7 +26,7 @@ def add_validity_outputs(add, valid_doc):
     add(
         "App::PropertyStringList",
         "Diagnostics",
-        "Findings of the last validity check (code: message [subject])",
+        "Findings of the last validity check (code: message)",
         mode=1,
         output=True,
     )

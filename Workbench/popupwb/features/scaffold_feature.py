@@ -139,7 +139,7 @@ class ScaffoldFeature(StatelessProxy):
 
         sweep = popupcore.simulate_fold(scaffold, [math.radians(angle)])
         if not sweep.complete or not sweep.states:
-            findings = "; ".join(f"{d.subject}: {d.message}" for d in sweep.diagnostics)
+            findings = "; ".join(d.message for d in sweep.diagnostics)
             if sweep.locked_at >= 0.0:
                 reason = f"the design locks at {math.degrees(sweep.locked_at):.2f}°"
             else:
@@ -149,7 +149,7 @@ class ScaffoldFeature(StatelessProxy):
                 + (f" ({findings})" if findings else "")
             )
         for d in sweep.diagnostics:
-            FreeCAD.Console.PrintLog(f"{obj.Label}: {d.code}: {d.message} [{d.subject}]\n")
+            FreeCAD.Console.PrintLog(f"{obj.Label}: {d.code}: {d.message}\n")
 
         try:
             brep = popupcore.patches_to_brep(scaffold, sweep.states[0], thickness)

@@ -149,6 +149,6 @@ def _diagnostics_section(sheets, styles):
     if not sheets.diagnostics:
         return flowables + [Paragraph("None.", styles["BodyText"])]
     for diagnostic in sheets.diagnostics:
-        text = f"{diagnostic.severity.capitalize()} ({diagnostic.subject}): {diagnostic.message}"
+        text = f"{diagnostic.severity.capitalize()} ({diagnostic.code}): {diagnostic.message}"
         flowables.append(Paragraph(escape(text), styles["Bullet"], bulletText="-"))
     return flowables

@@ -8,7 +8,7 @@ malformed sheet set fails once, with a ValueError naming the key path. No FreeCA
 import math
 import os
 from dataclasses import dataclass
-from typing import Tuple
+from typing import Optional, Tuple
 
 Point = Tuple[float, float]
 Loop = Tuple[Point, ...]
@@ -103,10 +103,24 @@ class AssemblyStep:
 
 @dataclass(frozen=True)
 class Diagnostic:
+    """A finding of the layout, with the fields of every PopUp diagnostic (docs/DIAGNOSTICS.md)."""
+
     severity: str
     code: str
     message: str
-    subject: str
+    patches: Tuple[int, ...]
+    parameter: Optional[str]
+    angle_deg: Optional[float]
+
+    def to_dict(self):
+        return {
+            "code": self.code,
+            "severity": self.severity,
+            "message": self.message,
+            "patches": list(self.patches),
+            "parameter": self.parameter,
+            "angle_deg": self.angle_deg,
+        }
 
 
 @dataclass(frozen=True)
@@ -166,6 +180,10 @@ class _Node:
         if isinstance(self.value, bool) or not isinstance(self.value, int):
             raise self.error(f"is not an integer: {self.value!r}")
         return self.value
+
+    def optional(self, read):
+        """None for a JSON null, else the value read by `read` (a method of _Node)."""
+        return None if self.value is None else read(self)
 
     def text(self, choices=None):
         if not isinstance(self.value, str):
@@ -303,10 +321,12 @@ def read_sheet_set(data):
         ),
         diagnostics=tuple(
             Diagnostic(
-                node["severity"].text(("error", "warning")),
+                node["severity"].text(("error", "warning", "info")),
                 node["code"].text(),
                 node["message"].text(),
-                node["subject"].text(),
+                tuple(item.integer() for item in node["patches"].items()),
+                node["parameter"].optional(_Node.text),
+                node["angle_deg"].optional(_Node.number),
             )
             for node in root["diagnostics"].items()
         ),

@@ -11,6 +11,7 @@ struct CardParams {
     double width = 210.0; ///< along the central fold (mm)
     double depth = 148.0; ///< each page, from the fold to its edge (mm)
     double paper_thickness = 0.2;
+    std::string name = "Card"; ///< what error messages call the card (its FreeCAD Label)
 };
 
 /// The card's scaffold (ground id 0, backdrop id 1, the central fold as hinge 0). Errors name the

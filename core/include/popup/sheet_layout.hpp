@@ -110,11 +110,6 @@ struct RoundTrip {
     bool ok = false;
 };
 
-struct SheetDiagnostic {
-    std::string severity; ///< error (the sheets cannot be used as they are) or warning
-    Diagnostic diagnostic;
-};
-
 struct SheetSet {
     SheetOptions options;
     double card_size = 0.0;       ///< the design's size (Scaffold::size), the tolerance scale
@@ -126,7 +121,7 @@ struct SheetSet {
     double cut_length = 0.0;   ///< total length of the kerf-compensated cut loops
     double stack_height = 0.0; ///< closed card: paper layers × thickness at the thickest point
     RoundTrip round_trip;
-    std::vector<SheetDiagnostic> diagnostics;
+    Diagnostics diagnostics; ///< errors: the sheets cannot be used as they are
 };
 
 /// Unfolds the scaffold into pieces, adds glue tabs and their targets, classifies the folds,

@@ -64,7 +64,7 @@ Result<MechanismParts> MechanismBuilder::finish()
             m << parts_.name << ": does not fit on " << host_.name << ": one of its folds runs off "
               << (p->name.empty() ? "patch " + std::to_string(p->id) : p->name)
               << "; make it smaller or move it";
-            r.fail("mechanism_does_not_fit", m.str(), parts_.name + ".Host");
+            r.fail(DiagnosticCode::mechanism_does_not_fit, m.str(), {{id}, "Host", std::nullopt});
             break;
         }
     }

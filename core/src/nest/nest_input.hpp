@@ -66,11 +66,11 @@ inline void check_options(const NestOptions& options, Result<std::vector<Outline
         format_mm(paper.width, 1) + " x " + format_mm(paper.height, 1) + " mm";
     if (!(paper.width > 0.0 && paper.height > 0.0 && paper.width <= kLargestPaperSide &&
           paper.height <= kLargestPaperSide)) {
-        result.fail("bad_paper",
+        result.fail(DiagnosticCode::bad_paper,
                     "paper " + paper.name + " is " + paper_size +
                         "; width and height must be greater than 0 and at most " +
                         format_mm(kLargestPaperSide) + " mm",
-                    "paper");
+                    about_parameter("paper"));
         return;
     }
     const double largest_margin = 0.5 * std::min(paper.width, paper.height);
@@ -78,19 +78,20 @@ inline void check_options(const NestOptions& options, Result<std::vector<Outline
                                        format_mm(largest_margin) + " mm (half the paper's " +
                                        "shorter side)";
     if (!(options.margin >= 0.0))
-        result.fail("bad_margin", "margin " + format_mm(options.margin) + " mm" + allowed_margin,
-                    "margin");
+        result.fail(DiagnosticCode::bad_margin,
+                    "margin " + format_mm(options.margin) + " mm" + allowed_margin,
+                    about_parameter("margin"));
     else if (options.margin >= largest_margin)
-        result.fail("bad_margin",
+        result.fail(DiagnosticCode::bad_margin,
                     "margin " + format_mm(options.margin) + " mm leaves no printable area on " +
                         paper.name + " (" + paper_size + ")" + allowed_margin,
-                    "margin");
+                    about_parameter("margin"));
     if (!(options.spacing >= 0.0 && options.spacing < largest_margin * 2.0))
-        result.fail("bad_spacing",
+        result.fail(DiagnosticCode::bad_spacing,
                     "spacing " + format_mm(options.spacing) +
                         " mm; allowed: at least 0 mm and less than " +
                         format_mm(2.0 * largest_margin) + " mm",
-                    "spacing");
+                    about_parameter("spacing"));
 }
 
 /// The outline of one shape, or an error naming it.
@@ -100,10 +101,9 @@ inline void add_outline(const NestShape& shape, std::size_t index, const NestOpt
     const std::string label = shape_label(shape, index);
     Outline outline;
     if (shape.outer.size() < 3) {
-        result.fail("bad_shape",
-                    label + " has " + std::to_string(shape.outer.size()) +
-                        " outline points; it needs at least 3",
-                    label);
+        result.fail(DiagnosticCode::bad_shape, label + " has " +
+                                                   std::to_string(shape.outer.size()) +
+                                                   " outline points; it needs at least 3");
         result.value.push_back(outline);
         return;
     }
@@ -115,8 +115,8 @@ inline void add_outline(const NestShape& shape, std::size_t index, const NestOpt
     }
     const Vec2 size = high - low;
     if (!size.allFinite() || size.maxCoeff() > kLargestPaperSide) {
-        result.fail("bad_shape", label + " has a coordinate that is not finite or too large",
-                    label);
+        result.fail(DiagnosticCode::bad_shape,
+                    label + " has a coordinate that is not finite or too large");
         result.value.push_back(outline);
         return;
     }
@@ -129,7 +129,7 @@ inline void add_outline(const NestShape& shape, std::size_t index, const NestOpt
         ClipperLib::ReversePath(outline.path);
     outline.area = outline.path.size() < 3 ? 0.0 : path_area(outline.path);
     if (outline.area < 1e-6) { // a square micrometre: nothing a cutter could make
-        result.fail("bad_shape", label + " has zero area", label);
+        result.fail(DiagnosticCode::bad_shape, label + " has zero area");
         result.value.push_back(outline);
         return;
     }
@@ -147,14 +147,14 @@ inline void add_outline(const NestShape& shape, std::size_t index, const NestOpt
                                             ? "the " + format_mm(paper.width, 1) + " x " +
                                                   format_mm(paper.height, 1) + " mm paper"
                                             : paper.name;
-        result.fail("piece_does_not_fit",
+        result.fail(DiagnosticCode::piece_does_not_fit,
                     label + " (" + format_mm(size.x(), 1) + " x " + format_mm(size.y(), 1) +
                         " mm) does not fit the printable area " +
                         format_mm(paper.width - 2.0 * options.margin, 1) + " x " +
                         format_mm(paper.height - 2.0 * options.margin, 1) + " mm of " +
                         paper_label + " with " + format_mm(options.margin) + " mm margins" +
                         (options.rotate ? "" : " (turning not allowed)"),
-                    label);
+                    about_parameter("paper"));
     }
     result.value.push_back(outline);
 }

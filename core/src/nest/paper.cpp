@@ -65,11 +65,11 @@ Result<Paper> paper_by_name(const std::string& name)
         result.value = {key, width, height};
         return result;
     }
-    result.fail("bad_paper",
+    result.fail(DiagnosticCode::bad_paper,
                 "unknown paper \"" + name +
                     "\": use A4, A3, Letter, Tabloid or \"<width>x<height>\" in mm (e.g. "
                     "\"300x200\") with each side greater than 0 and at most 1000 mm",
-                "paper");
+                about_parameter("paper"));
     return result;
 }
 

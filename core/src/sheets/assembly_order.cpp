@@ -7,7 +7,7 @@
 namespace popup::sheets {
 
 std::vector<int> assembly_order(const Scaffold& s, const std::vector<std::vector<int>>& pieces,
-                                std::vector<SheetDiagnostic>& diagnostics)
+                                Diagnostics& diagnostics)
 {
     std::map<int, int> piece_of;
     for (size_t k = 0; k < pieces.size(); ++k)
@@ -43,12 +43,11 @@ std::vector<int> assembly_order(const Scaffold& s, const std::vector<std::vector
     }
     for (size_t k = 0; k < pieces.size(); ++k)
         if (depth[k] < 0) {
-            const std::string subject = "patch " + std::to_string(pieces[k].front());
             diagnostics.push_back(
-                {"error",
-                 {"detached_piece",
-                  "the piece holding " + subject + " is not joined to the card by any tab or glue",
-                  subject}});
+                Diagnostic::error(DiagnosticCode::detached_piece,
+                                  "the piece holding patch " + std::to_string(pieces[k].front()) +
+                                      " is not joined to the card by any tab or glue",
+                                  about_patches(pieces[k])));
             depth[k] = int(pieces.size());
             order.push_back(int(k));
         }

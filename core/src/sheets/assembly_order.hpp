@@ -10,6 +10,6 @@ namespace popup::sheets {
 /// before it; ties keep the scaffold's order. Pieces not joined to the card come last, each with an
 /// error.
 std::vector<int> assembly_order(const Scaffold& s, const std::vector<std::vector<int>>& pieces,
-                                std::vector<SheetDiagnostic>& diagnostics);
+                                Diagnostics& diagnostics);
 
 } // namespace popup::sheets

@@ -237,7 +237,7 @@ Fit fit_making_room(const Scaffold& s, const Hinge& h, std::vector<LocalPiece>& 
 
 void add_glue_tabs(const Scaffold& s, std::vector<LocalPiece>& pieces,
                    const std::map<int, int>& position, const BendSamples& bends,
-                   const SheetOptions& options, std::vector<SheetDiagnostic>& diagnostics)
+                   const SheetOptions& options, Diagnostics& diagnostics)
 {
     int next_code = 0;
     for (size_t k = 0; k < pieces.size(); ++k) {
@@ -265,15 +265,15 @@ void add_glue_tabs(const Scaffold& s, std::vector<LocalPiece>& pieces,
                     std::tie(carrier_patch, target_patch) = std::tie(carrier, target);
                     fit = fit_making_room(s, h, pieces, position, carrier, target, bends, options);
                 }
-            const std::string subject = "hinge " + std::to_string(h.id);
+            const DiagnosticSubject joined = about_patches({h.patch_a, h.patch_b});
             if (fit.width == 0.0) {
-                diagnostics.push_back(
-                    {"error",
-                     {"no_room_for_tab",
-                      "no glue tab of at least " + std::to_string(options.min_tab_width) +
-                          " mm fits between " + patch_name(s, later) + " and " +
-                          patch_name(s, earlier) + ": glue them by hand",
-                      subject}});
+                diagnostics.push_back(Diagnostic::error(
+                    DiagnosticCode::no_room_for_tab,
+                    "hinge " + std::to_string(h.id) + ": no glue tab of at least " +
+                        std::to_string(options.min_tab_width) + " mm fits between " +
+                        patch_name(s, later) + " and " + patch_name(s, earlier) +
+                        ": glue them by hand",
+                    joined));
                 continue;
             }
             const std::string code = tab_code(next_code++);
@@ -282,7 +282,8 @@ void add_glue_tabs(const Scaffold& s, std::vector<LocalPiece>& pieces,
                 m.precision(3);
                 m << "glue tab " << code << " narrowed to " << fit.width << " mm (asked "
                   << options.tab_width << " mm) to fit its crease and the paper around it";
-                diagnostics.push_back({"warning", {"narrow_tab", m.str(), subject}});
+                diagnostics.push_back(
+                    Diagnostic::warning(DiagnosticCode::narrow_tab, m.str(), joined));
             }
             LocalPiece& carrier = pieces[position.at(carrier_patch)];
             LocalPiece& target = pieces[position.at(target_patch)];

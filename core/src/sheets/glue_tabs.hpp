@@ -15,7 +15,7 @@ namespace popup::sheets {
 /// (`pieces` are in assembly order; `position` maps a patch id to its piece).
 void add_glue_tabs(const Scaffold& s, std::vector<LocalPiece>& pieces,
                    const std::map<int, int>& position, const BendSamples& bends,
-                   const SheetOptions& options, std::vector<SheetDiagnostic>& diagnostics);
+                   const SheetOptions& options, Diagnostics& diagnostics);
 
 /// Tab codes: A … Z, AA, AB, …
 std::string tab_code(int index);

@@ -100,7 +100,7 @@ void cut_outline(LocalPiece& piece, double kerf)
 }
 
 void check_die_cutting(const LocalPiece& piece, const std::string& piece_id,
-                       const SheetOptions& options, std::vector<SheetDiagnostic>& diagnostics)
+                       const SheetOptions& options, Diagnostics& diagnostics)
 {
     const Paths nominal = region_paths(piece.cut_nominal);
     const double half = 0.5 * options.min_feature;
@@ -124,7 +124,8 @@ void check_die_cutting(const LocalPiece& piece, const std::string& piece_id,
         m << piece_id << " has paper narrower than " << options.min_feature << " mm near ("
           << centre.x() << ", " << centre.y() << ") in its own frame (" << path_area(part)
           << " mm² would break off or tear in die cutting)";
-        diagnostics.push_back({"warning", {"narrow_feature", m.str(), "piece " + piece_id}});
+        diagnostics.push_back(Diagnostic::warning(DiagnosticCode::narrow_feature, m.str(),
+                                                  about_patches(piece.flat.patches)));
     }
 
     const double limit = options.min_corner_angle * M_PI / 180.0;
@@ -143,7 +144,8 @@ void check_die_cutting(const LocalPiece& piece, const std::string& piece_id,
                 m << piece_id << " has a " << corner * 180.0 / M_PI << "° corner at ("
                   << loop[i].x() << ", " << loop[i].y() << "), sharper than "
                   << options.min_corner_angle << "°: round it for die cutting";
-                diagnostics.push_back({"warning", {"sharp_corner", m.str(), "piece " + piece_id}});
+                diagnostics.push_back(Diagnostic::warning(DiagnosticCode::sharp_corner, m.str(),
+                                                          about_patches(piece.flat.patches)));
             }
         }
     }

@@ -17,6 +17,6 @@ void cut_outline(LocalPiece& piece, double kerf);
 /// Die-cutting warnings: paper narrower than `min_feature` (what a morphological opening of that
 /// width removes) and convex corners sharper than `min_corner_angle` degrees.
 void check_die_cutting(const LocalPiece& piece, const std::string& piece_id,
-                       const SheetOptions& options, std::vector<SheetDiagnostic>& diagnostics);
+                       const SheetOptions& options, Diagnostics& diagnostics);
 
 } // namespace popup::sheets

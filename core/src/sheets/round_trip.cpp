@@ -42,7 +42,7 @@ struct Rebuilt {
 
 RoundTrip round_trip(const Scaffold& s, const SheetSet& sheets, const std::vector<Pose>& to_sheet,
                      const Result<FoldSweep>& designed, const std::vector<double>& angles,
-                     std::vector<SheetDiagnostic>& diagnostics)
+                     Diagnostics& diagnostics)
 {
     RoundTrip result;
     result.tolerance = 1e-6 * sheets.card_size;
@@ -127,11 +127,14 @@ RoundTrip round_trip(const Scaffold& s, const SheetSet& sheets, const std::vecto
                     start = t.target_patch;
                 }
         if (start < 0) {
-            diagnostics.push_back({"error",
-                                   {"round_trip_unplaced",
-                                    "round trip: " + piece.id +
-                                        " has no glue tab joining it to a piece placed before it",
-                                    "piece " + piece.id}});
+            std::vector<int> ids;
+            for (const FlatPatch& p : piece.patches)
+                ids.push_back(p.id);
+            diagnostics.push_back(
+                Diagnostic::error(DiagnosticCode::round_trip_unplaced,
+                                  "round trip: " + piece.id +
+                                      " has no glue tab joining it to a piece placed before it",
+                                  about_patches(ids)));
             return result;
         }
         fold_from(piece, start);
@@ -165,13 +168,12 @@ RoundTrip round_trip(const Scaffold& s, const SheetSet& sheets, const std::vecto
     Result<FoldSweep> refolded = simulate_fold(remade, angles);
     if (!refolded.ok || !designed.ok) {
         const Diagnostics& why = refolded.ok ? designed.diagnostics : refolded.diagnostics;
-        diagnostics.push_back(
-            {"error",
-             {"round_trip_failed",
-              std::string("round trip: the ") + (refolded.ok ? "design" : "re-folded card") +
-                  " does not simulate: " +
-                  (why.empty() ? std::string("no reason given") : why.front().message),
-              "round trip"}});
+        diagnostics.push_back(Diagnostic::error(
+            DiagnosticCode::round_trip_failed,
+            std::string("round trip: the ") + (refolded.ok ? "design" : "re-folded card") +
+                " does not simulate: " +
+                (why.empty() ? std::string("no reason given") : why.front().message),
+            why.empty() ? DiagnosticSubject{} : about_patches(why.front().patches)));
         return result;
     }
     const auto& a = designed.value.states;
@@ -192,7 +194,7 @@ RoundTrip round_trip(const Scaffold& s, const SheetSet& sheets, const std::vecto
         std::ostringstream m;
         m << "round trip: the re-folded sheets miss the design by " << result.max_error
           << " mm (tolerance " << result.tolerance << " mm) over " << result.angles << " angles";
-        diagnostics.push_back({"error", {"round_trip_mismatch", m.str(), "round trip"}});
+        diagnostics.push_back(Diagnostic::error(DiagnosticCode::round_trip_mismatch, m.str()));
     }
     return result;
 }

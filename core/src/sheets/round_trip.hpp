@@ -16,6 +16,6 @@ namespace popup::sheets {
 /// side of the comparison, used for fold angles only.
 RoundTrip round_trip(const Scaffold& s, const SheetSet& sheets, const std::vector<Pose>& to_sheet,
                      const Result<FoldSweep>& designed, const std::vector<double>& angles,
-                     std::vector<SheetDiagnostic>& diagnostics);
+                     Diagnostics& diagnostics);
 
 } // namespace popup::sheets

@@ -1,0 +1,82 @@
+"""Structured diagnostics across the boundary: the same fields in C++, Python and --json output."""
+
+import json
+import os
+import subprocess
+
+import pytest
+
+from conftest import SOURCE_DIR, BUILD_DIR
+
+popupcore = pytest.importorskip("popupcore")
+
+FIELDS = {"code", "severity", "message", "patches", "parameter", "angle_deg"}
+POPUP = os.path.join(BUILD_DIR, "bin", "popup")
+
+
+def documented_codes():
+    with open(os.path.join(SOURCE_DIR, "docs", "DIAGNOSTICS.md")) as f:
+        return [line.split("`")[1] for line in f if line.startswith("| `")]
+
+
+def test_every_code_is_documented_once_and_nothing_else():
+    documented = documented_codes()
+    assert len(documented) == len(set(documented))
+    assert sorted(documented) == sorted(popupcore.diagnostic_codes())
+
+
+def test_design_error_carries_its_diagnostics():
+    with pytest.raises(popupcore.DesignError) as caught:
+        params = popupcore.CardParams()
+        params.width = -5.0
+        popupcore.make_card(params)
+    diagnostics = caught.value.diagnostics
+    assert len(diagnostics) == 1
+    d = diagnostics[0]
+    assert set(d) == FIELDS
+    assert (d["code"], d["severity"], d["parameter"]) == ("bad_parameter", "error", "Width")
+    assert d["patches"] == [] and d["angle_deg"] is None
+    assert d["message"] in str(caught.value)
+
+
+def test_a_broken_design_file_names_the_field():
+    with pytest.raises(popupcore.DesignError) as caught:
+        popupcore.scaffold_from_json('{"format": "popup-design", "version": 7}')
+    (d,) = caught.value.diagnostics
+    assert d["code"] == "bad_field" and d["parameter"] == "version"
+
+
+def read_design(name):
+    with open(os.path.join(SOURCE_DIR, "tests", "data", name)) as f:
+        return json.load(f)
+
+
+@pytest.mark.parametrize(
+    "name, code, angle",
+    [
+        ("colliding_walls.json", "intersection", True),
+        ("unstable_five_bar.json", "unstable", True),
+        ("sticking_out_tent.json", "not_enclosed", True),
+    ],
+)
+def test_check_json_names_the_patches_of_the_design(name, code, angle):
+    out = subprocess.run(
+        [POPUP, "check", os.path.join(SOURCE_DIR, "tests", "data", name), "--json"],
+        capture_output=True,
+        text=True,
+    )
+    assert out.returncode == 1, out.stderr
+    report = json.loads(out.stdout)
+    ids = {p["id"] for p in read_design(name)["patches"]}
+    found = [d for d in report["diagnostics"] if d["code"] == code]
+    assert found, report["diagnostics"]
+    for d in report["diagnostics"]:
+        assert set(d) == FIELDS
+        assert set(d["patches"]) <= ids
+    assert all(d["patches"] for d in found)
+    if angle:
+        assert all(0.0 <= d["angle_deg"] <= 180.0 for d in found)
+    # The message names each patch it is about, as a person reads it.
+    for d in found:
+        for i in d["patches"]:
+            assert f"patch {i}" in d["message"]
