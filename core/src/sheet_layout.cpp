@@ -223,6 +223,12 @@ Result<SheetSet> layout_sheets(const Scaffold& input, const SheetOptions& option
     // One sweep of the design serves the fold directions, the round trip and the stack height.
     const std::vector<double> angles = sweep_angles(s, options.round_trip_angles);
     const Result<FoldSweep> designed = simulate_fold(s, angles);
+    // A card whose fold never completes cannot be assembled into one that closes: an error here,
+    // where the simulator alone only warns.
+    for (const Diagnostic& d : designed.diagnostics)
+        if (d.code == DiagnosticCode::motion_locked)
+            notes.push_back(Diagnostic::error(d.code, "the fold never completes: " + d.message,
+                                              {d.patches, d.parameter, d.angle_deg}));
     const BendSamples bends = sample_bends(s, designed.value.states);
     for (LocalPiece& piece : pieces)
         classify_folds(s, piece, bends, notes);
@@ -246,6 +252,7 @@ Result<SheetSet> layout_sheets(const Scaffold& input, const SheetOptions& option
                 id + " falls apart into " + std::to_string(piece.cut_nominal.size()) +
                     " parts when cut: a slit or hole crosses it from edge to edge",
                 about_patches(piece.flat.patches)));
+        check_openings_survive_kerf(piece, id, options.kerf, notes);
         check_die_cutting(piece, id, options, notes);
         add_labels(piece, id, options.fold_hints);
         const Region* largest = &piece.cut.front();

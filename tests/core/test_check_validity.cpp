@@ -76,18 +76,28 @@ TEST(CheckValidity, FiveBarLoopIsNotStable)
 
 TEST(CheckValidity, WallsCollidingAt40DegreesAreFound)
 {
-    const ValidityReport r = check_validity(fixtures::colliding_walls_card());
-    EXPECT_FALSE(r.intersection_free);
-    const Crossing* walls = nullptr;
-    for (const Crossing& c : r.crossings)
-        if (c.patch_a == 2 && c.patch_b == 3)
-            walls = &c;
-    ASSERT_NE(walls, nullptr);
-    EXPECT_NEAR(walls->angle * 180 / M_PI, 40.0, 2.0);
-    EXPECT_GT(walls->depth, 1.0);
-    // Nothing crosses before the walls meet.
-    for (const Crossing& c : r.crossings)
-        EXPECT_LE(c.angle * 180 / M_PI, 40.5);
+    // The walls' tops meet at exactly 40° (tan(θ/2) = h/d). The onset is bisected between the
+    // last clear sample and the first crossing one: documented precision = step / 2^refine_depth,
+    // and never later than the contact (closing runs towards smaller angles).
+    for (int samples : {181, 361, 91}) {
+        ValidityOptions options;
+        options.samples = samples;
+        const ValidityReport r = check_validity(fixtures::colliding_walls_card(), options);
+        EXPECT_FALSE(r.intersection_free);
+        const Crossing* walls = nullptr;
+        for (const Crossing& c : r.crossings)
+            if (c.patch_a == 2 && c.patch_b == 3)
+                walls = &c;
+        ASSERT_NE(walls, nullptr) << samples;
+        const double precision = 180.0 / (samples - 1) / double(1 << options.refine_depth);
+        const double onset = walls->angle * 180 / M_PI;
+        EXPECT_NEAR(onset, 40.0, precision + 1e-9) << samples;
+        EXPECT_LE(onset, 40.0 + 1e-9) << samples;
+        EXPECT_GT(walls->depth, 1.0);
+        // Nothing crosses before the walls meet.
+        for (const Crossing& c : r.crossings)
+            EXPECT_LE(c.angle * 180 / M_PI, 40.0 + 1e-9);
+    }
 }
 
 TEST(CheckValidity, TentStickingOutOfTheClosedCardIsNotEnclosed)

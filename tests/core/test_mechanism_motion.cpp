@@ -172,8 +172,9 @@ TEST(PlacementPreCheck, AgreesWithTheSimulatorOnBoxesAndVFolds)
         EXPECT_EQ(predicted, !r.intersection_free || c.conservative)
             << "gap " << c.gap << " (" << what << "): pre-check " << predicted << ", simulator "
             << !r.intersection_free;
-        if (c.conservative)
+        if (c.conservative) {
             EXPECT_TRUE(r.intersection_free);
+        }
     }
 }
 

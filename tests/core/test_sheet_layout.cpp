@@ -13,6 +13,7 @@
 #include "popup/mechanisms/rotation_arm.hpp"
 #include "popup/sheet_layout.hpp"
 #include "sheet_designs.hpp"
+#include "validity_cases.hpp"
 
 using namespace popup;
 
@@ -159,8 +160,9 @@ void expect_usable(const Scaffold& s, const SheetSet& set, const std::string& na
             ASSERT_NE(on, piece.patches.end());
             EXPECT_LE(outside(a.polygon, on->outer), touching) << a.code;
             for (size_t h = g + 1; h < piece.glue.size(); ++h)
-                if (piece.glue[h].front == a.front)
+                if (piece.glue[h].front == a.front) {
                     EXPECT_LE(overlap(a.polygon, piece.glue[h].polygon), touching) << a.code;
+                }
         }
     }
     EXPECT_EQ(tab_codes, glue_codes);
@@ -190,11 +192,12 @@ void expect_usable(const Scaffold& s, const SheetSet& set, const std::string& na
                 EXPECT_LE(p.y(), n.paper.height - n.margin + 1e-6);
             }
         for (size_t j = i + 1; j < set.pieces.size(); ++j)
-            if (set.pieces[i].sheet == set.pieces[j].sheet)
+            if (set.pieces[i].sheet == set.pieces[j].sheet) {
                 EXPECT_GE(
                     loop_distance(set.pieces[i].cut.front().outer, set.pieces[j].cut.front().outer),
                     n.spacing - 1e-6)
                     << set.pieces[i].id << " " << set.pieces[j].id;
+            }
     }
     EXPECT_LE(set.sheet_count, set.shelf_sheet_count);
 }
@@ -259,6 +262,70 @@ TEST(SheetLayout, KerfMovesCutLinesOutByHalfOfIt)
     EXPECT_NEAR(std::max(nominal.sizes().x(), nominal.sizes().y()), 280.0, 1e-5);
 }
 
+TEST(SheetLayout, KerfNeverClosesASlotOrAHole)
+{
+    Scaffold s;
+    for (const fixtures::NamedDesign& d : fixtures::single_mechanism_cards())
+        if (d.name == "horizontal translation")
+            s = d.scaffold;
+    ASSERT_EQ(s.slits.size(), 1u);
+    const int slit = s.slits.front().id;
+    const double slot_width = 2.0 * s.paper_thickness; // a slot is two paper thicknesses wide
+    // A 0.6 × 20 mm hole in the ground, clockwise seen from above, clear of the mechanism.
+    const double hole_width = 0.6, hole_length = 20.0;
+    Patch& ground = *std::find_if(s.patches.begin(), s.patches.end(),
+                                  [&](const Patch& p) { return p.id == s.ground; });
+    ground.holes.push_back({{20, 10, 0},
+                            {20, 10 + hole_length, 0},
+                            {20 + hole_width, 10 + hole_length, 0},
+                            {20 + hole_width, 10, 0}});
+    for (double kerf : {0.0, 0.1, 0.3, 0.5}) {
+        SCOPED_TRACE("kerf " + std::to_string(kerf));
+        SheetOptions o = a3();
+        o.kerf = kerf;
+        const Result<SheetSet> r = layout_sheets(s, o);
+        ASSERT_TRUE(r.ok);
+        std::vector<const Diagnostic*> closed;
+        for (const Diagnostic& d : r.value.diagnostics)
+            if (d.code == DiagnosticCode::kerf_closes_opening)
+                closed.push_back(&d);
+        // Half a kerf on each side: an opening of width w stays open while kerf < w.
+        const bool slot_closes = kerf >= slot_width, hole_closes = kerf >= hole_width;
+        ASSERT_EQ(closed.size(), size_t(slot_closes) + size_t(hole_closes));
+        if (slot_closes) {
+            const Diagnostic& d = *closed.front();
+            EXPECT_EQ(d.severity, Severity::error);
+            EXPECT_EQ(d.parameter, "kerf");
+            EXPECT_EQ(d.patches, std::vector<int>{s.slits.front().patch_cut});
+            EXPECT_NE(d.message.find("slit " + std::to_string(slit)), std::string::npos);
+            const size_t at = d.message.find("keeps it open is ");
+            ASSERT_NE(at, std::string::npos) << d.message;
+            const double keeps = std::stod(d.message.substr(at + 17));
+            EXPECT_LE(keeps, slot_width);
+            EXPECT_GE(keeps, slot_width - 0.0015);
+            continue;
+        }
+        // Every opening is still a hole of the compensated cut, each side moved in by kerf / 2:
+        // the ground's hole measures (w - kerf) × (l - kerf) there.
+        size_t nominal_holes = 0, cut_holes = 0;
+        bool hole_found = false;
+        const double expected = (hole_width - kerf) * (hole_length - kerf);
+        for (const SheetPiece& piece : r.value.pieces) {
+            for (const Region& region : piece.cut_nominal)
+                nominal_holes += region.holes.size();
+            for (const Region& region : piece.cut) {
+                cut_holes += region.holes.size();
+                for (const Loop2& h : region.holes)
+                    hole_found =
+                        hole_found || std::abs(std::abs(area({path_of(h)})) - expected) < 1e-3;
+            }
+        }
+        EXPECT_EQ(nominal_holes, 2u);
+        EXPECT_EQ(cut_holes, nominal_holes);
+        EXPECT_TRUE(hole_found) << "no hole of " << expected << " mm²";
+    }
+}
+
 TEST(SheetLayout, CutLengthIsTheSumOfTheCutLoops)
 {
     const SheetSet set = layout_sheets(fixtures::demo_card(), a3()).value;
@@ -303,6 +370,28 @@ TEST(SheetLayout, TabsNarrowToFitAndReportWhenNoneFits)
         no_room += d.code == DiagnosticCode::no_room_for_tab && d.severity == Severity::error &&
                    d.patches.size() == 2;
     EXPECT_GE(no_room, 1);
+}
+
+TEST(SheetLayout, AFoldThatNeverCompletesIsAnError)
+{
+    // Built at 90°, the tent's 25 mm slopes reach its 30 mm feet only while sin(θ/2) <= 25/30:
+    // opening, the motion locks at θ = 2 asin(5/6).
+    // Its apex becomes a tab joint, so the pieces lie flat and only the motion is wrong.
+    Scaffold s = fixtures::broken_tent_card();
+    for (Hinge& h : s.hinges)
+        if (h.patch_a != s.ground && h.patch_a != s.backdrop && h.patch_b != s.ground &&
+            h.patch_b != s.backdrop)
+            h.kind = JointKind::tab;
+    const Result<SheetSet> r = layout_sheets(s, a3());
+    const Diagnostics& found = r.ok ? r.value.diagnostics : r.diagnostics;
+    const auto locked = std::find_if(found.begin(), found.end(), [](const Diagnostic& d) {
+        return d.code == DiagnosticCode::motion_locked;
+    });
+    ASSERT_NE(locked, found.end());
+    EXPECT_EQ(locked->severity, Severity::error);
+    ASSERT_TRUE(locked->angle_deg.has_value());
+    EXPECT_NEAR(*locked->angle_deg, 2.0 * std::asin(5.0 / 6.0) * 180.0 / M_PI, 0.5);
+    EXPECT_FALSE(locked->patches.empty());
 }
 
 TEST(SheetLayout, APieceThatOverlapsItselfFlatIsReported)

@@ -59,6 +59,7 @@ namespace popup {
     X(piece_overlaps_itself)                                                                       \
     X(glue_without_tab)                                                                            \
     X(piece_falls_apart)                                                                           \
+    X(kerf_closes_opening)                                                                         \
     X(detached_piece)                                                                              \
     X(no_room_for_tab)                                                                             \
     X(narrow_tab)                                                                                  \

@@ -9,13 +9,20 @@
 
 namespace popup::sheets {
 
+/// The opening cut for one slit.
+struct SlitSlot {
+    int slit = 0;  ///< the slit's id
+    int patch = 0; ///< the patch it is cut in
+    Loop2 loop;
+};
+
 struct LocalPiece {
     FlatPiece flat;
     std::map<int, int> index_of; ///< patch id → index in flat.patches
     std::vector<FoldLine> folds;
     std::vector<GlueTab> tabs;
     std::vector<GlueArea> glue;
-    std::vector<Loop2> slots; ///< openings cut for slits
+    std::vector<SlitSlot> slots; ///< openings cut for slits
     std::vector<Region> cut_nominal;
     std::vector<Region> cut;
     std::vector<SheetLabel> labels;

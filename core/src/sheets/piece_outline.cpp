@@ -58,7 +58,48 @@ std::vector<Region> offset(const Paths& paths, double distance)
     return regions;
 }
 
+// Widest inward offset that leaves something of the opening: half its narrowest width, to 1 µm.
+double inner_radius(const Loop2& opening)
+{
+    const Paths path = counter_clockwise_paths({opening});
+    double low = 0.0, high = 0.0;
+    for (const Vec2& p : opening)
+        high = std::max(high, (p - opening.front()).norm());
+    while (high - low > 1e-5) {
+        const double mid = 0.5 * (low + high);
+        (offset_paths(path, -mid).empty() ? high : low) = mid;
+    }
+    return low;
+}
+
 } // namespace
+
+void check_openings_survive_kerf(const LocalPiece& piece, const std::string& piece_id, double kerf,
+                                 Diagnostics& diagnostics)
+{
+    if (kerf <= 0.0)
+        return;
+    auto check = [&](const Loop2& opening, const std::string& what, std::vector<int> patches) {
+        // The compensated path runs half a kerf inside the opening on every side.
+        if (!offset_paths(counter_clockwise_paths({opening}), -0.5 * kerf).empty())
+            return;
+        const double keeps = std::floor(2.0 * inner_radius(opening) * 1000.0) / 1000.0;
+        std::ostringstream m;
+        m.precision(4);
+        m << what << " of " << piece_id << " closes under kerf compensation: kerf " << kerf
+          << " mm, the largest kerf that keeps it open is " << keeps << " mm";
+        diagnostics.push_back(Diagnostic::error(DiagnosticCode::kerf_closes_opening, m.str(),
+                                                {std::move(patches), "kerf", std::nullopt}));
+    };
+    for (const SlitSlot& slot : piece.slots)
+        check(slot.loop, "the slot of slit " + std::to_string(slot.slit), {slot.patch});
+    for (size_t i = 0; i < piece.flat.holes.size(); ++i)
+        for (size_t h = 0; h < piece.flat.holes[i].size(); ++h)
+            check(piece.flat.holes[i][h],
+                  "hole " + std::to_string(h + 1) + " of patch " +
+                      std::to_string(piece.flat.patches[i]),
+                  {piece.flat.patches[i]});
+}
 
 void add_slit_slots(const Scaffold& s, LocalPiece& piece)
 {
@@ -68,7 +109,8 @@ void add_slit_slots(const Scaffold& s, LocalPiece& piece)
         const Vec2 a = piece.flat_point(s, slit.patch_cut, slit.from);
         const Vec2 b = piece.flat_point(s, slit.patch_cut, slit.to);
         const Vec2 across = s.paper_thickness * left_normal((b - a).normalized());
-        piece.slots.push_back({a - across, b - across, b + across, a + across});
+        piece.slots.push_back(
+            {slit.id, slit.patch_cut, {a - across, b - across, b + across, a + across}});
     }
 }
 
@@ -77,7 +119,9 @@ void cut_outline(LocalPiece& piece, double kerf)
     std::vector<Loop2> paper = piece.flat.outlines;
     for (const GlueTab& t : piece.tabs)
         paper.push_back(t.polygon);
-    std::vector<Loop2> openings = piece.slots;
+    std::vector<Loop2> openings;
+    for (const SlitSlot& slot : piece.slots)
+        openings.push_back(slot.loop);
     for (const auto& holes : piece.flat.holes)
         openings.insert(openings.end(), holes.begin(), holes.end());
 
