@@ -45,11 +45,11 @@ bench: build
 	  $(PYTHON) bench/freecad_recompute_bench.py
 	POPUP_BUILD_DIR=$(CURDIR)/$(BUILD) $(PYTHON) bench/sheets_bench.py
 
-lint:
+lint: deps
 	clang-format --dry-run --Werror $$(git ls-files '*.cpp' '*.hpp')
 	black --check -l 100 -q $$(git ls-files '*.py')
 
-format:
+format: deps
 	clang-format -i $$(git ls-files '*.cpp' '*.hpp')
 	black -l 100 -q $$(git ls-files '*.py')
 
