@@ -319,7 +319,7 @@ def _print_sheet_summary(report, paths, choice, not_valid):
     if not_valid is not None:
         print(f"{not_valid.text()}: sheets written anyway (--force), every sheet stamped")
     for d in report["errors"] + report["warnings"]:
-        print(f"{d['severity']}: {d['subject']}: {d['message']}")
+        print(f"{d['severity']}: {d['code']}: {d['message']}")
 
 
 def cmd_sheet(args):
