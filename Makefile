@@ -9,7 +9,7 @@ DEBS := cmake make g++ pkg-config freecad \
 	libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libtbb-dev \
 	libcgal-dev libeigen3-dev pybind11-dev python3-dev nlohmann-json3-dev libassimp-dev \
 	python3-ezdxf python3-pytest python3-numpy libgtest-dev libbenchmark-dev \
-	libpolyclipping-dev python3-svgwrite python3-reportlab python3-matplotlib librecad \
+	libpolyclipping-dev python3-svgwrite python3-reportlab python3-matplotlib python3-pypdf librecad \
 	xvfb xauth clang-format black patch
 
 .PHONY: all deps build test demo bench lint format install install-dev clean
@@ -45,11 +45,11 @@ bench: build
 	  $(PYTHON) bench/freecad_recompute_bench.py
 	POPUP_BUILD_DIR=$(CURDIR)/$(BUILD) $(PYTHON) bench/sheets_bench.py
 
-lint:
+lint: deps
 	clang-format --dry-run --Werror $$(git ls-files '*.cpp' '*.hpp')
 	black --check -l 100 -q $$(git ls-files '*.py')
 
-format:
+format: deps
 	clang-format -i $$(git ls-files '*.cpp' '*.hpp')
 	black -l 100 -q $$(git ls-files '*.py')
 

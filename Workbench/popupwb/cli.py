@@ -1,17 +1,20 @@
 """The `popup` command line: check a pop-up design without opening FreeCAD's GUI.
 
     popup check design.json [--json] [--samples N] [--clearance MM]
-    popup check card.FCStd                  # the first PopUp Scaffold's design or PopUpCard
-    popup sheet card.FCStd --out DIR [--paper A4] [--kerf 0.1] [--json]
+    popup check card.FCStd [--card NAME]    # every PopUpCard and Scaffold, or the one named
+    popup sheet card.FCStd --out DIR [--card NAME] [--paper A4] [--kerf 0.1] [--force] [--json]
     popup --version
 
-Exit status: 0 the design is valid (check) or its sheets are usable (sheet), 1 it is not (the
-report says why; sheet still writes every file), 2 the input could not be used (missing file, bad
-JSON, bad design, no scaffold, bad option, a piece larger than the paper), 3 an internal error.
-Errors are one line on stderr naming the file and what is wrong.
+Exit status: 0 the design is valid (check; for a document every card checked) or its sheets are
+usable (sheet), 1 it is not (the report says why; sheet refuses a design the validity check
+rejects unless --force, and still writes every file when only the layout reports errors), 2 the
+input could not be used (missing file, bad JSON, bad design, no scaffold, unknown --card, bad
+option, a piece larger than the paper), 3 an internal error. Errors are one line on stderr naming
+the file and what is wrong.
 """
 
 import argparse
+import collections
 import contextlib
 import json
 import math
@@ -25,6 +28,11 @@ EXIT_INTERNAL = 3
 
 FREECAD_LIB = "/usr/lib/freecad-python3/lib"
 VERSION = "0.1.0"
+
+
+# A design to check or lay out, and what the reports say about where it came from (object Name,
+# Label, design file); empty for a .json design.
+Design = collections.namedtuple("Design", "scaffold fields")
 
 
 class InputError(Exception):
@@ -97,15 +105,32 @@ def _import_freecad():
     return FreeCAD
 
 
-def _find_scaffold(doc):
-    """The first Scaffold or PopUpCard object of `doc` (None if there is neither)."""
+def _design_objects(doc):
+    """The Scaffold and PopUpCard objects of `doc`, in document order."""
     from popupwb.assembly import is_card
     from popupwb.features.scaffold_feature import is_scaffold
 
-    return next((obj for obj in doc.Objects if is_scaffold(obj) or is_card(obj)), None)
+    return [obj for obj in doc.Objects if is_scaffold(obj) or is_card(obj)]
 
 
-def _card_design(path, card):
+def _object_names(objects):
+    return ", ".join(o.Name if o.Label == o.Name else f"{o.Name} ('{o.Label}')" for o in objects)
+
+
+def _select_cards(path, objects, card):
+    """All of `objects`, or the one whose Name (else Label) is `card`."""
+    if card is None:
+        return objects
+    chosen = [o for o in objects if o.Name == card] or [o for o in objects if o.Label == card]
+    if not chosen:
+        raise InputError(
+            f"{path}: --card {card}: no PopUpCard or Scaffold has this Name or Label; "
+            f"the document has: {_object_names(objects)}"
+        )
+    return chosen[:1]
+
+
+def _card_design(path, card, several):
     """The assembled scaffold of a PopUpCard and its mechanisms; a part that does not build makes
     the input unusable (the message is the feature's error)."""
     from popupwb.assembly import assembly_of
@@ -113,8 +138,28 @@ def _card_design(path, card):
     built = assembly_of(card)
     problems = ([built.card_error] if built.card_error else []) + list(built.errors.values())
     if problems:
-        raise InputError(f"{path}: {problems[0]}")
-    return built.scaffold.copy(), {"object": card.Name}
+        # Several cards: say which one, and that the others can still be checked alone.
+        where = f"{path}: card {card.Label}" if several else path
+        hint = " (--card checks another card alone)" if several else ""
+        raise InputError(f"{where}: {problems[0]}{hint}")
+    return Design(built.scaffold.copy(), {"object": card.Name, "label": card.Label})
+
+
+def _scaffold_design(popupcore, path, obj):
+    design = str(obj.DesignFile)
+    what = f"{path}: {obj.Label}.DesignFile"
+    if not design:
+        raise InputError(f"{what} is empty")
+    if not os.path.isabs(design):
+        design = os.path.join(os.path.dirname(os.path.abspath(path)), design)
+    if not os.path.isfile(design):
+        raise InputError(f"{what} = '{obj.DesignFile}': no such file")
+    # Load now: a PropertyFileIncluded path lies in the document's transient folder, which goes
+    # away when the document closes.
+    scaffold = _load_json_design(popupcore, design, f"{what} = '{obj.DesignFile}'")
+    # The folder of an embedded design is the document's temporary one: name only.
+    fields = {"object": obj.Name, "label": obj.Label, "design_file": os.path.basename(design)}
+    return Design(scaffold, fields)
 
 
 def _load_json_design(popupcore, path, label):
@@ -124,8 +169,9 @@ def _load_json_design(popupcore, path, label):
         raise InputError(f"{label}: {_one_line(e)}")
 
 
-def _load_fcstd_design(popupcore, path):
-    """Loads the design of the first Scaffold or PopUpCard object in an .FCStd file."""
+def _load_fcstd_designs(popupcore, path, card, one):
+    """The designs of the Scaffold and PopUpCard objects of an .FCStd file (or of the one named
+    `card`); with `one`, several of them make the input unusable."""
     with _stdout_to_stderr():
         FreeCAD = _import_freecad()
         try:
@@ -133,8 +179,8 @@ def _load_fcstd_design(popupcore, path):
         except Exception as e:  # FreeCAD raises plain Exception/OSError/ValueError on bad files
             raise InputError(f"{path}: cannot open as a FreeCAD document ({_one_line(e)})")
         try:
-            obj = _find_scaffold(doc)
-            if obj is None:
+            objects = _design_objects(doc)
+            if not objects:
                 orphans = [o.Label for o in doc.Objects if "DesignFile" in o.PropertiesList]
                 if orphans:
                     raise InputError(
@@ -142,71 +188,157 @@ def _load_fcstd_design(popupcore, path):
                         "proxy did not load (install the workbench: make install-dev)"
                     )
                 raise InputError(f"{path}: no PopUp Scaffold or PopUpCard object in this document")
-            if "DesignFile" not in obj.PropertiesList:
-                return _card_design(path, obj)
-            design = str(obj.DesignFile)
-            what = f"{path}: {obj.Label}.DesignFile"
-            if not design:
-                raise InputError(f"{what} is empty")
-            if not os.path.isabs(design):
-                design = os.path.join(os.path.dirname(os.path.abspath(path)), design)
-            if not os.path.isfile(design):
-                raise InputError(f"{what} = '{obj.DesignFile}': no such file")
-            # Load now: a PropertyFileIncluded path lies in the document's transient folder,
-            # which goes away when the document closes.
-            scaffold = _load_json_design(popupcore, design, f"{what} = '{obj.DesignFile}'")
-            # The folder of an embedded design is the document's temporary one: name only.
-            return scaffold, {"object": obj.Name, "design_file": os.path.basename(design)}
+            chosen = _select_cards(path, objects, card)
+            if one and len(chosen) > 1:
+                raise InputError(
+                    f"{path}: {len(chosen)} cards ({_object_names(chosen)}): name the one to "
+                    "lay out with --card"
+                )
+            return [
+                (
+                    _scaffold_design(popupcore, path, obj)
+                    if "DesignFile" in obj.PropertiesList
+                    else _card_design(path, obj, len(chosen) > 1)
+                )
+                for obj in chosen
+            ]
         finally:
             FreeCAD.closeDocument(doc.Name)
 
 
-def load_design(path):
-    """Returns (popupcore, scaffold, extra report fields) for a .json or .FCStd path."""
+def is_document(path):
+    return path.lower().endswith(".fcstd")
+
+
+def load_designs(path, card=None, one=False):
+    """(popupcore, [Design]) for a .json path (one design) or an .FCStd path (each Scaffold and
+    PopUpCard, or the one named `card`; with `one`, several are an InputError)."""
     if not os.path.exists(path):
         raise InputError(f"{path}: no such file")
     if not os.path.isfile(path):
         raise InputError(f"{path}: not a file")
     if not os.access(path, os.R_OK):
         raise InputError(f"{path}: not readable (permission denied)")
+    if card is not None and not is_document(path):
+        raise InputError(f"--card {card}: only for FreeCAD documents (.FCStd), not {path}")
     popupcore = _import_core()
-    if path.lower().endswith(".fcstd"):
-        scaffold, extra = _load_fcstd_design(popupcore, path)
-    else:
-        scaffold, extra = _load_json_design(popupcore, path, path), {}
-    return popupcore, scaffold, extra
+    if is_document(path):
+        return popupcore, _load_fcstd_designs(popupcore, path, card, one)
+    return popupcore, [Design(_load_json_design(popupcore, path, path), {})]
 
 
-def cmd_check(args):
+def _check_options(args):
     if args.samples < 2:
         raise InputError(f"--samples {args.samples}: must be at least 2")
     if not math.isfinite(args.clearance) or args.clearance < 0:
         raise InputError(f"--clearance {args.clearance}: must be a finite length >= 0 mm")
-    popupcore, scaffold, extra = load_design(args.design)
+
+
+def _check(popupcore, design, samples, clearance):
+    """The validity report of one design as a dict, with the design's object fields."""
     with _stdout_to_stderr():
-        report = popupcore.check_validity(scaffold, samples=args.samples, clearance=args.clearance)
+        report = popupcore.check_validity(design.scaffold, samples=samples, clearance=clearance)
     result = report.to_dict()
     rejected = [d["message"] for d in result["diagnostics"] if d["code"] == "bad_option"]
     if rejected:  # limits the core enforces beyond the checks above
-        raise InputError(f"--samples {args.samples} --clearance {args.clearance}: {rejected[0]}")
+        raise InputError(f"--samples {samples} --clearance {clearance}: {rejected[0]}")
+    return {**result, **design.fields}
+
+
+def _card_header(report):
+    name, label = report["object"], report["label"]
+    return f"== {label} ==" if label == name else f"== {label} ({name}) =="
+
+
+def cmd_check(args):
+    _check_options(args)
+    popupcore, designs = load_designs(args.design, args.card)
+    reports = [_check(popupcore, design, args.samples, args.clearance) for design in designs]
+    valid = all(report["valid"] for report in reports)
     if args.json:
-        result = dict(result)
-        result["file"] = os.path.abspath(args.design)
-        result["samples"] = args.samples
-        result["clearance"] = args.clearance
-        result.update(extra)
+        # One design: its report at the top level, as before several cards were checked.
+        result = dict(reports[0]) if len(reports) == 1 else {}
+        result.update(
+            file=os.path.abspath(args.design),
+            samples=args.samples,
+            clearance=args.clearance,
+            valid=valid,
+        )
+        if is_document(args.design):
+            result["cards"] = reports
+        print(json.dumps(result, indent=2))
+    elif len(reports) == 1:
+        print(_format_report(reports[0]))
+    else:
+        blocks = [f"{_card_header(r)}\n{_format_report(r)}" for r in reports]
+        print("\n\n".join(blocks))
+        invalid = sum(1 for r in reports if not r["valid"])
+        print(f"\n{len(reports)} cards checked: {len(reports) - invalid} valid, {invalid} invalid")
+    return EXIT_VALID if valid else EXIT_INVALID
+
+
+def _refuse_invalid(args, design, validity, not_valid):
+    """Prints why the sheets of a rejected design are not written; returns the exit status."""
+    if args.json:
+        result = {"file": os.path.abspath(args.design), **design.fields}
+        result.update(valid=False, written=False, validity=validity)
         print(json.dumps(result, indent=2))
     else:
-        print(_format_report(result))
-    return EXIT_VALID if result["valid"] else EXIT_INVALID
+        print(_format_report(validity))
+    print(
+        f"popup: {args.design}: {not_valid.text()}; no sheets written "
+        "(--force writes them stamped NOT VALID)",
+        file=sys.stderr,
+    )
+    return EXIT_INVALID
+
+
+def _print_sheet_summary(report, paths, choice, not_valid):
+    if choice is not None:
+        print(choice.text())
+    for path in [
+        paths["dxf"],
+        *paths["svg"],
+        paths["pdf"],
+        paths["instructions"],
+        paths["report"],
+        paths["sheet_set"],
+    ]:
+        print(f"wrote {path}")
+    trip = report["round_trip"]
+    print(
+        f"{len(report['pieces'])} pieces, {report['tabs']} glue tabs on {report['sheets']} "
+        f"{report['paper']['name']} sheet(s) (bounding-box shelf packing: "
+        f"{report['shelf_packer_sheets']}); cut length {report['cut_length']:.1f} mm; "
+        f"closed stack {report['stack_height']:.2f} mm"
+    )
+    print(
+        f"round trip: {trip['max_error']:.3g} mm over {trip['angles']} fold angles "
+        f"(tolerance {trip['tolerance']:.3g} mm) - {'ok' if trip['ok'] else 'FAILED'}"
+    )
+    if not_valid is not None:
+        print(f"{not_valid.text()}: sheets written anyway (--force), every sheet stamped")
+    for d in report["errors"] + report["warnings"]:
+        print(f"{d['severity']}: {d['code']}: {d['message']}")
 
 
 def cmd_sheet(args):
     from popupwb.sheets.export import export_sheets, layout
+    from popupwb.sheets.not_valid_stamp import not_valid_of
+    from popupwb.sheets.paper_choice import layout_on_smallest_paper
 
-    popupcore, scaffold, extra = load_design(args.design)
+    if args.paper is not None:  # before the slower steps: a typo should not wait for them
+        try:
+            _import_core().paper_size(args.paper)
+        except ValueError as e:
+            raise InputError(f"--paper {args.paper}: {_one_line(e)}")
+    popupcore, (design,) = load_designs(args.design, args.card, one=True)
+    # Sheets are for valid designs: the check with `popup check`'s defaults comes first.
+    validity = _check(popupcore, design, samples=181, clearance=0.0)
+    not_valid = not_valid_of(validity)
+    if not_valid is not None and not args.force:
+        return _refuse_invalid(args, design, validity, not_valid)
     options = dict(
-        paper=args.paper,
         kerf=args.kerf,
         margin=args.margin,
         spacing=args.spacing,
@@ -214,46 +346,38 @@ def cmd_sheet(args):
         tab_angle=args.tab_angle,
         fold_hints=args.fold_hints,
     )
+    choice = None
     with _stdout_to_stderr():
         try:
-            sheet_set = layout(scaffold, **options)
-        except ValueError as e:  # DesignError: a bad option or a piece too large for the paper
+            if args.paper is None:
+                sheet_set, choice = layout_on_smallest_paper(design.scaffold, **options)
+            else:
+                sheet_set = layout(design.scaffold, paper=args.paper, **options)
+        except ValueError as e:  # a bad option, or a piece too large for the paper(s)
             raise InputError(f"{args.design}: {_one_line(e)}")
         try:
-            paths = export_sheets(sheet_set, args.out, registration_marks=args.registration_marks)
+            paths = export_sheets(
+                sheet_set,
+                args.out,
+                registration_marks=args.registration_marks,
+                not_valid=not_valid,
+            )
         except OSError as e:
             raise InputError(f"--out {args.out}: {_one_line(e)}")
     with open(paths["report"]) as f:
         report = json.load(f)
-    errors = report["errors"]
     if args.json:
-        report.update(extra, file=os.path.abspath(args.design), files=paths)
+        report.update(design.fields, file=os.path.abspath(args.design), files=paths)
+        report.update(
+            paper_chosen_automatically=choice is not None,
+            valid=not_valid is None,
+            written=True,
+            validity=validity,
+        )
         print(json.dumps(report, indent=2))
     else:
-        svg = paths["svg"]
-        for path in [
-            paths["dxf"],
-            *svg,
-            paths["pdf"],
-            paths["instructions"],
-            paths["report"],
-            paths["sheet_set"],
-        ]:
-            print(f"wrote {path}")
-        trip = report["round_trip"]
-        print(
-            f"{len(report['pieces'])} pieces, {report['tabs']} glue tabs on {report['sheets']} "
-            f"{sheet_set['paper']['name']} sheet(s) (bounding-box shelf packing: "
-            f"{report['shelf_packer_sheets']}); cut length {report['cut_length']:.1f} mm; "
-            f"closed stack {report['stack_height']:.2f} mm"
-        )
-        print(
-            f"round trip: {trip['max_error']:.3g} mm over {trip['angles']} fold angles "
-            f"(tolerance {trip['tolerance']:.3g} mm) - {'ok' if trip['ok'] else 'FAILED'}"
-        )
-        for d in errors + report["warnings"]:
-            print(f"{d['severity']}: {d['code']}: {d['message']}")
-    return EXIT_INVALID if errors else EXIT_VALID
+        _print_sheet_summary(report, paths, choice, not_valid)
+    return EXIT_INVALID if report["errors"] or not_valid is not None else EXIT_VALID
 
 
 def _version():
@@ -285,6 +409,11 @@ def build_parser():
     )
     check.add_argument("--json", action="store_true", help="print the report as one JSON object")
     check.add_argument(
+        "--card",
+        metavar="NAME",
+        help="check only this PopUpCard or Scaffold (object Name or Label) of an .FCStd",
+    )
+    check.add_argument(
         "--samples",
         type=int,
         default=181,
@@ -312,7 +441,15 @@ def build_parser():
     )
     sheet.add_argument("--out", required=True, metavar="DIR", help="folder for the files")
     sheet.add_argument(
-        "--paper", default="A4", help="A4, A3, Letter, Tabloid or WxH in mm (default A4)"
+        "--card",
+        metavar="NAME",
+        help="the PopUpCard or Scaffold (object Name or Label) to lay out, when an .FCStd has "
+        "several",
+    )
+    sheet.add_argument(
+        "--paper",
+        help="A4, A3, Letter, Tabloid or WxH in mm (default: the smallest preset holding every "
+        "piece, presets of the system's paper family first)",
     )
     sheet.add_argument("--kerf", type=float, default=0.1, metavar="MM", help="default 0.1")
     sheet.add_argument("--margin", type=float, default=10.0, metavar="MM", help="default 10")
@@ -326,6 +463,11 @@ def build_parser():
     sheet.add_argument("--fold-hints", action="store_true", help="print M/V beside each fold")
     sheet.add_argument(
         "--registration-marks", action="store_true", help="print-then-cut marks in the PDF"
+    )
+    sheet.add_argument(
+        "--force",
+        action="store_true",
+        help="write the sheets of a design the validity check rejects, stamped NOT VALID",
     )
     sheet.add_argument("--json", action="store_true", help="print the report as one JSON object")
     sheet.set_defaults(run=cmd_sheet)

@@ -7,6 +7,7 @@ process."""
 import json
 import os
 
+import ezdxf
 import pytest
 
 from test_freecad_scaffold import in_error, recompute_ok
@@ -336,10 +337,64 @@ def test_proxy_keeps_no_state_and_outputs_are_read_only(doc, popup, card):
     json.dumps(sheet.Proxy.dumps())
     for name in ("SheetCount", "PieceCount", "RoundTripOk", "Diagnostics", "CutLength"):
         assert sheet.getEditorMode(name) == ["ReadOnly"], name
+    for name in ("NotValid", "ValidityFindings"):
+        assert sheet.getEditorMode(name) == ["ReadOnly"], name
+    assert sheet.Force is False and sheet.NotValid == "" and sheet.ValidityFindings == []
     assert sheet.getEditorMode("SheetSetJson") == ["Hidden"]
     assert sheet.getGroupOfProperty("Kerf") == "Sheets"
     assert sheet.getGroupOfProperty("RoundTripOk") == "Report"
     assert (sheet.MountainStyle, sheet.ValleyStyle, sheet.MakePages) == (4, 2, True)
+
+
+# An A5 card (pages 105 mm deep) whose tent ends foot 30 + slope 80 = 110 mm from the fold: closed,
+# it sticks out by 5 mm; the validity check finds it not enclosed, and nothing else.
+TALL_TENT = dict(offset=40.0, width=60.0, foot=30.0, foot_backdrop=30.0, slope=80.0)
+STAMP = "NOT VALID: not enclosed"
+
+
+def stamps_on(page):
+    _, annotations = page_parts(page)
+    return [a for a in annotations if list(a.Text) == [STAMP]]
+
+
+def test_a_rejected_card_is_laid_out_only_when_forced(doc, popup, tmp_path):
+    make = popup.make
+    card = make.make_card(doc, preset="A5")
+    tent = make.make_tent_fold(card, name="TallTent", **TALL_TENT)
+    sheet = make.make_cutting_sheet(card, paper="A4")
+    doc.recompute()
+    assert in_error(sheet)
+    status = sheet.getStatusString()
+    assert f"CuttingSheet: the card Card is {STAMP}: not_enclosed: " in status
+    assert "sticks out of the closed card by 5 mm" in status and "set Force" in status
+    assert sheet.SheetSetJson == "" and popup.pages.pages_of(sheet) == []
+    with pytest.raises(ValueError, match="no layout to export"):
+        popup.feature.export_cutting_sheet(sheet, str(tmp_path / "refused"))
+
+    sheet.Force = True
+    recompute_ok(doc, card, tent, sheet)
+    assert sheet.NotValid == STAMP
+    assert sheet.Diagnostics[0] == f"warning: {STAMP} (laid out because Force is set)"
+    assert any("by 5 mm" in finding for finding in sheet.ValidityFindings)
+    pages = popup.pages.pages_of(sheet)
+    assert len(pages) == sheet.SheetCount == 1
+    (stamp,) = stamps_on(pages[0])
+    # Centred across the A4 page (210 mm wide) in its 10 mm top margin band (page y up, 297 mm).
+    assert float(stamp.X) == pytest.approx(105.0) and 287.0 < float(stamp.Y) < 297.0
+    paths = popup.feature.export_cutting_sheet(sheet, str(tmp_path / "forced"))
+    modelspace = ezdxf.readfile(paths["dxf"]).modelspace()
+    texts = [text.dxf.text for text in modelspace.query("TEXT[layer=='LABEL']")]
+    assert texts.count(STAMP) == sheet.SheetCount
+    with open(paths["report"]) as f:
+        assert json.load(f)["not_valid"] == STAMP
+
+    sheet.Force = False
+    doc.recompute()
+    assert in_error(sheet) and sheet.NotValid == ""
+    tent.Slope = 50.0  # 30 + 50 = 80 mm: inside the page
+    recompute_ok(doc, card, tent, sheet)
+    assert sheet.NotValid == "" and not any(STAMP in line for line in sheet.Diagnostics)
+    assert [stamps_on(page) for page in popup.pages.pages_of(sheet)] == [[]]
 
 
 REOPEN_SCRIPT = """

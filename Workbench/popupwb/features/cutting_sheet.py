@@ -7,6 +7,10 @@ at x = k * (paper width + 20 mm)), holding each patch as an exact planar face at
 fold lines and the tab outlines as wires. With MakePages, one TechDraw page per sheet
 (sheets.techdraw_pages).
 
+A card the validity check rejects (popupcore.check_validity with `popup check`'s defaults) is not
+laid out: the feature goes into error with the reason, unless Force is set; then the pages and
+the exported files carry "NOT VALID: <reason>" (sheets.not_valid_stamp).
+
 A changed FoldAngle recomputes the card, and so this feature: it lays out again only when the
 design, an option or the page settings changed (InputDigest). The module path, class name and
 property names are stored in .FCStd files: never rename them.
@@ -95,6 +99,12 @@ class CuttingSheet(StatelessProxy):
             2,
         )
         add("App::PropertyBool", "MakePages", "Draw one TechDraw page per sheet", True)
+        add(
+            "App::PropertyBool",
+            "Force",
+            "Lay out a card the validity check rejects; every page and file then says NOT VALID",
+            False,
+        )
 
         report = property_adder(obj, "Report")
         for name, doc in (
@@ -122,6 +132,21 @@ class CuttingSheet(StatelessProxy):
             "App::PropertyStringList",
             "Diagnostics",
             "Findings of the last layout (severity: code: message)",
+            mode=1,
+            output=True,
+        )
+        report(
+            "App::PropertyString",
+            "NotValid",
+            "The NOT VALID stamp of the pages when Force laid out a rejected card; empty otherwise",
+            "",
+            mode=1,
+            output=True,
+        )
+        report(
+            "App::PropertyStringList",
+            "ValidityFindings",
+            "The validity check's findings when Force laid out a rejected card",
             mode=1,
             output=True,
         )
@@ -161,11 +186,11 @@ class CuttingSheet(StatelessProxy):
         built = assembly.assembly_of(self._card(obj))
         options = layout_options(obj)
         self._check_styles(obj)
-        digest = hashlib.sha1(
-            repr((built.key, options, obj.MakePages, obj.MountainStyle, obj.ValleyStyle)).encode()
-        ).hexdigest()[:16]
+        settings = (obj.MakePages, obj.MountainStyle, obj.ValleyStyle, obj.Force)
+        digest = hashlib.sha1(repr((built.key, options, settings)).encode()).hexdigest()[:16]
         if digest == obj.InputDigest and self._pages_complete(obj):
             return  # a new FoldAngle: same design, same sheets
+        not_valid = self._not_valid(obj, built)
         try:
             sheet_set = export.layout(built.scaffold, **options)
         except ValueError as error:  # DesignError names the option and its range
@@ -173,7 +198,7 @@ class CuttingSheet(StatelessProxy):
         errors = [d for d in sheet_set["diagnostics"] if d["severity"] == "error"]
         if errors:
             raise self._error(obj, "; ".join(d["message"] for d in errors))
-        self._show(obj, sheet_set)
+        self._show(obj, sheet_set, not_valid)
         obj.InputDigest = digest
 
     # --- steps of execute -------------------------------------------------------------------
@@ -196,6 +221,26 @@ class CuttingSheet(StatelessProxy):
             raise self._error(obj, f"{label} of {card.Label} is in error, fix it first: {message}")
         return card
 
+    def _not_valid(self, obj, built):
+        """The card's NotValid (None when the validity check accepts it); raises, leaving the
+        feature in error, for a rejected card unless Force is set."""
+        from popupwb.core import popupcore
+        from popupwb.sheets.not_valid_stamp import not_valid_of
+
+        try:
+            report = popupcore.check_validity(built.scaffold).to_dict()
+        except ValueError as error:
+            raise self._error(obj, f"the validity check cannot run: {error}") from error
+        not_valid = not_valid_of(report)
+        if not_valid is not None and not obj.Force:
+            first = f": {not_valid.findings[0]}" if not_valid.findings else ""
+            raise self._error(
+                obj,
+                f"the card {obj.Card.Label} is {not_valid.text()}{first}; fix it, or set Force "
+                "to lay it out anyway with every page stamped NOT VALID",
+            )
+        return not_valid
+
     def _check_styles(self, obj):
         from popupwb.sheets.techdraw_pages import LINE_STYLES
 
@@ -215,12 +260,14 @@ class CuttingSheet(StatelessProxy):
         feature in error and keeps the last good shape; export refuses an empty SheetSetJson."""
         message = f"{obj.Label}: {message}"
         obj.Diagnostics = [f"error: {message}"]
+        obj.NotValid = ""
+        obj.ValidityFindings = []
         obj.SheetSetJson = ""
         obj.InputDigest = ""
         obj.RoundTripOk = False
         return ValueError(message)
 
-    def _show(self, obj, sheet_set):
+    def _show(self, obj, sheet_set, not_valid=None):
         import Part
 
         from popupwb.sheets import techdraw_pages
@@ -246,10 +293,17 @@ class CuttingSheet(StatelessProxy):
         obj.StackHeight = sheet_set["stack_height"]
         obj.RoundTripError = sheet_set["round_trip"]["max_error"]
         obj.RoundTripOk = bool(sheet_set["round_trip"]["ok"])
-        obj.Diagnostics = [diagnostic_line(d) for d in sheet_set["diagnostics"]]
+        diagnostics = [diagnostic_line(d) for d in sheet_set["diagnostics"]]
+        if not_valid is not None:
+            diagnostics.insert(0, f"warning: {not_valid.text()} (laid out because Force is set)")
+        obj.Diagnostics = diagnostics
+        obj.NotValid = "" if not_valid is None else not_valid.text()
+        obj.ValidityFindings = [] if not_valid is None else list(not_valid.findings)
         obj.SheetSetJson = json.dumps(sheet_set)
         if obj.MakePages:
-            techdraw_pages.update_pages(obj, sheet_set, obj.MountainStyle, obj.ValleyStyle)
+            techdraw_pages.update_pages(
+                obj, sheet_set, obj.MountainStyle, obj.ValleyStyle, not_valid=not_valid
+            )
         else:
             techdraw_pages.remove_pages(obj)
 
@@ -299,4 +353,13 @@ def export_cutting_sheet(obj, folder):
     if "Invalid" in obj.State or not obj.SheetSetJson:
         reason = obj.getStatusString() if "Invalid" in obj.State else "never recomputed"
         raise ValueError(f"{obj.Label}: no layout to export ({reason}); fix it and recompute")
-    return export.export_sheets(json.loads(obj.SheetSetJson), folder)
+    return export.export_sheets(json.loads(obj.SheetSetJson), folder, not_valid=not_valid_of(obj))
+
+
+def not_valid_of(obj):
+    """The NotValid stamp the CuttingSheet `obj` laid out with (None for a valid card)."""
+    from popupwb.sheets.not_valid_stamp import PREFIX, NotValid
+
+    if not obj.NotValid:
+        return None
+    return NotValid(obj.NotValid[len(PREFIX) :], tuple(obj.ValidityFindings))

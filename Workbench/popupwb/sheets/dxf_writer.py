@@ -1,8 +1,9 @@
 """DXF cutting file (R2010, millimetres) of a sheet set, for laser and blade cutters and CAD.
 
 Layers (layer_style.SheetStyle): CUT holds only closed LWPOLYLINEs, one per cut loop; MOUNTAIN and
-VALLEY one LINE per fold; GLUE the outline of each glue area; LABEL centred TEXT. Entities take
-colour and linetype BYLAYER, so a cutter can map layers (or colours) to operations.
+VALLEY one LINE per fold; GLUE the outline of each glue area; LABEL centred TEXT (and, for a
+design the validity check rejects, the NOT VALID stamp of not_valid_stamp.py on every sheet).
+Entities take colour and linetype BYLAYER, so a cutter can map layers (or colours) to operations.
 """
 
 import ezdxf
@@ -10,6 +11,7 @@ from ezdxf.enums import TextEntityAlignment
 
 from .sheet_set import read_sheet_set, sheet_file_paths
 from .layer_style import SheetStyle
+from .not_valid_stamp import stamp_label
 
 # All sheets share one file side by side: sheet k's origin is at x = k * (paper width + SHEET_GAP).
 SHEET_GAP = 20.0  # mm
@@ -17,29 +19,38 @@ INSUNITS_MM = 4
 MEASUREMENT_METRIC = 1
 
 
-def write_dxf(sheet_set, path, style=None):
-    """Writes every sheet of `sheet_set` into one DXF at `path`, side by side; returns `path`."""
+def write_dxf(sheet_set, path, style=None, not_valid=None):
+    """Writes every sheet of `sheet_set` into one DXF at `path`, side by side; returns `path`.
+    `not_valid` (a not_valid_stamp.NotValid) stamps every sheet."""
     sheets = read_sheet_set(sheet_set)
     style = style or SheetStyle()
     doc = _new_document(style)
     pitch = sheets.width + SHEET_GAP
+    stamp = _stamp(sheets, not_valid)
     for sheet in sheets.sheets:
-        _draw_sheet(doc.modelspace(), sheet, style, x_offset=sheet.index * pitch)
+        _draw_sheet(doc.modelspace(), sheet, style, x_offset=sheet.index * pitch, stamp=stamp)
     doc.saveas(path)
     return path
 
 
-def write_dxf_per_sheet(sheet_set, path, style=None):
+def write_dxf_per_sheet(sheet_set, path, style=None, not_valid=None):
     """Writes one DXF per sheet, each at the origin: `path` for the first sheet, then
     <stem>-2.dxf, <stem>-3.dxf, ...; returns the paths written."""
     sheets = read_sheet_set(sheet_set)
     style = style or SheetStyle()
     paths = sheet_file_paths(path, len(sheets.sheets))
+    stamp = _stamp(sheets, not_valid)
     for sheet, sheet_path in zip(sheets.sheets, paths):
         doc = _new_document(style)
-        _draw_sheet(doc.modelspace(), sheet, style, x_offset=0.0)
+        _draw_sheet(doc.modelspace(), sheet, style, x_offset=0.0, stamp=stamp)
         doc.saveas(sheet_path)
     return paths
+
+
+def _stamp(sheets, not_valid):
+    if not_valid is None:
+        return None
+    return stamp_label(sheets.width, sheets.height, sheets.margin, not_valid)
 
 
 def _new_document(style):
@@ -69,7 +80,7 @@ def _define_linetype(doc, layer):
         doc.linetypes.add(layer.linetype, pattern, description=layer.name.lower())
 
 
-def _draw_sheet(modelspace, sheet, style, x_offset):
+def _draw_sheet(modelspace, sheet, style, x_offset, stamp=None):
     def shifted(points):
         return [(x + x_offset, y) for x, y in points]
 
@@ -90,12 +101,18 @@ def _draw_sheet(modelspace, sheet, style, x_offset):
                 dxfattribs={"layer": style.glue.name},
             )
         for label in piece.labels:
-            (position,) = shifted((label.position,))
-            text = modelspace.add_text(
-                label.text,
-                height=label.height,
-                rotation=label.angle,
-                dxfattribs={"layer": style.label.name},
-            )
-            # MIDDLE_CENTER centres the cap height on the point, as the sheet format specifies.
-            text.set_placement(position, align=TextEntityAlignment.MIDDLE_CENTER)
+            _draw_label(modelspace, label, style, shifted)
+    if stamp is not None:
+        _draw_label(modelspace, stamp, style, shifted)
+
+
+def _draw_label(modelspace, label, style, shifted):
+    (position,) = shifted((label.position,))
+    text = modelspace.add_text(
+        label.text,
+        height=label.height,
+        rotation=label.angle,
+        dxfattribs={"layer": style.label.name},
+    )
+    # MIDDLE_CENTER centres the cap height on the point, as the sheet format specifies.
+    text.set_placement(position, align=TextEntityAlignment.MIDDLE_CENTER)

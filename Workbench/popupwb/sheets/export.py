@@ -5,8 +5,8 @@
 
 `layout` is the core's layout_sheets (docs/SHEET_FORMAT.md) as a dict. `export_sheets` writes
 sheets.dxf (all sheets side by side), sheets.svg (sheets-2.svg, … for further sheets), sheets.pdf
-(one page per sheet), instructions.pdf, report.json and sheets.json (the sheet set itself), re-reads the DXF to check it, and returns
-the paths by kind. No FreeCAD needed.
+(one page per sheet), instructions.pdf, report.json and sheets.json (the sheet set itself),
+re-reads the DXF to check it, and returns the paths by kind. No FreeCAD needed.
 """
 
 import json
@@ -49,8 +49,9 @@ def layout(scaffold, **options):
     return json.loads(popupcore.layout_sheets(scaffold, **{**LAYOUT_DEFAULTS, **options}))
 
 
-def report(sheet_set, dxf_check=None):
-    """What report.json holds: the counts, the checks and every diagnostic."""
+def report(sheet_set, dxf_check=None, not_valid=None):
+    """What report.json holds: the counts, the checks and every diagnostic; `not_valid` the
+    stamp's text when the sheets were forced from a design the validity check rejects."""
     pieces = [
         {
             "id": p["id"],
@@ -77,18 +78,27 @@ def report(sheet_set, dxf_check=None):
         "errors": [d for d in sheet_set["diagnostics"] if d["severity"] == "error"],
         "warnings": [d for d in sheet_set["diagnostics"] if d["severity"] == "warning"],
         "dxf_check": dxf_check,
+        "not_valid": None if not_valid is None else not_valid.text(),
     }
 
 
-def export_sheets(sheet_set, out_dir, style=None, registration_marks=False):
-    """Writes the production files into out_dir (created if needed); returns {kind: path(s)}."""
+def export_sheets(sheet_set, out_dir, style=None, registration_marks=False, not_valid=None):
+    """Writes the production files into out_dir (created if needed); returns {kind: path(s)}.
+    `not_valid` (a not_valid_stamp.NotValid) stamps every sheet and page: the design failed the
+    validity check and the sheets were forced."""
     os.makedirs(out_dir, exist_ok=True)
     paths = {
-        "dxf": write_dxf(sheet_set, os.path.join(out_dir, "sheets.dxf"), style),
-        "svg": write_svg(sheet_set, os.path.join(out_dir, "sheets.svg"), style),
-        "pdf": write_pdf(sheet_set, os.path.join(out_dir, "sheets.pdf"), style, registration_marks),
+        "dxf": write_dxf(sheet_set, os.path.join(out_dir, "sheets.dxf"), style, not_valid),
+        "svg": write_svg(sheet_set, os.path.join(out_dir, "sheets.svg"), style, not_valid),
+        "pdf": write_pdf(
+            sheet_set,
+            os.path.join(out_dir, "sheets.pdf"),
+            style,
+            registration_marks,
+            not_valid=not_valid,
+        ),
         "instructions": write_instructions(
-            sheet_set, os.path.join(out_dir, "instructions.pdf"), style
+            sheet_set, os.path.join(out_dir, "instructions.pdf"), style, not_valid=not_valid
         ),
     }
     paths["sheet_set"] = os.path.join(out_dir, "sheets.json")
@@ -97,5 +107,5 @@ def export_sheets(sheet_set, out_dir, style=None, registration_marks=False):
     check = check_dxf(paths["dxf"], expected_cut_length=sheet_set["cut_length"])
     paths["report"] = os.path.join(out_dir, "report.json")
     with open(paths["report"], "w") as f:
-        json.dump(report(sheet_set, check), f, indent=2)
+        json.dump(report(sheet_set, check, not_valid), f, indent=2)
     return paths

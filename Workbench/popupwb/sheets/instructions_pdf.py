@@ -1,5 +1,7 @@
 """Assembly instructions PDF (A4): the paper, the pieces on each sheet, the glue steps in order,
-the fold-line legend in the colours and dashes of the sheets, and the layout's diagnostics."""
+the fold-line legend in the colours and dashes of the sheets, and the layout's diagnostics. For a
+design the validity check rejects, the NOT VALID stamp heads every page and the check's findings
+come first."""
 
 from xml.sax.saxutils import escape
 
@@ -22,9 +24,14 @@ FOLD_MEANING = {
 }
 
 
-def write_instructions(sheet_set, path, style=None, compress=True):
+PAGE_MARGIN = 20.0  # mm, every side
+STAMP_SIZE = 12.0  # pt
+
+
+def write_instructions(sheet_set, path, style=None, compress=True, not_valid=None):
     """Writes the assembly instructions for `sheet_set` to the PDF `path`; returns `path`.
-    compress=False leaves the page streams readable (tests grep the text)."""
+    compress=False leaves the page streams readable (tests grep the text). `not_valid` (a
+    not_valid_stamp.NotValid) stamps every page and lists the validity findings first."""
     sheets = read_sheet_set(sheet_set)
     style = style or SheetStyle()
     styles = getSampleStyleSheet()
@@ -34,19 +41,46 @@ def write_instructions(sheet_set, path, style=None, compress=True):
         pageCompression=compress,
         title="Pop-up card: cutting and assembly",
         creator="PopUp",
-        leftMargin=20 * mm,
-        rightMargin=20 * mm,
-        topMargin=20 * mm,
-        bottomMargin=20 * mm,
+        leftMargin=PAGE_MARGIN * mm,
+        rightMargin=PAGE_MARGIN * mm,
+        topMargin=PAGE_MARGIN * mm,
+        bottomMargin=PAGE_MARGIN * mm,
     )
     story = [Paragraph("Pop-up card: cutting and assembly", styles["Title"])]
+    if not_valid is not None:
+        story += _not_valid_section(not_valid, styles)
     story += _paper_section(sheets)
     story += _pieces_section(sheets, styles)
     story += _assembly_section(sheets, styles)
     story += _legend_section(style, styles)
     story += _diagnostics_section(sheets, styles)
-    document.build(story)
+    if not_valid is None:
+        document.build(story)
+    else:
+
+        def stamp(canvas, _document):  # in the top page margin, on every page
+            canvas.saveState()
+            canvas.setFont("Helvetica-Bold", STAMP_SIZE)
+            canvas.setFillColorRGB(*style.cut.unit_colour())
+            canvas.drawCentredString(A4[0] / 2.0, A4[1] - PAGE_MARGIN / 2.0 * mm, not_valid.text())
+            canvas.restoreState()
+
+        document.build(story, onFirstPage=stamp, onLaterPages=stamp)
     return path
+
+
+def _not_valid_section(not_valid, styles):
+    flowables = [
+        Paragraph(escape(not_valid.text()), styles["Heading2"]),
+        Paragraph(
+            "The validity check rejects this design; these sheets were written on request "
+            "(--force, or the CuttingSheet's Force property). Its findings:",
+            styles["BodyText"],
+        ),
+    ]
+    for finding in not_valid.findings or ("none reported",):
+        flowables.append(Paragraph(escape(finding), styles["Bullet"], bulletText="-"))
+    return flowables + [Spacer(1, 6 * mm)]
 
 
 def _table(rows, column_widths, header=True):

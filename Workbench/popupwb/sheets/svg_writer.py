@@ -1,6 +1,7 @@
 """SVG cutting files, one per sheet, as cutter software (Inkscape, Cricut, Silhouette, LightBurn)
 imports them: the page is the paper in mm with a viewBox in mm, so one user unit is 1 mm, and each
-layer of layer_style.SheetStyle is an Inkscape layer. Styles sit on every element rather than on
+layer of layer_style.SheetStyle is an Inkscape layer (a rejected design's NOT VALID stamp goes on
+LABEL). Styles sit on every element rather than on
 the layer groups because some cutter software ignores inherited styles.
 """
 
@@ -8,20 +9,24 @@ import svgwrite
 
 from .sheet_set import read_sheet_set, sheet_file_paths
 from .layer_style import SheetStyle
+from .not_valid_stamp import stamp_label
 
 INKSCAPE_NAMESPACE = "http://www.inkscape.org/namespaces/inkscape"
 FONT_FAMILY = "Helvetica, Arial, sans-serif"
 CAP_HEIGHT = 0.716  # of the font size, Helvetica/Arial
 
 
-def write_svg(sheet_set, path, style=None):
+def write_svg(sheet_set, path, style=None, not_valid=None):
     """Writes one SVG per sheet: `path` for the first sheet, then <stem>-2.svg, <stem>-3.svg, ...;
-    returns the paths written."""
+    returns the paths written. `not_valid` (a not_valid_stamp.NotValid) stamps every sheet."""
     sheets = read_sheet_set(sheet_set)
     style = style or SheetStyle()
     paths = sheet_file_paths(path, len(sheets.sheets))
+    stamp = None
+    if not_valid is not None:
+        stamp = stamp_label(sheets.width, sheets.height, sheets.margin, not_valid)
     for sheet, sheet_path in zip(sheets.sheets, paths):
-        _sheet_drawing(sheets, sheet, style, sheet_path).save(pretty=True)
+        _sheet_drawing(sheets, sheet, style, sheet_path, stamp).save(pretty=True)
     return paths
 
 
@@ -31,7 +36,7 @@ def _number(value):
     return "0" if text == "-0" else text
 
 
-def _sheet_drawing(sheets, sheet, style, path):
+def _sheet_drawing(sheets, sheet, style, path, stamp=None):
     width, height = sheets.width, sheets.height
     drawing = svgwrite.Drawing(
         path,
@@ -66,6 +71,21 @@ def _sheet_drawing(sheets, sheet, style, path):
         group.attribs["inkscape:label"] = layer.name
         layers[layer.name] = drawing.add(group)
 
+    def text(label):
+        anchor = flipped(label.baseline_centre())
+        element = drawing.text(
+            label.text,
+            insert=anchor,
+            fill=style.label.hex_colour(),
+            font_family=FONT_FAMILY,
+            font_size=_number(label.height / CAP_HEIGHT),
+            text_anchor="middle",
+        )
+        if label.angle:
+            # SVG turns clockwise in its y-down frame: a counter-clockwise angle is negative.
+            element["transform"] = f"rotate({_number(-label.angle)} {anchor[0]} {anchor[1]})"
+        return element
+
     for piece in sheet.pieces:
         for area in piece.glue:
             glue = dict(stroke(style.glue), fill=svgwrite.rgb(*style.glue_fill))
@@ -75,21 +95,11 @@ def _sheet_drawing(sheets, sheet, style, path):
             line = drawing.line(start=flipped(fold.start), end=flipped(fold.end), **stroke(layer))
             layers[layer.name].add(line)
         for label in piece.labels:
-            anchor = flipped(label.baseline_centre())
-            text = drawing.text(
-                label.text,
-                insert=anchor,
-                fill=style.label.hex_colour(),
-                font_family=FONT_FAMILY,
-                font_size=_number(label.height / CAP_HEIGHT),
-                text_anchor="middle",
-            )
-            if label.angle:
-                # SVG turns clockwise in its y-down frame: a counter-clockwise angle is negative.
-                text["transform"] = f"rotate({_number(-label.angle)} {anchor[0]} {anchor[1]})"
-            layers[style.label.name].add(text)
+            layers[style.label.name].add(text(label))
         for region in piece.cut:
             # One path per loop: a cutter runs each as its own closed contour.
             for loop in region.loops():
                 layers[style.cut.name].add(drawing.path(d=loop_path(loop), **stroke(style.cut)))
+    if stamp is not None:
+        layers[style.label.name].add(text(stamp))
     return drawing

@@ -22,12 +22,14 @@ removes whatever bears that name again at the end of every later recompute: a na
 during a recompute is never given to a new object again.
 """
 
+import dataclasses
 import os
 
 import FreeCAD
 
 import popupwb
 from popupwb.sheets.layer_style import SheetStyle
+from popupwb.sheets.not_valid_stamp import stamp_label
 from popupwb.sheets.sheet_shapes import cut_outline, sheet_pieces
 
 _TECHDRAW_TEMPLATES = "Mod/TechDraw/Templates/"
@@ -83,9 +85,10 @@ def page_objects(page):
     return [page] + ([page.Template] if page.Template else []) + views + outlines
 
 
-def update_pages(owner, sheet_set, mountain_style=4, valley_style=2):
+def update_pages(owner, sheet_set, mountain_style=4, valley_style=2, not_valid=None):
     """Makes `owner`'s pages show `sheet_set`: one per sheet, reused when they exist; pages of
-    sheets beyond the sheet count are removed."""
+    sheets beyond the sheet count are removed. `not_valid` (a not_valid_stamp.NotValid) puts its
+    stamp on every page, as an annotation like the labels."""
     count = len(sheet_set["sheets"])
     by_index = {}
     for page in pages_of(owner):
@@ -96,10 +99,15 @@ def update_pages(owner, sheet_set, mountain_style=4, valley_style=2):
     paper = sheet_set["paper"]
     template, scale = template_for(paper["width"], paper["height"])
     styles = {"mountain": mountain_style, "valley": valley_style}
+    extra_labels = []
+    if not_valid is not None:
+        margin = sheet_set["options"]["margin"]
+        stamp = stamp_label(paper["width"], paper["height"], margin, not_valid)
+        extra_labels.append(dataclasses.asdict(stamp))  # the sheet set's label keys
     for index in range(count):
         page = by_index.get(index) or _new_page(owner, index, template)
         page.Label = f"{owner.Label} sheet {index + 1}"
-        _draw_sheet(page, sheet_set, index, template, scale, styles)
+        _draw_sheet(page, sheet_set, index, template, scale, styles, extra_labels)
 
 
 def remove_pages(owner):
@@ -160,7 +168,7 @@ def _new_page(owner, index, template_path):
     return page
 
 
-def _draw_sheet(page, sheet_set, index, template, scale, styles):
+def _draw_sheet(page, sheet_set, index, template, scale, styles, extra_labels=()):
     label = page.Label
     if page.Template.Template != template:
         page.Template.Template = template
@@ -175,7 +183,8 @@ def _draw_sheet(page, sheet_set, index, template, scale, styles):
     view.X, view.Y = centre.x * scale, centre.y * scale
     _recompute(outline, view)  # makeCosmeticLine3D ends the process on a view without geometry
     _draw_folds(view, sheet_pieces(sheet_set, index), styles)
-    _draw_labels(page, sheet_pieces(sheet_set, index), scale)
+    labels = [label for piece in sheet_pieces(sheet_set, index) for label in piece["labels"]]
+    _draw_labels(page, labels + list(extra_labels), scale)
     _recompute(view, page.Template, page)
 
 
@@ -202,10 +211,9 @@ def _draw_folds(view, pieces, styles):
             )
 
 
-def _draw_labels(page, pieces, scale):
+def _draw_labels(page, labels, scale):
     doc = page.Document
     colour = SheetStyle().label.unit_colour()
-    labels = [label for piece in pieces for label in piece["labels"]]
     annotations = [v for v in page.Views if v.TypeId == "TechDraw::DrawViewAnnotation"]
     for extra in annotations[len(labels) :]:
         page.removeView(extra)  # now, not when the removal happens at the recompute's end
