@@ -19,33 +19,56 @@ void bind_sheets(py::module_& m)
         py::arg("name"),
         "(name, width, height) in mm of A4, A3, Letter, Tabloid or '<w>x<h>'; raises "
         "DesignError for anything else.");
+    // The options as a bound type: its defaults are the core's own (SheetOptions{}), the single
+    // source the workbench's option table reads (popupwb/sheets/sheet_options.py).
+    py::class_<SheetOptions>(m, "SheetOptions")
+        .def(py::init<>())
+        .def_property(
+            "paper", [](const SheetOptions& o) { return o.nest.paper.name; },
+            [](SheetOptions& o, const std::string& name) {
+                o.nest.paper = unwrap(paper_by_name(name));
+            },
+            "A4, A3, Letter, Tabloid or '<w>x<h>' mm (DesignError for anything else)")
+        .def_property_readonly("paper_width",
+                               [](const SheetOptions& o) { return o.nest.paper.width; })
+        .def_property_readonly("paper_height",
+                               [](const SheetOptions& o) { return o.nest.paper.height; })
+        .def_property(
+            "margin", [](const SheetOptions& o) { return o.nest.margin; },
+            [](SheetOptions& o, double v) { o.nest.margin = v; })
+        .def_property(
+            "spacing", [](const SheetOptions& o) { return o.nest.spacing; },
+            [](SheetOptions& o, double v) { o.nest.spacing = v; })
+        .def_property(
+            "rotate", [](const SheetOptions& o) { return o.nest.rotate; },
+            [](SheetOptions& o, bool v) { o.nest.rotate = v; })
+        .def_readwrite("kerf", &SheetOptions::kerf)
+        .def_readwrite("min_gap", &SheetOptions::min_gap)
+        .def_readwrite("tab_width", &SheetOptions::tab_width)
+        .def_readwrite("tab_angle", &SheetOptions::tab_angle)
+        .def_readwrite("min_tab_width", &SheetOptions::min_tab_width)
+        .def_readwrite("min_feature", &SheetOptions::min_feature)
+        .def_readwrite("min_corner_angle", &SheetOptions::min_corner_angle)
+        .def_readwrite("fold_hints", &SheetOptions::fold_hints)
+        .def_readwrite("round_trip_angles", &SheetOptions::round_trip_angles)
+        .def(
+            "check",
+            [](const SheetOptions& o) { return bindings::diagnostic_list(check_sheet_options(o)); },
+            "The options' range errors as diagnostics (empty when every option is in range).");
     m.def(
         "layout_sheets",
-        [](const Scaffold& s, const std::string& paper, double margin, double spacing, bool rotate,
-           double kerf, double min_gap, double tab_width, double tab_angle, double min_tab_width,
-           double min_feature, double min_corner_angle, bool fold_hints, int round_trip_angles) {
-            SheetOptions o;
-            o.nest.paper = unwrap(paper_by_name(paper));
-            o.nest.margin = margin;
-            o.nest.spacing = spacing;
-            o.nest.rotate = rotate;
-            o.kerf = kerf;
-            o.min_gap = min_gap;
-            o.tab_width = tab_width;
-            o.tab_angle = tab_angle;
-            o.min_tab_width = min_tab_width;
-            o.min_feature = min_feature;
-            o.min_corner_angle = min_corner_angle;
-            o.fold_hints = fold_hints;
-            o.round_trip_angles = round_trip_angles;
-            return sheet_set_to_json(unwrap(layout_sheets(s, o)));
+        [](const Scaffold& s, const SheetOptions& o) {
+            std::string json;
+            {
+                py::gil_scoped_release release;
+                Result<SheetSet> r = layout_sheets(s, o);
+                if (!r.ok)
+                    throw bindings::DesignFailure(std::move(r.diagnostics));
+                json = sheet_set_to_json(r.value);
+            }
+            return json;
         },
-        py::arg("scaffold"), py::arg("paper") = "A4", py::arg("margin") = 10.0,
-        py::arg("spacing") = 2.0, py::arg("rotate") = true, py::arg("kerf") = 0.1,
-        py::arg("min_gap") = 1.0, py::arg("tab_width") = 8.0, py::arg("tab_angle") = 45.0,
-        py::arg("min_tab_width") = 3.0, py::arg("min_feature") = 3.0,
-        py::arg("min_corner_angle") = 30.0, py::arg("fold_hints") = false,
-        py::arg("round_trip_angles") = 13, py::call_guard<py::gil_scoped_release>(),
+        py::arg("scaffold"), py::arg("options") = SheetOptions{},
         "Unfolds, tabs, labels, orders, nests and re-folds the card; returns the sheet set as "
         "JSON text (docs/SHEET_FORMAT.md). Raises DesignError naming a bad option (and its "
         "range), a piece too large for the paper, or a piece that cannot lie flat.");

@@ -21,6 +21,8 @@ import math
 import os
 import sys
 
+from popupwb.sheets import sheet_options
+
 EXIT_VALID = 0
 EXIT_INVALID = 1
 EXIT_BAD_INPUT = 2
@@ -47,6 +49,15 @@ class _Parser(argparse.ArgumentParser):
 
 def _one_line(text):
     return "; ".join(line.strip() for line in str(text).splitlines() if line.strip())
+
+
+def _option_message(design, error):
+    """A layout error as one line, each finding led by the flag at fault (--tab-angle: ...)."""
+    findings = getattr(error, "diagnostics", None) or []
+    known = {option.name for option in sheet_options.SHEET_OPTIONS}
+    if findings and all(d["parameter"] in known for d in findings):
+        return "; ".join(f"--{d['parameter'].replace('_', '-')}: {d['message']}" for d in findings)
+    return f"{design}: {_one_line(error)}"
 
 
 @contextlib.contextmanager
@@ -338,14 +349,7 @@ def cmd_sheet(args):
     not_valid = not_valid_of(validity)
     if not_valid is not None and not args.force:
         return _refuse_invalid(args, design, validity, not_valid)
-    options = dict(
-        kerf=args.kerf,
-        margin=args.margin,
-        spacing=args.spacing,
-        tab_width=args.tab_width,
-        tab_angle=args.tab_angle,
-        fold_hints=args.fold_hints,
-    )
+    options = sheet_options.from_cli(args)
     choice = None
     with _stdout_to_stderr():
         try:
@@ -354,7 +358,7 @@ def cmd_sheet(args):
             else:
                 sheet_set = layout(design.scaffold, paper=args.paper, **options)
         except ValueError as e:  # a bad option, or a piece too large for the paper(s)
-            raise InputError(f"{args.design}: {_one_line(e)}")
+            raise InputError(_option_message(args.design, e))
         try:
             paths = export_sheets(
                 sheet_set,
@@ -451,16 +455,7 @@ def build_parser():
         help="A4, A3, Letter, Tabloid or WxH in mm (default: the smallest preset holding every "
         "piece, presets of the system's paper family first)",
     )
-    sheet.add_argument("--kerf", type=float, default=0.1, metavar="MM", help="default 0.1")
-    sheet.add_argument("--margin", type=float, default=10.0, metavar="MM", help="default 10")
-    sheet.add_argument(
-        "--spacing", type=float, default=2.0, metavar="MM", help="between pieces, default 2"
-    )
-    sheet.add_argument("--tab-width", type=float, default=8.0, metavar="MM", help="default 8")
-    sheet.add_argument(
-        "--tab-angle", type=float, default=45.0, metavar="DEG", help="tab side angle, default 45"
-    )
-    sheet.add_argument("--fold-hints", action="store_true", help="print M/V beside each fold")
+    sheet_options.add_cli_arguments(sheet)
     sheet.add_argument(
         "--registration-marks", action="store_true", help="print-then-cut marks in the PDF"
     )

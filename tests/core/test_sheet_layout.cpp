@@ -326,6 +326,43 @@ TEST(SheetLayout, KerfNeverClosesASlotOrAHole)
     }
 }
 
+TEST(SheetLayout, DieCuttingWarnsOfNarrowBridgesAndSharpCorners)
+{
+    // A 200 × 140 card: its ground (x 0..140, y 0..200) gets a hole leaving a 1 mm bridge to the
+    // outer edge, and a 20° spike on that edge; every other corner of the card is 90°.
+    Scaffold s = make_card(CardParams{200, 140}).value;
+    Patch& ground = *std::find_if(s.patches.begin(), s.patches.end(),
+                                  [&](const Patch& p) { return p.id == s.ground; });
+    const double tip = 20.0 / std::tan(10.0 * M_PI / 180.0) / 2.0; // base 20 mm, apex 20°
+    ground.outer = {{0, 0, 0},     {140, 0, 0},   {140, 150, 0}, {140 + tip, 160, 0},
+                    {140, 170, 0}, {140, 200, 0}, {0, 200, 0}};
+    ground.holes = {{{120, 40, 0}, {120, 60, 0}, {139, 60, 0}, {139, 40, 0}}}; // 1 mm from x = 140
+    // The die-cutting warnings of one layout, by code.
+    auto warnings = [&](double min_feature, double min_corner_angle) {
+        SheetOptions o = a3();
+        o.nest.paper = paper_by_name("500x400").value;
+        o.min_feature = min_feature;
+        o.min_corner_angle = min_corner_angle;
+        const Result<SheetSet> r = layout_sheets(s, o);
+        EXPECT_TRUE(r.ok);
+        std::map<DiagnosticCode, Diagnostics> found;
+        for (const Diagnostic& d : r.value.diagnostics)
+            found[d.code].push_back(d);
+        return found;
+    };
+    auto found = warnings(3.0, 30.0);
+    EXPECT_EQ(found[DiagnosticCode::narrow_feature].size(), 1u); // the 1 mm bridge
+    ASSERT_EQ(found[DiagnosticCode::sharp_corner].size(), 1u);   // the spike
+    const Diagnostic& sharp = found[DiagnosticCode::sharp_corner].front();
+    EXPECT_EQ(sharp.severity, Severity::warning);
+    EXPECT_NE(sharp.message.find("has a 20° corner"), std::string::npos) << sharp.message;
+    EXPECT_NE(std::find(sharp.patches.begin(), sharp.patches.end(), s.ground), sharp.patches.end());
+    // The limits decide: a 0.8 mm feature size keeps the bridge, 15° accepts the spike.
+    EXPECT_EQ(warnings(0.8, 30.0)[DiagnosticCode::narrow_feature].size(), 0u);
+    EXPECT_EQ(warnings(3.0, 15.0)[DiagnosticCode::sharp_corner].size(), 0u);
+    EXPECT_EQ(warnings(3.0, 25.0)[DiagnosticCode::sharp_corner].size(), 1u);
+}
+
 TEST(SheetLayout, CutLengthIsTheSumOfTheCutLoops)
 {
     const SheetSet set = layout_sheets(fixtures::demo_card(), a3()).value;

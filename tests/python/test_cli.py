@@ -1,6 +1,7 @@
 """The `popup` command line (build/bin/popup, written by `make build`), run as a user would."""
 
 import json
+import math
 import os
 import shutil
 import subprocess
@@ -331,8 +332,13 @@ def test_sheet_of_a_card_with_a_broken_mechanism_names_it(card_documents, user_h
     "options, fragments",
     [
         (["--paper", "A9"], ["A9", "A4, A3, Letter, Tabloid"]),
-        (["--paper", "A3", "--kerf", "-1"], ["kerf = -1", "0 to 2 mm"]),
-        (["--paper", "A3", "--tab-angle", "120"], ["tab_angle = 120"]),
+        (["--paper", "A3", "--kerf", "-1"], ["--kerf: kerf = -1", "0 to 2 mm"]),
+        (["--paper", "A3", "--tab-angle", "120"], ["--tab-angle: tab_angle = 120"]),
+        (
+            ["--paper", "A3", "--min-corner-angle", "95"],
+            ["--min-corner-angle: min_corner_angle = 95", "0 to 90°"],
+        ),
+        (["--paper", "A3", "--min-feature", "-2"], ["--min-feature: min_feature = -2"]),
         (["--paper", "A4"], ["piece P1", "does not fit the printable area 190.0 x 277.0 mm of A4"]),
     ],
 )
@@ -344,3 +350,59 @@ def test_sheet_bad_input_is_named(options, fragments, tmp_path):
 
 def test_sheet_needs_an_output_folder():
     assert_clean_error(popup("sheet", data("mechanisms/tent.json")), "--out")
+
+
+def spiked_card(path):
+    """A 200 x 140 card whose ground has a 20° spike on its outer edge (base 20 mm); every other
+    corner of the card is 90°."""
+    tip = 140.0 + 10.0 / math.tan(math.radians(10.0))
+    design = {
+        "format": "popup-design",
+        "version": 1,
+        "name": "spiked card",
+        "design_angle_deg": 180.0,
+        "paper_thickness": 0.2,
+        "ground": 0,
+        "backdrop": 1,
+        "patches": [
+            {
+                "id": 0,
+                "name": "ground",
+                "role": "ground",
+                "outline": [
+                    [0, 0, 0], [140, 0, 0], [140, 150, 0], [tip, 160, 0], [140, 170, 0],
+                    [140, 200, 0], [0, 200, 0],
+                ],
+            },
+            {
+                "id": 1,
+                "name": "backdrop",
+                "role": "backdrop",
+                "outline": [[0, 0, 0], [0, 200, 0], [-140, 200, 0], [-140, 0, 0]],
+            },
+        ],
+        "hinges": [
+            {"id": 0, "patches": [0, 1], "from": [0, 0, 0], "to": [0, 200, 0], "fold": "valley"}
+        ],
+        "glue": [],
+    }  # fmt: skip
+    with open(path, "w") as f:
+        json.dump(design, f)
+    return str(path)
+
+
+def test_sheet_corner_limit_decides_the_sharp_corner_warning(tmp_path):
+    design = spiked_card(tmp_path / "spiked.json")
+
+    def sharp_corners(limit):
+        out = tmp_path / f"limit{limit}"
+        args = ["--out", str(out), "--paper", "500x400", "--min-corner-angle", str(limit)]
+        proc = popup("sheet", design, *args)
+        assert proc.returncode == 0, proc.stderr
+        with open(out / "report.json") as f:
+            report = json.load(f)
+        return [d for d in report["warnings"] if d["code"] == "sharp_corner"]
+
+    (spike,) = sharp_corners(30)
+    assert "has a 20° corner" in spike["message"] and sorted(spike["patches"]) == [0, 1]
+    assert sharp_corners(25) != [] and sharp_corners(19) == []

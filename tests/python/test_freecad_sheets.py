@@ -283,7 +283,7 @@ def test_a_new_fold_angle_does_not_lay_out_again(doc, popup, card, monkeypatch):
     layout = popup.core.layout_sheets
 
     def counting(*args, **kwargs):
-        calls.append(kwargs)
+        calls.append(args[1])  # the SheetOptions
         return layout(*args, **kwargs)
 
     monkeypatch.setattr(popup.core, "layout_sheets", counting)
@@ -292,7 +292,7 @@ def test_a_new_fold_angle_does_not_lay_out_again(doc, popup, card, monkeypatch):
     assert calls == []
     card["Sheet"].Margin = 12.0
     recompute_ok(doc, *card.values())
-    assert len(calls) == 1 and calls[0]["margin"] == 12.0
+    assert len(calls) == 1 and calls[0].margin == 12.0
     card["Box"].Height = 35.0  # another design: laid out again
     recompute_ok(doc, *card.values())
     assert len(calls) == 2

@@ -16,7 +16,6 @@ design, an option or the page settings changed (InputDigest). The module path, c
 property names are stored in .FCStd files: never rename them.
 """
 
-import collections
 import hashlib
 import json
 
@@ -24,6 +23,7 @@ import FreeCAD
 
 from popupwb import assembly
 from popupwb.features.property_adder import property_adder
+from popupwb.sheets.sheet_options import SHEET_OPTIONS, defaults
 from popupwb.stateless_proxy import StatelessProxy
 
 TYPE = "PopUp::CuttingSheet"
@@ -31,19 +31,9 @@ VERSION = "1"
 CUSTOM = "Custom"
 PAPERS = ["A4", "A3", "Letter", "Tabloid", CUSTOM]
 
-# A layout option as a property: kind "length" (App::PropertyDistance, signed so that the core,
-# not FreeCAD's clamping, judges a negative value), "angle" (degrees) or "bool".
-Option = collections.namedtuple("Option", "prop name kind doc")
-OPTIONS = (
-    Option("Margin", "margin", "length", "Blank border kept on every side of the paper"),
-    Option("Spacing", "spacing", "length", "Gap between pieces, at least Kerf + 1 mm"),
-    Option("Kerf", "kerf", "length", "Width the cutter removes; cut lines move out by half"),
-    Option("TabWidth", "tab_width", "length", "Depth of a glue tab, away from its crease"),
-    Option("TabAngle", "tab_angle", "angle", "Angle between a tab's crease and its sides"),
-    Option("MinTabWidth", "min_tab_width", "length", "Narrowest glue tab worth gluing"),
-    Option("MinFeature", "min_feature", "length", "Narrower paper is reported as fragile"),
-    Option("FoldHints", "fold_hints", "bool", "Print M or V beside each fold"),
-)
+# A layout option (sheets/sheet_options.py) as a property: kind "length" (App::PropertyDistance,
+# signed so that the core, not FreeCAD's clamping, judges a negative value), "angle" or "bool".
+OPTIONS = SHEET_OPTIONS
 _PROPERTY_TYPES = {
     "length": "App::PropertyDistance",
     "angle": "App::PropertyAngle",
@@ -68,8 +58,7 @@ class CuttingSheet(StatelessProxy):
 
     def add_properties(self, obj):
         """Adds every property that is missing, so files written by older versions upgrade."""
-        from popupwb.sheets.export import LAYOUT_DEFAULTS
-
+        default = defaults()
         have = set(obj.PropertiesList)
         add = property_adder(obj, "Sheets")
         add("App::PropertyLink", "Card", "The PopUpCard laid out on the sheets")
@@ -81,11 +70,11 @@ class CuttingSheet(StatelessProxy):
                 "Paper size (portrait); Custom uses PaperWidth and PaperHeight",
             )
             obj.Paper = PAPERS
-            obj.Paper = LAYOUT_DEFAULTS["paper"]
+            obj.Paper = default["paper"]
         add("App::PropertyDistance", "PaperWidth", "Paper width when Paper is Custom", 210.0)
         add("App::PropertyDistance", "PaperHeight", "Paper height when Paper is Custom", 297.0)
         for option in OPTIONS:
-            add(_PROPERTY_TYPES[option.kind], option.prop, option.doc, LAYOUT_DEFAULTS[option.name])
+            add(_PROPERTY_TYPES[option.kind], option.prop, option.doc, default[option.name])
         add(
             "App::PropertyInteger",
             "MountainStyle",

@@ -4,11 +4,12 @@ import FreeCAD
 
 from popupwb import assembly
 from popupwb.features.cutting_sheet import CUSTOM, OPTIONS, PAPERS, CuttingSheet
+from popupwb.sheets.sheet_options import defaults
 
 
 def make_cutting_sheet(
     card,
-    paper="A4",
+    paper=None,
     paper_width=None,
     paper_height=None,
     make_pages=True,
@@ -17,15 +18,18 @@ def make_cutting_sheet(
 ):
     """Adds a CuttingSheet of `card` (a PopUpCard) to the card's document.
 
-    `paper` is A4, A3, Letter, Tabloid or Custom; `paper_width` and `paper_height` (mm) make it
-    Custom. Other keywords are the core's layout options or the property names: margin, spacing,
-    kerf, tab_width, min_tab_width, min_feature (mm), tab_angle (degrees), fold_hints. The caller
+    `paper` is A4, A3, Letter, Tabloid or Custom (default: the core's); `paper_width` and
+    `paper_height` (mm) make it Custom. Other keywords are the layout options of
+    sheets/sheet_options.py, by core or property name: margin, spacing, kerf, min_gap, tab_width,
+    min_tab_width, min_feature (mm), tab_angle, min_corner_angle (degrees), fold_hints. The caller
     recomputes.
     """
     if not assembly.is_card(card):
         raise ValueError(
             f"make_cutting_sheet: card {getattr(card, 'Label', card)} must be a PopUpCard"
         )
+    if paper is None:
+        paper = defaults()["paper"]
     if paper not in PAPERS:
         raise ValueError(f"make_cutting_sheet: paper = {paper!r}, must be one of {PAPERS}")
     by_key = {}

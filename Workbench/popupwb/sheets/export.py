@@ -16,37 +16,18 @@ from .dxf_checks import check_dxf
 from .dxf_writer import write_dxf
 from .instructions_pdf import write_instructions
 from .pdf_writer import write_pdf
+from .sheet_options import core_options
 from .svg_writer import write_svg
-
-# The core's options and their defaults (SheetOptions in core/include/popup/sheet_layout.hpp).
-LAYOUT_DEFAULTS = {
-    "paper": "A4",
-    "margin": 10.0,
-    "spacing": 2.0,
-    "rotate": True,
-    "kerf": 0.1,
-    "min_gap": 1.0,
-    "tab_width": 8.0,
-    "tab_angle": 45.0,
-    "min_tab_width": 3.0,
-    "min_feature": 3.0,
-    "min_corner_angle": 30.0,
-    "fold_hints": False,
-    "round_trip_angles": 13,
-}
 
 
 def layout(scaffold, **options):
-    """The sheet set of a scaffold as a dict; raises popupcore.DesignError (a ValueError) naming
-    a bad option and its range, or a piece that does not fit the paper."""
+    """The sheet set of a scaffold as a dict. Options are those of sheets/sheet_options.py (and
+    `paper`), defaults the core's; raises ValueError for an unknown option and
+    popupcore.DesignError (a ValueError) naming a bad value and its range, or a piece that does
+    not fit the paper."""
     from popupwb.core import popupcore
 
-    unknown = sorted(set(options) - set(LAYOUT_DEFAULTS))
-    if unknown:
-        raise ValueError(
-            f"unknown sheet option(s) {', '.join(unknown)}; known: " f"{', '.join(LAYOUT_DEFAULTS)}"
-        )
-    return json.loads(popupcore.layout_sheets(scaffold, **{**LAYOUT_DEFAULTS, **options}))
+    return json.loads(popupcore.layout_sheets(scaffold, core_options(**options)))
 
 
 def report(sheet_set, dxf_check=None, not_valid=None):
