@@ -1,5 +1,6 @@
 // Cutting sheets: the flat layout as the JSON sheet set (docs/SHEET_FORMAT.md) and paper sizes.
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 
 #include "binding_support.hpp"
 #include "popup/sheet_layout.hpp"
@@ -51,6 +52,27 @@ void bind_sheets(py::module_& m)
         .def_readwrite("min_corner_angle", &SheetOptions::min_corner_angle)
         .def_readwrite("fold_hints", &SheetOptions::fold_hints)
         .def_readwrite("round_trip_angles", &SheetOptions::round_trip_angles)
+        .def_property(
+            "printed_sides",
+            [](const SheetOptions& o) {
+                std::map<std::string, std::string> sides;
+                for (const auto& [id, side] : o.printed_sides)
+                    sides[id] = to_string(side);
+                return sides;
+            },
+            [](SheetOptions& o, const std::map<std::string, std::string>& sides) {
+                std::map<std::string, PrintedSide> chosen;
+                for (const auto& [id, side] : sides) {
+                    if (side != "front" && side != "back")
+                        throw bindings::DesignFailure({Diagnostic::error(
+                            DiagnosticCode::bad_option,
+                            "printed side of " + id + " = '" + side + "', must be front or back",
+                            about_parameter("printed_sides"))});
+                    chosen[id] = side == "back" ? PrintedSide::back : PrintedSide::front;
+                }
+                o.printed_sides = chosen;
+            },
+            "{piece id: 'front' or 'back'}: the side each piece's artwork is printed on")
         .def(
             "check",
             [](const SheetOptions& o) { return bindings::diagnostic_list(check_sheet_options(o)); },

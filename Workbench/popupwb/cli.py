@@ -54,9 +54,9 @@ def _one_line(text):
 def _option_message(design, error):
     """A layout error as one line, each finding led by the flag at fault (--tab-angle: ...)."""
     findings = getattr(error, "diagnostics", None) or []
-    known = {option.name for option in sheet_options.SHEET_OPTIONS}
-    if findings and all(d["parameter"] in known for d in findings):
-        return "; ".join(f"--{d['parameter'].replace('_', '-')}: {d['message']}" for d in findings)
+    flags = {option.name: sheet_options.cli_flag(option) for option in sheet_options.SHEET_OPTIONS}
+    if findings and all(d["parameter"] in flags for d in findings):
+        return "; ".join(f"{flags[d['parameter']]}: {d['message']}" for d in findings)
     return f"{design}: {_one_line(error)}"
 
 

@@ -81,9 +81,16 @@ json piece_json(const SheetSet& set, const SheetPiece& p)
                           {"position", point(l.position)},
                           {"height", l.height},
                           {"angle", l.angle}});
-    return {{"id", p.id},         {"sheet", p.sheet},      {"rotation", p.rotation},
-            {"patches", patches}, {"cut", regions(p.cut)}, {"cut_nominal", regions(p.cut_nominal)},
-            {"folds", folds},     {"tabs", tabs},          {"glue", glue},
+    return {{"id", p.id},
+            {"printed_side", to_string(p.printed_side)},
+            {"sheet", p.sheet},
+            {"rotation", p.rotation},
+            {"patches", patches},
+            {"cut", regions(p.cut)},
+            {"cut_nominal", regions(p.cut_nominal)},
+            {"folds", folds},
+            {"tabs", tabs},
+            {"glue", glue},
             {"labels", labels}};
 }
 

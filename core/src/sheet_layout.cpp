@@ -166,6 +166,11 @@ std::string assembly_text(const SheetSet& set, const SheetPiece& piece,
 
 } // namespace
 
+const char* to_string(PrintedSide side)
+{
+    return side == PrintedSide::back ? "back" : "front";
+}
+
 Diagnostics check_sheet_options(const SheetOptions& o)
 {
     Diagnostics e;
@@ -209,8 +214,23 @@ Result<SheetSet> layout_sheets(const Scaffold& input, const SheetOptions& option
     const std::vector<int> order = assembly_order(s, groups, notes);
     std::vector<LocalPiece> pieces;
     std::map<int, int> position;
+    for (const auto& [id, side] : options.printed_sides) {
+        const bool known = id.size() > 1 && id[0] == 'P' &&
+                           id.find_first_not_of("0123456789", 1) == std::string::npos &&
+                           std::stoul(id.substr(1)) >= 1 &&
+                           std::stoul(id.substr(1)) <= order.size();
+        if (!known) {
+            r.fail(DiagnosticCode::bad_option,
+                   "printed side of " + id + ": there is no such piece; the pieces are P1 to P" +
+                       std::to_string(order.size()),
+                   about_parameter("printed_sides"));
+            return r;
+        }
+    }
     for (int g : order) {
-        Result<LocalPiece> flat = lay_flat(s, groups[g], 1e-6 * std::max(set.card_size, 1.0));
+        const auto side = options.printed_sides.find("P" + std::to_string(pieces.size() + 1));
+        const bool back = side != options.printed_sides.end() && side->second == PrintedSide::back;
+        Result<LocalPiece> flat = lay_flat(s, groups[g], 1e-6 * std::max(set.card_size, 1.0), back);
         if (!flat.ok) {
             r.fail_with(flat.diagnostics);
             return r;
@@ -277,14 +297,16 @@ Result<SheetSet> layout_sheets(const Scaffold& input, const SheetOptions& option
         const SheetPlacement place{quarter_turn(at.rotation_deg), at.translation};
         SheetPiece piece;
         piece.id = "P" + std::to_string(k + 1);
+        piece.printed_side = local.printed_back ? PrintedSide::back : PrintedSide::front;
         piece.sheet = at.sheet;
         piece.rotation = at.rotation_deg;
         const Patch& root = *s.find_patch(local.flat.patches.front());
         // Design state → the root's plane → its 2D frame (z up = printed side) → the sheet.
         Pose frame;
         frame.rotation.row(0) = root.u.transpose();
-        frame.rotation.row(1) = root.v.transpose();
-        frame.rotation.row(2) = root.normal.transpose();
+        const double turned = local.printed_back ? -1.0 : 1.0; // turned over about u
+        frame.rotation.row(1) = turned * root.v.transpose();
+        frame.rotation.row(2) = turned * root.normal.transpose();
         frame.translation = -(frame.rotation * root.origin);
         const Pose onto{place.rotation, Vec3(at.translation.x(), at.translation.y(), 0.0)};
         for (size_t i = 0; i < local.flat.patches.size(); ++i) {

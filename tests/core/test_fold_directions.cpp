@@ -65,7 +65,10 @@ Expectation expected_direction(const Scaffold& s, const Hinge& h, const Vec3& pr
 
 } // namespace
 
-TEST(FoldDirections, EveryFoldOfEveryMechanismTypeMatchesTheMotion)
+// Every piece printed on its front, or every piece turned over.
+class FoldDirections : public ::testing::TestWithParam<PrintedSide> {};
+
+TEST_P(FoldDirections, EveryFoldOfEveryMechanismTypeMatchesTheMotion)
 {
     std::vector<fixtures::NamedDesign> designs = fixtures::single_mechanism_cards();
     designs.push_back({"demo card", fixtures::demo_card()});
@@ -79,8 +82,14 @@ TEST(FoldDirections, EveryFoldOfEveryMechanismTypeMatchesTheMotion)
         const Scaffold& s = design.scaffold;
         SheetOptions options;
         options.nest.paper = paper_by_name("600x600").value;
+        const size_t pieces = layout_sheets(s, options).value.pieces.size();
+        for (size_t k = 1; k <= pieces; ++k)
+            options.printed_sides["P" + std::to_string(k)] = GetParam();
         const Result<SheetSet> set = layout_sheets(s, options);
         ASSERT_TRUE(set.ok);
+        EXPECT_TRUE(set.value.round_trip.ok);
+        for (const SheetPiece& piece : set.value.pieces)
+            EXPECT_EQ(piece.printed_side, GetParam());
         const Result<FoldSweep> sweep = simulate_fold(s, radians);
         ASSERT_TRUE(sweep.ok && sweep.value.complete);
         int checked = 0, folds = 0;
@@ -110,4 +119,52 @@ TEST(FoldDirections, EveryFoldOfEveryMechanismTypeMatchesTheMotion)
         EXPECT_GT(folds, 0);
         EXPECT_EQ(checked, folds) << "folds that never bend are not checked";
     }
+}
+
+INSTANTIATE_TEST_SUITE_P(PrintedSides, FoldDirections,
+                         ::testing::Values(PrintedSide::front, PrintedSide::back));
+
+TEST(PrintedSide, TurningAPieceOverSwapsItsFoldsAndGlueSides)
+{
+    const Scaffold s = fixtures::demo_card();
+    SheetOptions front;
+    front.nest.paper = paper_by_name("600x600").value;
+    SheetOptions back = front;
+    back.printed_sides["P1"] = PrintedSide::back;
+    const SheetSet a = layout_sheets(s, front).value;
+    const SheetSet b = layout_sheets(s, back).value;
+    ASSERT_EQ(a.pieces.size(), b.pieces.size());
+    EXPECT_TRUE(b.round_trip.ok) << b.round_trip.max_error;
+    const SheetPiece &card_front = a.pieces.front(), &card_back = b.pieces.front();
+    EXPECT_EQ(card_back.printed_side, PrintedSide::back);
+    ASSERT_EQ(card_front.folds.size(), card_back.folds.size());
+    for (size_t i = 0; i < card_front.folds.size(); ++i) {
+        EXPECT_EQ(card_front.folds[i].hinge, card_back.folds[i].hinge);
+        if (card_front.folds[i].kind == JointKind::fold) {
+            EXPECT_NE(card_front.folds[i].direction, card_back.folds[i].direction)
+                << "hinge " << card_front.folds[i].hinge;
+        }
+    }
+    // Glue areas on the card change face; their labels say so.
+    ASSERT_EQ(card_front.glue.size(), card_back.glue.size());
+    ASSERT_FALSE(card_front.glue.empty());
+    for (size_t i = 0; i < card_front.glue.size(); ++i)
+        EXPECT_NE(card_front.glue[i].front, card_back.glue[i].front) << card_front.glue[i].code;
+    auto back_labels = [](const SheetPiece& p) {
+        int n = 0;
+        for (const SheetLabel& l : p.labels)
+            n += l.text.find("(back)") != std::string::npos;
+        return n;
+    };
+    EXPECT_EQ(back_labels(card_front) + back_labels(card_back), int(card_front.glue.size()));
+    // The other pieces are unchanged.
+    for (size_t k = 1; k < a.pieces.size(); ++k)
+        EXPECT_EQ(b.pieces[k].printed_side, PrintedSide::front);
+    // An unknown piece is named.
+    SheetOptions unknown = front;
+    unknown.printed_sides["P99"] = PrintedSide::back;
+    const Result<SheetSet> refused = layout_sheets(s, unknown);
+    ASSERT_FALSE(refused.ok);
+    EXPECT_EQ(refused.diagnostics.front().parameter, "printed_sides");
+    EXPECT_NE(refused.diagnostics.front().message.find("P99"), std::string::npos);
 }

@@ -406,3 +406,34 @@ def test_sheet_corner_limit_decides_the_sharp_corner_warning(tmp_path):
     (spike,) = sharp_corners(30)
     assert "has a 20° corner" in spike["message"] and sorted(spike["patches"]) == [0, 1]
     assert sharp_corners(25) != [] and sharp_corners(19) == []
+
+
+def test_printed_side_turns_the_card_over(tmp_path):
+    """The card's central fold is the longest fold line: a valley seen from the printed inside,
+    a mountain when the card is printed on its outside. Read back from the DXF."""
+    import ezdxf
+
+    design = data("mechanisms/demo_card.json")
+
+    def longest_fold_layer(*extra):
+        out = tmp_path / ("_".join(extra) or "front")
+        proc = popup("sheet", design, "--out", str(out), "--paper", "A3", *extra)
+        assert proc.returncode == 0, proc.stderr
+        lines = [
+            e
+            for e in ezdxf.readfile(str(out / "sheets.dxf")).modelspace()
+            if e.dxftype() == "LINE" and e.dxf.layer in ("MOUNTAIN", "VALLEY")
+        ]
+        longest = max(lines, key=lambda e: (e.dxf.end - e.dxf.start).magnitude)
+        with open(out / "sheets.json") as f:
+            sides = {p["id"]: p["printed_side"] for p in json.load(f)["pieces"]}
+        return longest.dxf.layer, (longest.dxf.end - longest.dxf.start).magnitude, sides
+
+    layer, length, sides = longest_fold_layer()
+    assert layer == "VALLEY" and set(sides.values()) == {"front"}
+    turned_layer, turned_length, turned_sides = longest_fold_layer("--printed-side", "P1=back")
+    assert turned_layer == "MOUNTAIN" and turned_length == pytest.approx(length, abs=1e-6)
+    assert turned_sides["P1"] == "back" and sides.keys() == turned_sides.keys()
+    assert all(side == "front" for piece, side in turned_sides.items() if piece != "P1")
+    proc = popup("sheet", design, "--out", str(tmp_path / "x"), "--printed-side", "P1=up")
+    assert_clean_error(proc, "--printed-side", "front or back")

@@ -23,7 +23,7 @@ import FreeCAD
 
 from popupwb import assembly
 from popupwb.features.property_adder import property_adder
-from popupwb.sheets.sheet_options import SHEET_OPTIONS, defaults
+from popupwb.sheets.sheet_options import SHEET_OPTIONS, defaults, sides_text
 from popupwb.stateless_proxy import StatelessProxy
 
 TYPE = "PopUp::CuttingSheet"
@@ -38,6 +38,7 @@ _PROPERTY_TYPES = {
     "length": "App::PropertyDistance",
     "angle": "App::PropertyAngle",
     "bool": "App::PropertyBool",
+    "sides": "App::PropertyStringList",
 }
 LINE_STYLE_NAMES = "1 continuous, 2 dash, 3 dot, 4 dash-dot, 5 dash-dot-dot"
 
@@ -74,7 +75,10 @@ class CuttingSheet(StatelessProxy):
         add("App::PropertyDistance", "PaperWidth", "Paper width when Paper is Custom", 210.0)
         add("App::PropertyDistance", "PaperHeight", "Paper height when Paper is Custom", 297.0)
         for option in OPTIONS:
-            add(_PROPERTY_TYPES[option.kind], option.prop, option.doc, default[option.name])
+            value = default[option.name]
+            if option.kind == "sides":
+                value = sides_text(value)
+            add(_PROPERTY_TYPES[option.kind], option.prop, option.doc, value)
         add(
             "App::PropertyInteger",
             "MountainStyle",
@@ -306,7 +310,12 @@ def layout_options(obj):
     options = {"paper": paper}
     for option in OPTIONS:
         value = getattr(obj, option.prop)
-        options[option.name] = bool(value) if option.kind == "bool" else float(value.Value)
+        if option.kind == "bool":
+            options[option.name] = bool(value)
+        elif option.kind == "sides":
+            options[option.name] = list(value)
+        else:
+            options[option.name] = float(value.Value)
     return options
 
 

@@ -4,7 +4,7 @@ import FreeCAD
 
 from popupwb import assembly
 from popupwb.features.cutting_sheet import CUSTOM, OPTIONS, PAPERS, CuttingSheet
-from popupwb.sheets.sheet_options import defaults
+from popupwb.sheets.sheet_options import defaults, option_named, parse_sides, sides_text
 
 
 def make_cutting_sheet(
@@ -21,8 +21,8 @@ def make_cutting_sheet(
     `paper` is A4, A3, Letter, Tabloid or Custom (default: the core's); `paper_width` and
     `paper_height` (mm) make it Custom. Other keywords are the layout options of
     sheets/sheet_options.py, by core or property name: margin, spacing, kerf, min_gap, tab_width,
-    min_tab_width, min_feature (mm), tab_angle, min_corner_angle (degrees), fold_hints. The caller
-    recomputes.
+    min_tab_width, min_feature (mm), tab_angle, min_corner_angle (degrees), fold_hints,
+    printed_sides ({"P1": "back"}). The caller recomputes.
     """
     if not assembly.is_card(card):
         raise ValueError(
@@ -52,6 +52,8 @@ def make_cutting_sheet(
         if paper_height is not None:
             obj.PaperHeight = paper_height
     for key, value in options.items():
+        if option_named(key).kind == "sides":  # {"P1": "back"} or ["P1=back"]
+            value = sides_text(parse_sides(value))
         setattr(obj, by_key[key], value)
     obj.MakePages = make_pages
     if FreeCAD.GuiUp:

@@ -2,7 +2,8 @@
 properties, make_cutting_sheet's keywords and export.layout all come from it.
 
 Defaults are the core's own (popupcore.SheetOptions()), so no default is written twice. Kinds:
-"length" (mm), "angle" (degrees), "bool".
+"length" (mm), "angle" (degrees), "bool", "sides" (piece id → "front" or "back", written
+"P1=back" on the command line and in the property).
 """
 
 import collections
@@ -27,6 +28,12 @@ SHEET_OPTIONS = (
         "Sharper convex corners are reported (die cut)",
     ),
     SheetOption("fold_hints", "FoldHints", "bool", "Print M or V beside each fold"),
+    SheetOption(
+        "printed_sides",
+        "PrintedSides",
+        "sides",
+        "Pieces whose artwork is printed on their back, as P1=back (front otherwise)",
+    ),
 )
 
 _BY_KEY = {key: option for option in SHEET_OPTIONS for key in (option.name, option.prop)}
@@ -61,12 +68,40 @@ def core_options(paper=None, **values):
         options.paper = paper
     for key, value in values.items():
         option = option_named(key)
-        setattr(options, option.name, bool(value) if option.kind == "bool" else float(value))
+        setattr(options, option.name, _converted(option, value))
     return options
 
 
+def _converted(option, value):
+    if option.kind == "bool":
+        return bool(value)
+    if option.kind == "sides":
+        return parse_sides(value)
+    return float(value)
+
+
+def parse_sides(value):
+    """{piece: side} from a dict or from strings "P1=back"; ValueError naming a bad entry."""
+    if isinstance(value, dict):
+        return dict(value)
+    sides = {}
+    for entry in value:
+        piece, equals, side = str(entry).partition("=")
+        if not equals or not piece.strip():
+            raise ValueError(f"printed side {entry!r}: write PIECE=SIDE, e.g. P1=back")
+        sides[piece.strip()] = side.strip()
+    return sides
+
+
+def sides_text(sides):
+    """["P1=back", ...] for a property or a report."""
+    return [f"{piece}={side}" for piece, side in sorted(sides.items())]
+
+
 def cli_flag(option):
-    return "--" + option.name.replace("_", "-")
+    """--tab-width; --printed-side (given once per piece)."""
+    name = "printed_side" if option.kind == "sides" else option.name
+    return "--" + name.replace("_", "-")
 
 
 def add_cli_arguments(parser):
@@ -80,6 +115,15 @@ def add_cli_arguments(parser):
     for option in SHEET_OPTIONS:
         if option.kind == "bool":
             parser.add_argument(cli_flag(option), action="store_true", help=option.doc)
+            continue
+        if option.kind == "sides":
+            parser.add_argument(
+                cli_flag(option),
+                dest=option.name,
+                action="append",
+                metavar="PIECE=SIDE",
+                help=option.doc + "; repeat for several pieces",
+            )
             continue
         default = f"; default {shown[option.name]:g}" if option.name in shown else ""
         parser.add_argument(

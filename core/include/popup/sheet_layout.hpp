@@ -1,4 +1,5 @@
 #pragma once
+#include <map>
 #include <string>
 #include <vector>
 
@@ -7,6 +8,12 @@
 #include "popup/scaffold.hpp"
 
 namespace popup {
+
+/// The side of a piece its artwork is printed on, which faces up on the sheet. `front` is the
+/// side its first patch's normal points to (the card's inside, where the pop-ups stand); `back`
+/// turns the piece over. Folds are mountain or valley, glue areas front or back, as seen from it.
+enum class PrintedSide { front, back };
+const char* to_string(PrintedSide side);
 
 /// How to lay a card out for cutting. Lengths in mm, angles in degrees.
 struct SheetOptions {
@@ -20,6 +27,7 @@ struct SheetOptions {
     double min_corner_angle = 30.0; ///< die cutting: sharper convex corners get a warning
     bool fold_hints = false;        ///< print M/V beside each fold
     int round_trip_angles = 13;     ///< fold angles sampled by the round trip, ≥ 2
+    std::map<std::string, PrintedSide> printed_sides; ///< by piece id (P1, …); front if absent
 };
 
 /// Checks every option; errors name the option, its value and the allowed range.
@@ -78,6 +86,7 @@ struct SheetLabel {
 /// corner, printed side up).
 struct SheetPiece {
     std::string id; ///< P1, P2, … (P1 is the card)
+    PrintedSide printed_side = PrintedSide::front;
     int sheet = 0;
     double rotation = 0.0;
     std::vector<FlatPatch> patches;

@@ -26,6 +26,7 @@ struct LocalPiece {
     std::vector<Region> cut_nominal;
     std::vector<Region> cut;
     std::vector<SheetLabel> labels;
+    bool printed_back = false; ///< turned over: the root's normal side faces down
 
     bool has(int patch) const { return index_of.count(patch) > 0; }
     /// A design-state point of one of the piece's patches, in the piece's flat frame.
@@ -37,7 +38,8 @@ struct LocalPiece {
 
 /// Lays a piece flat and snaps vertices closer than `tol` onto one point, so that patches which
 /// share an edge share its exact coordinates (Clipper merges them in the outline).
-Result<LocalPiece> lay_flat(const Scaffold& s, const std::vector<int>& patches, double tol);
+Result<LocalPiece> lay_flat(const Scaffold& s, const std::vector<int>& patches, double tol,
+                            bool printed_back);
 
 /// The unit normal on the left of a unit direction.
 Vec2 left_normal(const Vec2& direction);
