@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "generated_scaffolds.hpp"
-#include "popup/brep_export.hpp"
-#include "popup/check_validity.hpp"
-#include "popup/simulate_fold.hpp"
+#include "popup/io/brep_export.hpp"
+#include "popup/simulation/check_validity.hpp"
+#include "popup/simulation/simulate_fold.hpp"
 
 namespace {
 

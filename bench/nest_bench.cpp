@@ -3,7 +3,7 @@
 #include <benchmark/benchmark.h>
 
 #include "nest_shapes_fixture.hpp"
-#include "popup/nest.hpp"
+#include "popup/sheets/nest.hpp"
 
 namespace {
 

@@ -3,7 +3,7 @@
 // same pieces in the same run, from the bounding-box shelf packer (goal: at most 0.8 ×).
 #include <benchmark/benchmark.h>
 
-#include "popup/sheet_layout.hpp"
+#include "popup/sheets/sheet_layout.hpp"
 #include "sheet_designs.hpp"
 
 namespace {

@@ -6,7 +6,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include "popup/result.hpp"
+#include "popup/model/result.hpp"
 
 namespace popup::bindings {
 

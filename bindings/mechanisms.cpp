@@ -4,7 +4,6 @@
 #include <pybind11/stl.h>
 
 #include "binding_support.hpp"
-#include "popup/card.hpp"
 #include "popup/mechanisms/box_fold.hpp"
 #include "popup/mechanisms/floating_layer.hpp"
 #include "popup/mechanisms/horizontal_translation.hpp"
@@ -13,6 +12,7 @@
 #include "popup/mechanisms/tent_fold.hpp"
 #include "popup/mechanisms/v_box_fold.hpp"
 #include "popup/mechanisms/v_fold.hpp"
+#include "popup/model/card.hpp"
 
 namespace py = pybind11;
 using namespace popup;

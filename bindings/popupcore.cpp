@@ -11,11 +11,11 @@
 #include <Standard_Failure.hxx>
 
 #include "binding_support.hpp"
-#include "popup/brep_export.hpp"
-#include "popup/check_validity.hpp"
-#include "popup/design_file.hpp"
-#include "popup/pieces.hpp"
-#include "popup/simulate_fold.hpp"
+#include "popup/io/brep_export.hpp"
+#include "popup/io/design_file.hpp"
+#include "popup/sheets/pieces.hpp"
+#include "popup/simulation/check_validity.hpp"
+#include "popup/simulation/simulate_fold.hpp"
 
 namespace py = pybind11;
 using namespace popup;

@@ -3,7 +3,8 @@
 #include <pybind11/stl.h>
 
 #include "binding_support.hpp"
-#include "popup/sheet_layout.hpp"
+#include "popup/io/sheet_json.hpp"
+#include "popup/sheets/sheet_layout.hpp"
 
 namespace py = pybind11;
 using namespace popup;

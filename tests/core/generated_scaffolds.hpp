@@ -1,5 +1,5 @@
 #pragma once
-#include "popup/scaffold.hpp"
+#include "popup/model/scaffold.hpp"
 
 namespace popup::fixtures {
 

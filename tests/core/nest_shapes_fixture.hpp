@@ -2,7 +2,7 @@
 // Flat pieces with known sizes for the nesting tests and benchmarks.
 #include <vector>
 
-#include "popup/nest.hpp"
+#include "popup/sheets/nest.hpp"
 
 namespace popup::fixtures {
 

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "popup/card.hpp"
 #include "popup/mechanisms/box_fold.hpp"
 #include "popup/mechanisms/floating_layer.hpp"
 #include "popup/mechanisms/horizontal_translation.hpp"
@@ -12,6 +11,7 @@
 #include "popup/mechanisms/tent_fold.hpp"
 #include "popup/mechanisms/v_box_fold.hpp"
 #include "popup/mechanisms/v_fold.hpp"
+#include "popup/model/card.hpp"
 
 namespace popup::fixtures {
 

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "popup/scaffold.hpp"
+#include "popup/model/scaffold.hpp"
 
 namespace popup::fixtures {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "popup/card.hpp"
+#include "popup/model/card.hpp"
 
 namespace popup::fixtures {
 

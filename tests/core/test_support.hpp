@@ -2,8 +2,8 @@
 // Scaffold builders with known answers and the invariant checkers every core test reuses.
 #include <vector>
 
-#include "popup/scaffold.hpp"
-#include "popup/simulate_fold.hpp"
+#include "popup/model/scaffold.hpp"
+#include "popup/simulation/simulate_fold.hpp"
 
 namespace popup::fixtures {
 

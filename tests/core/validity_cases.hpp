@@ -1,6 +1,6 @@
 #pragma once
 // The designs the validity tests, the sample files and the bindings tests share.
-#include "popup/scaffold.hpp"
+#include "popup/model/scaffold.hpp"
 
 namespace popup::fixtures {
 

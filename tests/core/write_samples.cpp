@@ -4,7 +4,7 @@
 // committed files still match, so edit the builders, not the files.
 #include <iostream>
 
-#include "popup/design_file.hpp"
+#include "popup/io/design_file.hpp"
 #include "sample_files.hpp"
 
 int main(int argc, char** argv)

@@ -18,7 +18,7 @@ FAMILIES = {"iso": ("A4", "A3"), "us": ("Letter", "Tabloid")}
 # libpaper's names of US paper sizes (papersize(5)); every other name is ISO or metric.
 US_PAPER_NAMES = {"letter", "legal", "executive", "tabloid", "ledger", "11x17", "halfletter"}
 PAPERSIZE_FILE = "/etc/papersize"
-# The core's largest custom paper (kLargestCustomSide in core/src/nest/paper.cpp): every piece a
+# The core's largest custom paper (kLargestCustomSide in core/src/sheets/nest/paper.cpp): every piece a
 # preset could hold lies flat on it, so one layout on it measures the pieces.
 MEASURING_PAPER = "1000x1000"
 
@@ -102,7 +102,7 @@ def _loop_area(loop):
 
 def piece_sizes(sheet_set):
     """Bounding box of each piece's largest cut region, the outline the core checks against the
-    paper (core/src/sheet_layout.cpp)."""
+    paper (core/src/sheets/sheet_layout.cpp)."""
     sizes = []
     for piece in sheet_set["pieces"]:
         outer = max((region["outer"] for region in piece["cut"]), key=_loop_area)

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "popup/mechanism.hpp"
+#include "popup/mechanisms/mechanism.hpp"
 
 namespace popup {
 

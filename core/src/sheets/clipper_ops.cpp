@@ -1,6 +1,6 @@
 #include "clipper_ops.hpp"
 
-#include "../clipper_paths.hpp"
+#include "../geometry/clipper_paths.hpp"
 
 namespace popup::sheets {
 

@@ -2,7 +2,7 @@
 // The few polygon set operations the layout needs, on millimetre loops through Clipper.
 #include <vector>
 
-#include "popup/patch.hpp"
+#include "popup/model/patch.hpp"
 
 namespace popup::sheets {
 

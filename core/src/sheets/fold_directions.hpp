@@ -3,7 +3,7 @@
 // the design state (a box's front V at 180°), so the card is sampled on its way closed too.
 #include <vector>
 
-#include "popup/simulate_fold.hpp"
+#include "popup/simulation/simulate_fold.hpp"
 
 namespace popup::sheets {
 

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <tuple>
 
-#include "../polygon_2d.hpp"
+#include "../geometry/polygon_2d.hpp"
 #include "clipper_ops.hpp"
 
 namespace popup::sheets {

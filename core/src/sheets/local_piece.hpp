@@ -4,8 +4,8 @@
 #include <map>
 #include <vector>
 
-#include "popup/sheet_layout.hpp"
-#include "popup/unfold_piece.hpp"
+#include "popup/sheets/sheet_layout.hpp"
+#include "popup/sheets/unfold_piece.hpp"
 
 namespace popup::sheets {
 

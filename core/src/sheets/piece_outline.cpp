@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "../clipper_paths.hpp"
+#include "../geometry/clipper_paths.hpp"
 
 namespace popup::sheets {
 

@@ -5,7 +5,7 @@
 #include <map>
 #include <sstream>
 
-#include "popup/simulate_fold.hpp"
+#include "popup/simulation/simulate_fold.hpp"
 
 namespace popup::sheets {
 

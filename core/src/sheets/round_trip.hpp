@@ -1,8 +1,8 @@
 #pragma once
 #include <vector>
 
-#include "popup/sheet_layout.hpp"
-#include "popup/simulate_fold.hpp"
+#include "popup/sheets/sheet_layout.hpp"
+#include "popup/simulation/simulate_fold.hpp"
 
 namespace popup::sheets {
 

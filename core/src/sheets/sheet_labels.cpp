@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "../polygon_2d.hpp"
+#include "../geometry/polygon_2d.hpp"
 
 namespace popup::sheets {
 

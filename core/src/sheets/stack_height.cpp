@@ -1,6 +1,6 @@
 #include "stack_height.hpp"
 
-#include "../polygon_2d.hpp"
+#include "../geometry/polygon_2d.hpp"
 
 namespace popup::sheets {
 

@@ -1,7 +1,7 @@
 #pragma once
 #include <vector>
 
-#include "popup/sheet_layout.hpp"
+#include "popup/sheets/sheet_layout.hpp"
 
 namespace popup::sheets {
 

@@ -1,5 +1,5 @@
 #pragma once
-#include "popup/mechanism.hpp"
+#include "popup/mechanisms/mechanism.hpp"
 
 namespace popup {
 

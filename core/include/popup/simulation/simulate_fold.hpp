@@ -1,0 +1,46 @@
+#pragma once
+#include <vector>
+
+#include "popup/model/result.hpp"
+#include "popup/model/scaffold.hpp"
+
+namespace popup {
+
+/// Poses of every patch at one fold angle.
+struct FoldState {
+    double angle = 0.0;          ///< radians
+    std::vector<Pose> poses;     ///< one per scaffold patch, in scaffold order
+    double hinge_residual = 0.0; ///< largest hinge end mismatch or slit end off-plane (mm)
+    double edge_strain = 0.0;    ///< largest relative change of a patch edge length
+};
+
+struct FoldSweep {
+    std::vector<FoldState> states; ///< one per requested angle, in the order requested
+    bool complete = false;         ///< every requested angle was reached
+    double locked_at = -1.0;       ///< angle (radians) where the motion stopped, if it did
+};
+
+struct SimulationOptions {
+    double max_step = 0.0174532925199432958; ///< largest continuation step (1°)
+    double min_step = 1e-7;                  ///< below this the motion is declared locked
+    int max_newton_iterations = 60;
+};
+
+/// Drives the base patches from the design angle to each requested angle (radians, 0..π) by
+/// damped Newton with continuation, keeping glued patches rigid and hinges closed. Folds that are
+/// flat at the design state follow their FoldDirection. Angles the motion cannot reach are left
+/// out and reported.
+Result<FoldSweep> simulate_fold(const Scaffold& scaffold, const std::vector<double>& angles,
+                                const SimulationOptions& options = {});
+
+/// Continues the motion from a state already on the branch (a cached one, say) to each requested
+/// angle: the cheap way to follow a dragged fold angle. From the design state it is
+/// simulate_fold.
+Result<FoldSweep> continue_fold(const Scaffold& scaffold, const FoldState& from,
+                                const std::vector<double>& angles,
+                                const SimulationOptions& options = {});
+
+/// World coordinates of a patch's outer loop in a given state.
+Loop3 posed_outline(const Patch& patch, const Pose& pose);
+
+} // namespace popup

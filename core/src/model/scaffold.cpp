@@ -1,0 +1,236 @@
+#include "popup/model/scaffold.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
+
+#include "../geometry/polygon_2d.hpp"
+
+namespace popup {
+
+const char* to_string(FoldDirection direction)
+{
+    switch (direction) {
+    case FoldDirection::valley:
+        return "valley";
+    case FoldDirection::mountain:
+        return "mountain";
+    default:
+        return "unspecified";
+    }
+}
+
+const char* to_string(JointKind kind)
+{
+    return kind == JointKind::tab ? "tab" : "fold";
+}
+
+const Patch* Scaffold::find_patch(int id) const
+{
+    const int i = patch_index(id);
+    return i < 0 ? nullptr : &patches[i];
+}
+
+int Scaffold::patch_index(int id) const
+{
+    for (size_t i = 0; i < patches.size(); ++i)
+        if (patches[i].id == id)
+            return int(i);
+    return -1;
+}
+
+double Scaffold::size() const
+{
+    Eigen::AlignedBox3d box;
+    for (const Patch& p : patches)
+        for (const Vec3& x : p.outer)
+            box.extend(x);
+    return box.isEmpty() ? 0.0 : box.diagonal().norm();
+}
+
+namespace {
+
+std::string patch_subject(const Patch& p)
+{
+    std::ostringstream s;
+    s << "patch " << p.id;
+    if (!p.name.empty())
+        s << " (" << p.name << ")";
+    return s.str();
+}
+
+bool finite(const Vec3& x)
+{
+    return x.allFinite();
+}
+
+} // namespace
+
+Result<Scaffold> validate_scaffold(Scaffold s)
+{
+    Result<Scaffold> r;
+    auto patch_error = [&r](DiagnosticCode code, const Patch& p, const std::string& what) {
+        r.fail(code, patch_subject(p) + ": " + what, about_patches({p.id}));
+    };
+    if (s.patches.empty()) {
+        r.fail(DiagnosticCode::empty_scaffold,
+               "the scaffold has no patches; it needs at least the two base patches");
+        return r;
+    }
+    bool coordinates_ok = true;
+    for (const Patch& p : s.patches) {
+        if (p.outer.size() < 3) {
+            patch_error(DiagnosticCode::too_few_vertices, p,
+                        "outline has " + std::to_string(p.outer.size()) +
+                            " vertices, needs at least 3");
+            coordinates_ok = false;
+        }
+        bool ok = std::all_of(p.outer.begin(), p.outer.end(), finite);
+        for (const Loop3& h : p.holes)
+            ok = ok && std::all_of(h.begin(), h.end(), finite);
+        if (!ok) {
+            patch_error(DiagnosticCode::non_finite_coordinate, p,
+                        "a vertex has a NaN or infinite coordinate");
+            coordinates_ok = false;
+        }
+    }
+    if (!coordinates_ok)
+        return r;
+
+    const double size = s.size();
+    const double tol = 1e-6 * std::max(size, 1.0);
+    std::set<int> ids;
+    for (Patch& p : s.patches) {
+        if (!ids.insert(p.id).second)
+            patch_error(DiagnosticCode::duplicate_patch_id, p,
+                        "id " + std::to_string(p.id) + " is used twice");
+        const double deviation = p.derive_frame();
+        if (!std::isfinite(deviation) || p.area() <= tol * tol) {
+            patch_error(DiagnosticCode::degenerate_patch, p, "outline encloses no area");
+            continue;
+        }
+        if (deviation > tol) {
+            std::ostringstream m;
+            m << "not planar: a vertex lies " << deviation << " mm off its plane (allowed " << tol
+              << " mm)";
+            patch_error(DiagnosticCode::non_planar_patch, p, m.str());
+        }
+    }
+    auto check_base = [&](int id, const char* which) {
+        if (!s.find_patch(id))
+            r.fail(DiagnosticCode::missing_base_patch,
+                   std::string(which) + " = " + std::to_string(id) + " names no patch",
+                   about_parameter(which));
+    };
+    check_base(s.ground, "ground");
+    check_base(s.backdrop, "backdrop");
+    if (s.ground == s.backdrop && s.find_patch(s.ground))
+        r.fail(DiagnosticCode::missing_base_patch, "ground and backdrop are the same patch",
+               about_parameter("backdrop"));
+    if (!(s.design_angle > 0.0 && s.design_angle <= M_PI))
+        r.fail(DiagnosticCode::bad_design_angle,
+               "design angle " + std::to_string(s.design_angle * 180.0 / M_PI) +
+                   "° must be > 0° and <= 180°",
+               about_parameter("design_angle"));
+    if (!(s.paper_thickness >= 0.0 && s.paper_thickness < 0.05 * std::max(size, 1.0)))
+        r.fail(DiagnosticCode::bad_paper_thickness,
+               "paper thickness " + std::to_string(s.paper_thickness) +
+                   " mm must be >= 0 and below 5% of the model size",
+               about_parameter("paper_thickness"));
+
+    std::set<int> hinge_ids;
+    for (const Hinge& h : s.hinges) {
+        const std::string subject = "hinge " + std::to_string(h.id) + ": ";
+        const DiagnosticSubject joined = about_patches({h.patch_a, h.patch_b});
+        if (!hinge_ids.insert(h.id).second)
+            r.fail(DiagnosticCode::duplicate_hinge_id, subject + "id is used twice", joined);
+        const Patch* a = s.find_patch(h.patch_a);
+        const Patch* b = s.find_patch(h.patch_b);
+        if (!a || !b || h.patch_a == h.patch_b) {
+            r.fail(DiagnosticCode::bad_hinge_patches,
+                   subject + "joins patches " + std::to_string(h.patch_a) + " and " +
+                       std::to_string(h.patch_b) + "; both must exist and differ",
+                   joined);
+            continue;
+        }
+        if (!finite(h.from) || !finite(h.to) || (h.to - h.from).norm() <= tol) {
+            r.fail(DiagnosticCode::degenerate_hinge,
+                   subject + "segment has a non-finite or zero-length end", joined);
+            continue;
+        }
+        for (const Patch* p : {a, b}) {
+            for (const Vec3& x : {h.from, h.to}) {
+                if (!p->contains(x, 10 * tol)) {
+                    std::ostringstream m;
+                    m << subject << "segment end (" << x.x() << ", " << x.y() << ", " << x.z()
+                      << ") is not on " << patch_subject(*p);
+                    r.fail(DiagnosticCode::hinge_off_patch, m.str(), joined);
+                }
+            }
+        }
+    }
+    std::set<int> slit_ids;
+    for (const Slit& sl : s.slits) {
+        const std::string subject = "slit " + std::to_string(sl.id) + ": ";
+        const DiagnosticSubject joined = about_patches({sl.patch_cut, sl.patch_through});
+        if (!slit_ids.insert(sl.id).second)
+            r.fail(DiagnosticCode::duplicate_slit_id, subject + "id is used twice", joined);
+        const Patch* cut = s.find_patch(sl.patch_cut);
+        const Patch* through = s.find_patch(sl.patch_through);
+        if (!cut || !through || sl.patch_cut == sl.patch_through) {
+            r.fail(DiagnosticCode::bad_slit_patches,
+                   subject + "is cut in patch " + std::to_string(sl.patch_cut) + " for patch " +
+                       std::to_string(sl.patch_through) + "; both must exist and differ",
+                   joined);
+            continue;
+        }
+        if (!finite(sl.from) || !finite(sl.to) || (sl.to - sl.from).norm() <= tol) {
+            r.fail(DiagnosticCode::degenerate_slit,
+                   subject + "segment has a non-finite or zero-length end", joined);
+            continue;
+        }
+        for (const Vec3& x : {sl.from, sl.to}) {
+            if (!cut->contains(x, 10 * tol))
+                r.fail(DiagnosticCode::slit_off_patch,
+                       subject + "an end is not on " + patch_subject(*cut), joined);
+            else if (std::abs((x - through->origin).dot(through->normal)) > 10 * tol)
+                r.fail(DiagnosticCode::slit_off_plane,
+                       subject + "an end is not in the plane of " + patch_subject(*through) +
+                           ", which must pass through it",
+                       joined);
+        }
+    }
+    for (size_t i = 0; i < s.glue.size(); ++i) {
+        const Glue& g = s.glue[i];
+        if (!s.find_patch(g.patch_a) || !s.find_patch(g.patch_b) || g.patch_a == g.patch_b)
+            r.fail(DiagnosticCode::bad_glue_patches,
+                   "glue[" + std::to_string(i) + "]: joins patches " + std::to_string(g.patch_a) +
+                       " and " + std::to_string(g.patch_b) + "; both must exist and differ",
+                   about_patches({g.patch_a, g.patch_b}));
+    }
+    r.value = std::move(s);
+    return r;
+}
+
+namespace {
+// The ground turns about the central fold (the y axis) by half the change of the fold angle.
+Pose base_pose(double half_turn)
+{
+    Pose p;
+    p.rotation = axis_angle(Vec3::UnitY(), half_turn);
+    return p;
+}
+} // namespace
+
+Pose ground_pose(const Scaffold& scaffold, double theta)
+{
+    return base_pose(0.5 * (theta - scaffold.design_angle));
+}
+
+Pose backdrop_pose(const Scaffold& scaffold, double theta)
+{
+    return base_pose(-0.5 * (theta - scaffold.design_angle));
+}
+
+} // namespace popup

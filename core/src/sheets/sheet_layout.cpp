@@ -1,0 +1,365 @@
+#include "popup/sheets/sheet_layout.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <sstream>
+
+#include "assembly_order.hpp"
+#include "clipper_ops.hpp"
+#include "fold_directions.hpp"
+#include "glue_tabs.hpp"
+#include "local_piece.hpp"
+#include "piece_outline.hpp"
+#include "popup/sheets/pieces.hpp"
+#include "popup/simulation/simulate_fold.hpp"
+#include "round_trip.hpp"
+#include "sheet_labels.hpp"
+#include "stack_height.hpp"
+
+namespace popup {
+
+using namespace sheets;
+
+namespace {
+
+std::string number(double value)
+{
+    std::ostringstream s;
+    s << value;
+    return s.str();
+}
+
+void check_range(Diagnostics& errors, const std::string& name, double value, double low,
+                 double high, const std::string& range, bool low_open = false)
+{
+    const bool below = low_open ? !(value > low) : !(value >= low);
+    if (below || !(value <= high))
+        errors.push_back(Diagnostic::error(DiagnosticCode::bad_option,
+                                           name + " = " + number(value) + ", must be " + range,
+                                           about_parameter(name)));
+}
+
+// Quarter turns are exact, so placed creases stay exactly on the placed patch edges.
+Mat3 quarter_turn(double degrees)
+{
+    const double c = std::round(std::cos(degrees * M_PI / 180.0) * 1e12) / 1e12;
+    const double s = std::round(std::sin(degrees * M_PI / 180.0) * 1e12) / 1e12;
+    Mat3 r;
+    r << c, -s, 0, s, c, 0, 0, 0, 1;
+    return r;
+}
+
+struct SheetPlacement {
+    Mat3 rotation;
+    Vec2 translation;
+    Vec2 operator()(const Vec2& p) const
+    {
+        return rotation.topLeftCorner<2, 2>() * p + translation;
+    }
+    Loop2 operator()(const Loop2& loop) const
+    {
+        Loop2 out;
+        for (const Vec2& p : loop)
+            out.push_back((*this)(p));
+        return out;
+    }
+    std::vector<Region> operator()(const std::vector<Region>& regions) const
+    {
+        std::vector<Region> out;
+        for (const Region& r : regions) {
+            Region placed{(*this)(r.outer), {}};
+            for (const Loop2& h : r.holes)
+                placed.holes.push_back((*this)(h));
+            out.push_back(placed);
+        }
+        return out;
+    }
+};
+
+double loop_length(const Loop2& loop)
+{
+    double length = 0.0;
+    for (size_t i = 0; i < loop.size(); ++i)
+        length += (loop[(i + 1) % loop.size()] - loop[i]).norm();
+    return length;
+}
+
+void classify_folds(const Scaffold& s, LocalPiece& piece, const BendSamples& bends,
+                    Diagnostics& diagnostics)
+{
+    for (size_t i = 0; i < piece.flat.folds.size(); ++i) {
+        const Hinge& h = *std::find_if(s.hinges.begin(), s.hinges.end(),
+                                       [&](const Hinge& x) { return x.id == piece.flat.folds[i]; });
+        const Vec3 printed = piece.printed_normal(s, h.patch_a);
+        bool bent = false;
+        FoldDirection direction =
+            bend_direction(s, bends, h.patch_a, printed, h.patch_b, h.from, bent);
+        if (!bent) {
+            // Flat all the way: the design's own word, turned to the printed side.
+            direction = h.direction;
+            const bool flipped = printed.dot(s.find_patch(h.patch_a)->normal) < 0;
+            if (direction == FoldDirection::unspecified) {
+                direction = FoldDirection::valley;
+                diagnostics.push_back(
+                    Diagnostic::warning(DiagnosticCode::flat_fold,
+                                        "hinge " + std::to_string(h.id) +
+                                            " never bends and has no direction: drawn as a valley",
+                                        about_patches({h.patch_a, h.patch_b})));
+            } else if (flipped) {
+                direction = direction == FoldDirection::valley ? FoldDirection::mountain
+                                                               : FoldDirection::valley;
+            }
+        }
+        const auto& line = piece.flat.fold_lines[i];
+        piece.folds.push_back({h.id, line[0], line[1], direction, JointKind::fold});
+    }
+}
+
+// From the design angle to closed in `count` even steps, plus the fold-direction samples
+// (150°, 90°, 30°) where they fall between: every fold shows its bend in one of them.
+std::vector<double> sweep_angles(const Scaffold& s, int count)
+{
+    std::vector<double> angles;
+    for (int k = 0; k < count; ++k)
+        angles.push_back(s.design_angle * (1.0 - double(k) / (count - 1)));
+    for (double degrees : {150.0, 90.0, 30.0})
+        angles.push_back(degrees * M_PI / 180.0);
+    std::sort(angles.begin(), angles.end(), std::greater<double>());
+    angles.erase(std::unique(angles.begin(), angles.end(),
+                             [](double a, double b) { return std::abs(a - b) < 1e-9; }),
+                 angles.end());
+    return angles;
+}
+
+// Paper cannot overlap itself on the sheet: such a piece must be split at a tab joint.
+void report_self_overlap(const Scaffold& s, const LocalPiece& piece, Diagnostics& diagnostics)
+{
+    const auto& ids = piece.flat.patches;
+    for (size_t i = 0; i < ids.size(); ++i)
+        for (size_t j = i + 1; j < ids.size(); ++j) {
+            const double area = overlap_area({piece.flat.outlines[i]}, {piece.flat.outlines[j]});
+            if (area > 1e-4)
+                diagnostics.push_back(Diagnostic::error(
+                    DiagnosticCode::piece_overlaps_itself,
+                    "laid flat, patches " + std::to_string(ids[i]) + " (" +
+                        s.find_patch(ids[i])->name + ") and " + std::to_string(ids[j]) + " (" +
+                        s.find_patch(ids[j])->name + ") overlap by " + number(area) +
+                        " mm²: make one of their folds a tab joint",
+                    about_patches({ids[i], ids[j]})));
+        }
+}
+
+std::string assembly_text(const SheetSet& set, const SheetPiece& piece,
+                          const std::vector<AssemblyJoin>& joins)
+{
+    std::ostringstream t;
+    t << "Glue " << piece.id << ":";
+    for (size_t j = 0; j < joins.size(); ++j)
+        t << (j ? ";" : "") << " tab " << joins[j].code << " of "
+          << set.pieces[joins[j].tab_piece].id << " onto area " << joins[j].code << " on the "
+          << (joins[j].front ? "front" : "back") << " of " << set.pieces[joins[j].target_piece].id;
+    t << ".";
+    return t.str();
+}
+
+} // namespace
+
+const char* to_string(PrintedSide side)
+{
+    return side == PrintedSide::back ? "back" : "front";
+}
+
+Diagnostics check_sheet_options(const SheetOptions& o)
+{
+    Diagnostics e;
+    check_range(e, "kerf", o.kerf, 0.0, 2.0, "0 to 2 mm");
+    check_range(e, "min_gap", o.min_gap, 0.0, 50.0, "0 to 50 mm");
+    check_range(e, "spacing", o.nest.spacing, o.kerf + o.min_gap, 100.0,
+                "at least kerf + min_gap = " + number(o.kerf + o.min_gap) + " mm, at most 100 mm");
+    check_range(e, "margin", o.nest.margin, 0.0, 100.0, "0 to 100 mm");
+    check_range(e, "tab_width", o.tab_width, 0.0, 50.0, "more than 0, at most 50 mm", true);
+    check_range(e, "tab_angle", o.tab_angle, 0.0, 90.0, "more than 0, at most 90°", true);
+    check_range(e, "min_tab_width", o.min_tab_width, 0.0, o.tab_width,
+                "more than 0, at most tab_width = " + number(o.tab_width) + " mm", true);
+    check_range(e, "min_feature", o.min_feature, 0.0, 50.0, "0 to 50 mm");
+    check_range(e, "min_corner_angle", o.min_corner_angle, 0.0, 90.0, "0 to 90°");
+    check_range(e, "round_trip_angles", o.round_trip_angles, 2, 361, "2 to 361");
+    return e;
+}
+
+Result<SheetSet> layout_sheets(const Scaffold& input, const SheetOptions& options)
+{
+    Result<SheetSet> r;
+    r.diagnostics = check_sheet_options(options);
+    if (!r.diagnostics.empty()) {
+        r.ok = false;
+        return r;
+    }
+    Result<Scaffold> checked = validate_scaffold(input);
+    if (!checked.ok) {
+        r.fail_with(checked.diagnostics);
+        return r;
+    }
+    const Scaffold& s = checked.value;
+    SheetSet& set = r.value;
+    set.options = options;
+    set.card_size = s.size();
+    set.paper_thickness = s.paper_thickness;
+    auto& notes = set.diagnostics;
+
+    // Pieces in assembly order, each laid flat in its own frame.
+    const std::vector<std::vector<int>> groups = cut_pieces(s);
+    const std::vector<int> order = assembly_order(s, groups, notes);
+    std::vector<LocalPiece> pieces;
+    std::map<int, int> position;
+    for (const auto& [id, side] : options.printed_sides) {
+        const bool known = id.size() > 1 && id[0] == 'P' &&
+                           id.find_first_not_of("0123456789", 1) == std::string::npos &&
+                           std::stoul(id.substr(1)) >= 1 &&
+                           std::stoul(id.substr(1)) <= order.size();
+        if (!known) {
+            r.fail(DiagnosticCode::bad_option,
+                   "printed side of " + id + ": there is no such piece; the pieces are P1 to P" +
+                       std::to_string(order.size()),
+                   about_parameter("printed_sides"));
+            return r;
+        }
+    }
+    for (int g : order) {
+        const auto side = options.printed_sides.find("P" + std::to_string(pieces.size() + 1));
+        const bool back = side != options.printed_sides.end() && side->second == PrintedSide::back;
+        Result<LocalPiece> flat = lay_flat(s, groups[g], 1e-6 * std::max(set.card_size, 1.0), back);
+        if (!flat.ok) {
+            r.fail_with(flat.diagnostics);
+            return r;
+        }
+        report_self_overlap(s, flat.value, notes);
+        for (int id : groups[g])
+            position[id] = int(pieces.size());
+        pieces.push_back(std::move(flat.value));
+    }
+    // One sweep of the design serves the fold directions, the round trip and the stack height.
+    const std::vector<double> angles = sweep_angles(s, options.round_trip_angles);
+    const Result<FoldSweep> designed = simulate_fold(s, angles);
+    // A card whose fold never completes cannot be assembled into one that closes: an error here,
+    // where the simulator alone only warns.
+    for (const Diagnostic& d : designed.diagnostics)
+        if (d.code == DiagnosticCode::motion_locked)
+            notes.push_back(Diagnostic::error(d.code, "the fold never completes: " + d.message,
+                                              {d.patches, d.parameter, d.angle_deg}));
+    const BendSamples bends = sample_bends(s, designed.value.states);
+    for (LocalPiece& piece : pieces)
+        classify_folds(s, piece, bends, notes);
+    add_glue_tabs(s, pieces, position, bends, options, notes);
+    for (const Glue& g : s.glue)
+        if (position.at(g.patch_a) != position.at(g.patch_b))
+            notes.push_back(Diagnostic::warning(
+                DiagnosticCode::glue_without_tab,
+                "patches " + std::to_string(g.patch_a) + " and " + std::to_string(g.patch_b) +
+                    " are glued face to face: no tab is drawn for them",
+                about_patches({g.patch_a, g.patch_b})));
+    std::vector<NestShape> shapes;
+    for (size_t k = 0; k < pieces.size(); ++k) {
+        LocalPiece& piece = pieces[k];
+        const std::string id = "P" + std::to_string(k + 1);
+        add_slit_slots(s, piece);
+        cut_outline(piece, options.kerf);
+        if (piece.cut_nominal.size() > 1)
+            notes.push_back(Diagnostic::error(
+                DiagnosticCode::piece_falls_apart,
+                id + " falls apart into " + std::to_string(piece.cut_nominal.size()) +
+                    " parts when cut: a slit or hole crosses it from edge to edge",
+                about_patches(piece.flat.patches)));
+        check_openings_survive_kerf(piece, id, options.kerf, notes);
+        check_die_cutting(piece, id, options, notes);
+        add_labels(piece, id, options.fold_hints);
+        const Region* largest = &piece.cut.front();
+        for (const Region& region : piece.cut)
+            if (std::abs(loop_area(region.outer)) > std::abs(loop_area(largest->outer)))
+                largest = &region;
+        shapes.push_back({"piece " + id, largest->outer, largest->holes});
+    }
+
+    Result<Nesting> nesting = nest_shapes(shapes, options.nest);
+    if (!nesting.ok) {
+        r.fail_with(nesting.diagnostics);
+        return r;
+    }
+    set.sheet_count = nesting.value.sheet_count;
+    const Result<Nesting> shelves = shelf_pack(shapes, options.nest);
+    set.shelf_sheet_count = shelves.ok ? shelves.value.sheet_count : 0;
+    std::vector<Pose> to_sheet(s.patches.size());
+    for (size_t k = 0; k < pieces.size(); ++k) {
+        const LocalPiece& local = pieces[k];
+        const Placement& at = nesting.value.placements[k];
+        const SheetPlacement place{quarter_turn(at.rotation_deg), at.translation};
+        SheetPiece piece;
+        piece.id = "P" + std::to_string(k + 1);
+        piece.printed_side = local.printed_back ? PrintedSide::back : PrintedSide::front;
+        piece.sheet = at.sheet;
+        piece.rotation = at.rotation_deg;
+        const Patch& root = *s.find_patch(local.flat.patches.front());
+        // Design state → the root's plane → its 2D frame (z up = printed side) → the sheet.
+        Pose frame;
+        frame.rotation.row(0) = root.u.transpose();
+        const double turned = local.printed_back ? -1.0 : 1.0; // turned over about u
+        frame.rotation.row(1) = turned * root.v.transpose();
+        frame.rotation.row(2) = turned * root.normal.transpose();
+        frame.translation = -(frame.rotation * root.origin);
+        const Pose onto{place.rotation, Vec3(at.translation.x(), at.translation.y(), 0.0)};
+        for (size_t i = 0; i < local.flat.patches.size(); ++i) {
+            const int id = local.flat.patches[i];
+            FlatPatch fp{id, s.find_patch(id)->name, place(local.flat.outlines[i]), {}};
+            for (const Loop2& h : local.flat.holes[i])
+                fp.holes.push_back(place(h));
+            piece.patches.push_back(std::move(fp));
+            to_sheet[s.patch_index(id)] = local.flat.unfold[i].then(frame).then(onto);
+        }
+        piece.cut = place(local.cut);
+        piece.cut_nominal = place(local.cut_nominal);
+        for (FoldLine f : local.folds) {
+            f.from = place(f.from);
+            f.to = place(f.to);
+            piece.folds.push_back(f);
+        }
+        for (GlueTab t : local.tabs) {
+            t.polygon = place(t.polygon);
+            piece.tabs.push_back(t);
+        }
+        for (GlueArea g : local.glue) {
+            g.polygon = place(g.polygon);
+            piece.glue.push_back(g);
+        }
+        for (SheetLabel l : local.labels) {
+            l.position = place(l.position);
+            l.angle = upright(l.angle + at.rotation_deg);
+            piece.labels.push_back(l);
+        }
+        for (const Region& region : piece.cut) {
+            set.cut_length += loop_length(region.outer);
+            for (const Loop2& h : region.holes)
+                set.cut_length += loop_length(h);
+        }
+        set.pieces.push_back(std::move(piece));
+    }
+    for (size_t k = 1; k < set.pieces.size(); ++k) {
+        AssemblyStep step{int(k), {}, {}};
+        for (const GlueTab& t : set.pieces[k].tabs)
+            if (size_t(t.target_piece) < k)
+                step.joins.push_back({t.code, int(k), t.target_piece, t.front});
+        for (const GlueArea& g : set.pieces[k].glue)
+            if (size_t(g.tab_piece) < k)
+                step.joins.push_back({g.code, g.tab_piece, int(k), g.front});
+        step.text = assembly_text(set, set.pieces[k], step.joins);
+        set.assembly.push_back(std::move(step));
+    }
+    set.round_trip = round_trip(s, set, to_sheet, designed, angles, notes);
+    const auto& states = designed.value.states;
+    if (designed.ok && !states.empty() && states.back().angle == 0.0)
+        set.stack_height = stack_height(s, set, to_sheet, states.back().poses);
+    return r;
+}
+
+} // namespace popup

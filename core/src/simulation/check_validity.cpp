@@ -1,0 +1,343 @@
+#include "popup/simulation/check_validity.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "../geometry/polygon_2d.hpp"
+#include "body_graph.hpp"
+#include "crossing_test.hpp"
+#include "fold_solver.hpp"
+#include "free_motion.hpp"
+
+namespace popup {
+
+namespace {
+
+std::string deg(double radians)
+{
+    std::ostringstream s;
+    s.setf(std::ios::fixed);
+    s.precision(2);
+    s << radians * 180.0 / M_PI << "°";
+    return s.str();
+}
+
+std::string mm(double value)
+{
+    std::ostringstream s;
+    s.precision(4);
+    s << value << " mm";
+    return s.str();
+}
+
+std::string describe(const Patch& p)
+{
+    return "patch " + std::to_string(p.id) + (p.name.empty() ? "" : " (" + p.name + ")");
+}
+
+/// Everything the checks share: the validated scaffold, its bodies, the solver and the meshes.
+struct Checker {
+    const Scaffold& s;
+    const BodyGraph& graph;
+    const FoldSolver& solver;
+    const std::vector<PatchMesh>& meshes;
+    double tolerance;
+    double clearance;
+
+    // State at `theta` between two solved states, by interpolation and correction.
+    bool solve_between(const FoldState& a, const FoldState& b, double theta, FoldState& out) const
+    {
+        const double t = (theta - a.angle) / (b.angle - a.angle);
+        Configuration qa = solver.configuration(a);
+        const Configuration qb = solver.configuration(b);
+        for (int body = 0; body < graph.body_count; ++body) {
+            const Mat3 turn = qb[body].rotation * qa[body].rotation.transpose();
+            qa[body].rotation = rotation_exp(t * rotation_log(turn)) * qa[body].rotation;
+            qa[body].position += t * (qb[body].position - qa[body].position);
+        }
+        solver.drive_base(theta, qa);
+        for (size_t c = 0; c < graph.components.size(); ++c)
+            if (!solver.correct(int(c), qa, {}, 60))
+                return false;
+        out = solver.state(theta, qa);
+        return true;
+    }
+
+    double depth(const FoldState& st, int i, int j) const
+    {
+        return crossing_depth(meshes, s, st, i, j, tolerance, clearance);
+    }
+
+    // Angle where the pair starts crossing, between a state without and one with a crossing.
+    double onset(FoldState free, FoldState crossing, int i, int j, int levels) const
+    {
+        for (int level = 0; level < levels; ++level) {
+            FoldState mid;
+            if (!solve_between(free, crossing, 0.5 * (free.angle + crossing.angle), mid))
+                break;
+            (depth(mid, i, j) > 0.0 ? crossing : free) = mid;
+        }
+        return crossing.angle;
+    }
+
+    // A vertex of patch i that changes side of patch j's plane between two states, at a point
+    // inside patch j: the patch passed through. Returns how far the vertex went, or 0.
+    double passes_through(const FoldState& a, const FoldState& b, int i, int j, int levels) const
+    {
+        const Vec3 na = a.poses[j].rotation * s.patches[j].normal;
+        const Vec3 nb = b.poses[j].rotation * s.patches[j].normal;
+        const Vec3 oa = a.poses[j].apply(s.patches[j].origin);
+        const Vec3 ob = b.poses[j].apply(s.patches[j].origin);
+        for (size_t k = 0; k < meshes[i].vertices.size(); ++k) {
+            const Vec3& x = meshes[i].vertices[k];
+            const double da = (a.poses[i].apply(x) - oa).dot(na);
+            const double db = (b.poses[i].apply(x) - ob).dot(nb);
+            if (!((da > tolerance && db < -tolerance) || (da < -tolerance && db > tolerance)))
+                continue;
+            FoldState lo = a, hi = b;
+            double dlo = da, dhi = db;
+            for (int level = 0; level < levels; ++level) {
+                FoldState mid;
+                if (!solve_between(lo, hi, 0.5 * (lo.angle + hi.angle), mid))
+                    break;
+                const double dm = side_of_plane(meshes, s, mid, i, j)[k];
+                if ((dm > 0.0) == (dlo > 0.0)) {
+                    lo = mid;
+                    dlo = dm;
+                } else {
+                    hi = mid;
+                    dhi = dm;
+                }
+            }
+            // Where the vertex meets the plane, in patch j's own frame.
+            const Vec3 x_lo = lo.poses[i].apply(meshes[i].vertices[k]);
+            const Vec3 x_hi = hi.poses[i].apply(meshes[i].vertices[k]);
+            const Vec3 hit = x_lo + (x_hi - x_lo) * (dlo / (dlo - dhi));
+            const Pose& pj = lo.poses[j];
+            const Vec2 q = s.patches[j].to_local(pj.rotation.transpose() * (hit - pj.translation));
+            if (point_in_polygon_or_near(s.patches[j].outer_local(), q, -tolerance))
+                return std::max(std::abs(da), std::abs(db));
+        }
+        return 0.0;
+    }
+};
+
+struct PairFinding {
+    double angle = 0.0;
+    double depth = 0.0;
+};
+
+} // namespace
+
+std::vector<Crossing> find_crossings(const Scaffold& input, const FoldState& state,
+                                     double tolerance)
+{
+    Result<Scaffold> checked = validate_scaffold(input);
+    if (!checked.ok)
+        throw std::invalid_argument("find_crossings: invalid scaffold: " +
+                                    checked.diagnostics.front().message);
+    const Scaffold& s = checked.value;
+    if (state.poses.size() != s.patches.size())
+        throw std::invalid_argument("find_crossings: the state has " +
+                                    std::to_string(state.poses.size()) + " poses for " +
+                                    std::to_string(s.patches.size()) + " patches");
+    Result<BodyGraph> graph = build_body_graph(s);
+    if (!graph.ok)
+        throw std::invalid_argument("find_crossings: " + graph.diagnostics.front().message);
+    const std::vector<PatchMesh> meshes = mesh_patches(s);
+    std::vector<Crossing> out;
+    for (const auto& [i, j] :
+         candidate_pairs(meshes, graph.value.body_of_patch, state, tolerance)) {
+        const double d = crossing_depth(meshes, s, state, i, j, tolerance, 0.0);
+        if (d > 0.0)
+            out.push_back({s.patches[i].id, s.patches[j].id, state.angle, d});
+    }
+    return out;
+}
+
+ValidityReport check_validity(const Scaffold& input, const ValidityOptions& options)
+{
+    ValidityReport report;
+    Result<Scaffold> checked = validate_scaffold(input);
+    if (!checked.ok) {
+        report.diagnostics = checked.diagnostics;
+        return report;
+    }
+    const Scaffold& s = checked.value;
+    const double size = s.size();
+    report.model_size = size;
+    auto add = [&](DiagnosticCode code, std::string message, DiagnosticSubject about = {}) {
+        report.diagnostics.push_back(Diagnostic::error(code, std::move(message), std::move(about)));
+    };
+    if (options.samples < 2 || options.samples > 100000 || !(options.clearance >= 0.0) ||
+        options.refine_depth < 0 || options.refine_depth > 30) {
+        add(DiagnosticCode::bad_option,
+            "samples must be 2..100000, clearance >= 0 mm and refine_depth 0..30 (got " +
+                std::to_string(options.samples) + ", " + std::to_string(options.clearance) + ", " +
+                std::to_string(options.refine_depth) + ")");
+        return report;
+    }
+    Result<BodyGraph> graph = build_body_graph(s);
+    if (!graph.ok) {
+        report.diagnostics = graph.diagnostics;
+        return report;
+    }
+
+    // Sampled angles from open to closed, with the design state among them.
+    std::vector<double> angles;
+    for (int k = options.samples - 1; k >= 0; --k)
+        angles.push_back(M_PI * k / (options.samples - 1));
+    if (std::none_of(angles.begin(), angles.end(),
+                     [&](double a) { return std::abs(a - s.design_angle) < 1e-12; })) {
+        angles.push_back(s.design_angle);
+        std::sort(angles.rbegin(), angles.rend());
+    }
+    const Result<FoldSweep> sim = simulate_fold(s, angles);
+    for (const Diagnostic& d : sim.diagnostics)
+        report.diagnostics.push_back(d);
+    const FoldSweep& sweep = sim.value;
+    report.locked_at = sweep.locked_at;
+
+    // Foldable: the motion exists from 180° to 0°, stays rigid, and ends flat.
+    for (const FoldState& st : sweep.states) {
+        report.max_hinge_residual = std::max(report.max_hinge_residual, st.hinge_residual);
+        report.max_edge_strain = std::max(report.max_edge_strain, st.edge_strain);
+    }
+    const FoldState* closed = nullptr;
+    for (const FoldState& st : sweep.states)
+        if (st.angle == 0.0)
+            closed = &st;
+    const double flat_tolerance = 1e-6 * size;
+    if (closed) {
+        int worst = -1;
+        for (size_t i = 0; i < s.patches.size(); ++i)
+            for (const Vec3& x : posed_outline(s.patches[i], closed->poses[i]))
+                if (std::abs(x.x()) > report.flatness_at_zero) {
+                    report.flatness_at_zero = std::abs(x.x());
+                    worst = int(i);
+                }
+        if (report.flatness_at_zero > flat_tolerance)
+            add(DiagnosticCode::not_flat_when_closed,
+                describe(s.patches[worst]) + " stands " + mm(report.flatness_at_zero) +
+                    " off the page plane when the card is closed (allowed " + mm(flat_tolerance) +
+                    ")",
+                about_patches({s.patches[worst].id}, 0.0));
+    }
+    const bool branch_ok =
+        std::none_of(sim.diagnostics.begin(), sim.diagnostics.end(), [](const Diagnostic& d) {
+            return d.code == DiagnosticCode::branch_not_followed;
+        });
+    report.foldable = sim.ok && sweep.complete && closed &&
+                      report.flatness_at_zero <= flat_tolerance &&
+                      report.max_hinge_residual <= 1e-9 * size && branch_ok;
+    if (!sim.ok)
+        return report;
+
+    const FoldSolver solver(s, graph.value, SimulationOptions{});
+
+    // Stable: no free motion with the base held still, at every sampled angle strictly between.
+    int unstable_samples = 0;
+    for (const FoldState& st : sweep.states) {
+        if (st.angle <= 0.0 || st.angle >= M_PI)
+            continue;
+        const FreeMotion motion = free_motion_of(s, solver, solver.configuration(st));
+        if (motion.dimension == 0)
+            continue;
+        if (unstable_samples++ == 0) {
+            std::ostringstream names;
+            for (size_t k = 0; k < motion.moving_patches.size(); ++k)
+                names << (k ? ", " : "") << describe(*s.find_patch(motion.moving_patches[k]));
+            add(DiagnosticCode::unstable,
+                std::to_string(motion.dimension) + " free motion(s) besides the fold angle at " +
+                    deg(st.angle) + ": " + names.str() + " can move while the base is held still",
+                about_patches(motion.moving_patches, st.angle * 180.0 / M_PI));
+        }
+    }
+    report.stable = unstable_samples == 0 && !sweep.states.empty();
+
+    // Intersection-free: no transversal cut at a sample and no pass-through between samples.
+    const std::vector<PatchMesh> meshes = mesh_patches(s);
+    const Checker checker{s, graph.value, solver, meshes, flat_tolerance, options.clearance};
+    std::map<std::pair<int, int>, PairFinding> findings;
+    std::map<std::pair<int, int>, bool> was_crossing;
+    const FoldState* previous = nullptr;
+    for (const FoldState& st : sweep.states) {
+        const double margin = flat_tolerance + options.clearance;
+        for (const auto& [i, j] : candidate_pairs(meshes, graph.value.body_of_patch, st, margin)) {
+            const std::pair<int, int> key{i, j};
+            double depth = checker.depth(st, i, j);
+            double at = st.angle;
+            if (depth > 0.0 && previous && !was_crossing[key])
+                at = checker.onset(*previous, st, i, j, options.refine_depth);
+            else if (depth <= 0.0 && previous) {
+                const double through =
+                    std::max(checker.passes_through(*previous, st, i, j, options.refine_depth),
+                             checker.passes_through(*previous, st, j, i, options.refine_depth));
+                if (through > 0.0) {
+                    depth = through;
+                    at = 0.5 * (previous->angle + st.angle);
+                }
+            }
+            was_crossing[key] = depth > 0.0;
+            if (depth <= 0.0)
+                continue;
+            auto [it, fresh] = findings.try_emplace(key, PairFinding{at, depth});
+            if (!fresh)
+                it->second.depth = std::max(it->second.depth, depth);
+        }
+        previous = &st;
+    }
+    for (const auto& [key, f] : findings) {
+        const Patch& a = s.patches[key.first];
+        const Patch& b = s.patches[key.second];
+        report.crossings.push_back({a.id, b.id, f.angle, f.depth});
+        add(DiagnosticCode::intersection,
+            describe(a) + " passes through " + describe(b) + " from " + deg(f.angle) +
+                " (deepest " + mm(f.depth) + ")",
+            about_patches({a.id, b.id}, f.angle * 180.0 / M_PI));
+    }
+    report.intersection_free = findings.empty() && !sweep.states.empty();
+
+    // Enclosed: when closed, every patch lies inside the base patches' outline.
+    if (closed) {
+        std::vector<Loop2> base;
+        for (int id : {s.ground, s.backdrop}) {
+            const int i = s.patch_index(id);
+            Loop2 loop;
+            for (const Vec3& x : posed_outline(s.patches[i], closed->poses[i]))
+                loop.push_back({x.y(), x.z()});
+            base.push_back(loop);
+        }
+        report.enclosed = true;
+        for (size_t i = 0; i < s.patches.size(); ++i) {
+            double worst = 0.0;
+            Vec2 where = Vec2::Zero();
+            for (const Vec3& x : posed_outline(s.patches[i], closed->poses[i])) {
+                const Vec2 q(x.y(), x.z());
+                if (point_in_polygon(base[0], q) || point_in_polygon(base[1], q))
+                    continue;
+                const double out =
+                    std::min(distance_to_boundary(base[0], q), distance_to_boundary(base[1], q));
+                if (out > worst) {
+                    worst = out;
+                    where = q;
+                }
+            }
+            if (worst > flat_tolerance) {
+                report.enclosed = false;
+                std::ostringstream m;
+                m << describe(s.patches[i]) << " sticks out of the closed card by " << mm(worst)
+                  << " at y = " << where.x() << " mm, z = " << where.y() << " mm";
+                add(DiagnosticCode::not_enclosed, m.str(), about_patches({s.patches[i].id}, 0.0));
+            }
+        }
+    } else {
+        add(DiagnosticCode::enclosure_unknown,
+            "the card never closes, so enclosure cannot be judged");
+    }
+    return report;
+}
+
+} // namespace popup

@@ -1,0 +1,183 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "popup/simulation/check_validity.hpp"
+#include "test_support.hpp"
+#include "validity_cases.hpp"
+
+using namespace popup;
+
+namespace {
+bool has_code(const ValidityReport& r, const std::string& code)
+{
+    for (const Diagnostic& d : r.diagnostics)
+        if (to_string(d.code) == code)
+            return true;
+    return false;
+}
+
+const Diagnostic* find_code(const ValidityReport& r, const std::string& code)
+{
+    for (const Diagnostic& d : r.diagnostics)
+        if (to_string(d.code) == code)
+            return &d;
+    return nullptr;
+}
+} // namespace
+
+TEST(CheckValidity, TentFoldIsValidWithTinyResiduals)
+{
+    const ValidityReport r = check_validity(fixtures::valid_tent_card());
+    EXPECT_TRUE(r.foldable);
+    EXPECT_TRUE(r.stable);
+    EXPECT_TRUE(r.intersection_free);
+    EXPECT_TRUE(r.enclosed);
+    EXPECT_TRUE(r.diagnostics.empty()) << r.diagnostics.front().message;
+    EXPECT_LE(r.max_hinge_residual, 1e-9 * r.model_size);
+    EXPECT_LE(r.max_edge_strain, 1e-12);
+    EXPECT_LE(r.flatness_at_zero, 1e-6 * r.model_size);
+}
+
+TEST(CheckValidity, MultiMechanismCardIsValid)
+{
+    const ValidityReport r = check_validity(fixtures::valid_multi_card());
+    EXPECT_TRUE(r.valid()) << (r.diagnostics.empty() ? "" : r.diagnostics.front().message);
+    EXPECT_TRUE(r.crossings.empty());
+}
+
+TEST(CheckValidity, TentWithShortSlopesIsNotFoldable)
+{
+    const ValidityReport r = check_validity(fixtures::broken_tent_card());
+    EXPECT_FALSE(r.foldable);
+    // It locks opening, where sin(θ/2) = slope / foot = 25/30.
+    EXPECT_NEAR(r.locked_at * 180 / M_PI, 2 * std::asin(25.0 / 30.0) * 180 / M_PI, 0.05);
+    const Diagnostic* d = find_code(r, "motion_locked");
+    ASSERT_NE(d, nullptr);
+    EXPECT_NE(d->message.find("112.9"), std::string::npos) << d->message;
+}
+
+TEST(CheckValidity, FiveBarLoopIsNotStable)
+{
+    const ValidityReport r = check_validity(fixtures::five_bar_card());
+    EXPECT_FALSE(r.stable);
+    const Diagnostic* d = find_code(r, "unstable");
+    ASSERT_NE(d, nullptr);
+    EXPECT_NE(d->message.find("1 free motion"), std::string::npos) << d->message;
+    for (const char* id : {"patch 2", "patch 3", "patch 4"})
+        EXPECT_NE(d->message.find(id), std::string::npos) << d->message;
+    std::vector<int> moving = d->patches;
+    std::sort(moving.begin(), moving.end());
+    EXPECT_EQ(moving, (std::vector<int>{2, 3, 4}));
+    ASSERT_TRUE(d->angle_deg.has_value());
+    EXPECT_GT(*d->angle_deg, 0.0);
+    EXPECT_LT(*d->angle_deg, 180.0);
+}
+
+TEST(CheckValidity, WallsCollidingAt40DegreesAreFound)
+{
+    // The walls' tops meet at exactly 40° (tan(θ/2) = h/d). The onset is bisected between the
+    // last clear sample and the first crossing one: documented precision = step / 2^refine_depth,
+    // and never later than the contact (closing runs towards smaller angles).
+    for (int samples : {181, 361, 91}) {
+        ValidityOptions options;
+        options.samples = samples;
+        const ValidityReport r = check_validity(fixtures::colliding_walls_card(), options);
+        EXPECT_FALSE(r.intersection_free);
+        const Crossing* walls = nullptr;
+        for (const Crossing& c : r.crossings)
+            if (c.patch_a == 2 && c.patch_b == 3)
+                walls = &c;
+        ASSERT_NE(walls, nullptr) << samples;
+        const double precision = 180.0 / (samples - 1) / double(1 << options.refine_depth);
+        const double onset = walls->angle * 180 / M_PI;
+        EXPECT_NEAR(onset, 40.0, precision + 1e-9) << samples;
+        EXPECT_LE(onset, 40.0 + 1e-9) << samples;
+        EXPECT_GT(walls->depth, 1.0);
+        // Nothing crosses before the walls meet.
+        for (const Crossing& c : r.crossings)
+            EXPECT_LE(c.angle * 180 / M_PI, 40.0 + 1e-9);
+    }
+}
+
+TEST(CheckValidity, TentStickingOutOfTheClosedCardIsNotEnclosed)
+{
+    const ValidityReport r = check_validity(fixtures::sticking_out_tent_card());
+    EXPECT_TRUE(r.foldable);
+    EXPECT_TRUE(r.stable);
+    EXPECT_FALSE(r.enclosed);
+    const Diagnostic* d = find_code(r, "not_enclosed");
+    ASSERT_NE(d, nullptr);
+    EXPECT_NE(d->message.find("by 10 mm"), std::string::npos) << d->message;
+}
+
+TEST(CheckValidity, StackedStepFoldIsNotACrossing)
+{
+    // Flat at 180° and at 0°, every patch lies on another: touching, never crossing.
+    Scaffold card = fixtures::make_card(200, 140);
+    fixtures::add_step_fold(card, 50, 40, 30, 20);
+    const ValidityReport r = check_validity(card);
+    EXPECT_TRUE(r.intersection_free);
+    EXPECT_TRUE(r.valid()) << (r.diagnostics.empty() ? "" : r.diagnostics.front().message);
+}
+
+TEST(CheckValidity, BadOptionsAreNamed)
+{
+    ValidityOptions o;
+    o.samples = 1;
+    const ValidityReport r = check_validity(fixtures::valid_tent_card(), o);
+    EXPECT_FALSE(r.valid());
+    EXPECT_TRUE(has_code(r, "bad_option"));
+}
+
+TEST(FindCrossings, ReportsDepthOfTheWalls)
+{
+    const Scaffold s = fixtures::colliding_walls_card();
+    const Result<FoldSweep> sweep = simulate_fold(s, {fixtures::deg(30)});
+    ASSERT_EQ(sweep.value.states.size(), 1u);
+    const auto crossings = find_crossings(s, sweep.value.states[0], 1e-6);
+    ASSERT_FALSE(crossings.empty());
+    // Each wall's top passes the mid-plane by d·sin15° − h·cos15° at 30°.
+    const double d = 50, h = d * std::tan(fixtures::deg(20));
+    const double past = h * std::cos(fixtures::deg(15)) - d * std::sin(fixtures::deg(15));
+    EXPECT_GT(crossings[0].depth, 0.0);
+    EXPECT_LT(crossings[0].depth, 2 * past + 1e-9);
+}
+
+TEST(CheckValidity, ClearanceIgnoresSharedHingesButCatchesNearMisses)
+{
+    ValidityOptions o;
+    o.clearance = 0.5;
+    EXPECT_TRUE(check_validity(fixtures::valid_tent_card(), o).intersection_free);
+    // A short wall on the ground runs into the face of a tall wall on the backdrop; with 5 mm
+    // clearance the verdict comes earlier in the closing, while the gap is still open.
+    Scaffold s = fixtures::make_card(200, 140);
+    const int g = fixtures::add_quad(s, {50, 60, 0}, {50, 120, 0}, {50, 120, 15}, {50, 60, 15});
+    const int b = fixtures::add_quad(s, {-50, 40, 0}, {-50, 40, 40}, {-50, 140, 40}, {-50, 140, 0});
+    s.glue = {{s.ground, g}, {s.backdrop, b}};
+    auto onset = [&](double clearance) {
+        o.clearance = clearance;
+        for (const Crossing& c : check_validity(s, o).crossings)
+            if (c.patch_a == g && c.patch_b == b)
+                return c.angle * 180 / M_PI;
+        return -1.0;
+    };
+    const double touching = onset(0.0);
+    const double near_miss = onset(5.0);
+    EXPECT_GT(touching, 0.0);
+    EXPECT_GT(near_miss, touching + 1.0);
+}
+
+TEST(FreeMotion, NamesTheFiveBarsMovingPatchesAndNoneOfTheTents)
+{
+    const Scaffold loop = fixtures::five_bar_card();
+    const auto open = simulate_fold(loop, {fixtures::deg(120)});
+    ASSERT_EQ(open.value.states.size(), 1u);
+    const FreeMotion m = free_motion(loop, open.value.states[0]);
+    EXPECT_EQ(m.dimension, 1);
+    EXPECT_EQ(m.moving_patches, (std::vector<int>{2, 3, 4}));
+    const Scaffold tent = fixtures::valid_tent_card();
+    const auto state = simulate_fold(tent, {fixtures::deg(120)});
+    EXPECT_EQ(free_motion(tent, state.value.states[0]).dimension, 0);
+    EXPECT_THROW(free_motion(tent, open.value.states[0]), std::invalid_argument);
+}
