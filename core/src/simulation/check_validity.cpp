@@ -186,11 +186,15 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
     }
 
     // Sampled angles from open to closed, with the design state among them.
+    // π·k/(n-1) need not round to π at k = n-1: a sample a hair below the flat design state
+    // would be judged as an open state (stability, crossings) though it is the design state.
+    // Samples within rounding of the design angle are the design angle, exactly.
     std::vector<double> angles;
-    for (int k = options.samples - 1; k >= 0; --k)
-        angles.push_back(M_PI * k / (options.samples - 1));
-    if (std::none_of(angles.begin(), angles.end(),
-                     [&](double a) { return std::abs(a - s.design_angle) < 1e-12; })) {
+    for (int k = options.samples - 1; k >= 0; --k) {
+        const double a = M_PI * k / (options.samples - 1);
+        angles.push_back(std::abs(a - s.design_angle) < 1e-12 ? s.design_angle : a);
+    }
+    if (std::none_of(angles.begin(), angles.end(), [&](double a) { return a == s.design_angle; })) {
         angles.push_back(s.design_angle);
         std::sort(angles.rbegin(), angles.rend());
     }

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "popup/simulation/check_validity.hpp"
+#include "sheet_designs.hpp"
 #include "test_support.hpp"
 #include "validity_cases.hpp"
 
@@ -180,4 +181,20 @@ TEST(FreeMotion, NamesTheFiveBarsMovingPatchesAndNoneOfTheTents)
     const auto state = simulate_fold(tent, {fixtures::deg(120)});
     EXPECT_EQ(free_motion(tent, state.value.states[0]).dimension, 0);
     EXPECT_THROW(free_motion(tent, open.value.states[0]), std::invalid_argument);
+}
+
+TEST(CheckValidity, TheVerdictDoesNotDependOnTheSampleCount)
+{
+    // π·k/(n-1) does not round to π for every n (61 and 121 among them): the sample next to the
+    // flat design state must still be the design state, not an open state a hair below it.
+    for (const fixtures::NamedDesign& d : fixtures::single_mechanism_cards()) {
+        for (int samples : {19, 37, 61, 91, 121, 181, 361}) {
+            ValidityOptions options;
+            options.samples = samples;
+            const ValidityReport r = check_validity(d.scaffold, options);
+            EXPECT_TRUE(r.valid())
+                << d.name << " with " << samples
+                << " samples: " << (r.diagnostics.empty() ? "" : r.diagnostics.front().message);
+        }
+    }
 }
