@@ -58,3 +58,4 @@ template <class T> T unwrap(Result<T> r)
 
 void bind_mechanisms(pybind11::module_& m);
 void bind_sheets(pybind11::module_& m);
+void bind_sheet_set(pybind11::module_& m);

@@ -81,18 +81,12 @@ void bind_sheets(py::module_& m)
     m.def(
         "layout_sheets",
         [](const Scaffold& s, const SheetOptions& o) {
-            std::string json;
-            {
-                py::gil_scoped_release release;
-                Result<SheetSet> r = layout_sheets(s, o);
-                if (!r.ok)
-                    throw bindings::DesignFailure(std::move(r.diagnostics));
-                json = sheet_set_to_json(r.value);
-            }
-            return json;
+            py::gil_scoped_release release;
+            return unwrap(layout_sheets(s, o));
         },
         py::arg("scaffold"), py::arg("options") = SheetOptions{},
-        "Unfolds, tabs, labels, orders, nests and re-folds the card; returns the sheet set as "
-        "JSON text (docs/SHEET_FORMAT.md). Raises DesignError naming a bad option (and its "
+        "Unfolds, tabs, labels, orders, nests and re-folds the card; returns the SheetSet "
+        "(to_json() gives the file format, docs/SHEET_FORMAT.md). Raises DesignError naming a bad "
+        "option (and its "
         "range), a piece too large for the paper, or a piece that cannot lie flat.");
 }

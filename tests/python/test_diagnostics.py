@@ -80,3 +80,40 @@ def test_check_json_names_the_patches_of_the_design(name, code, angle):
     for d in found:
         for i in d["patches"]:
             assert f"patch {i}" in d["message"]
+
+
+def test_the_layout_crosses_the_binding_as_bound_types():
+    import math
+
+    scaffold = popupcore.load_scaffold(
+        os.path.join(SOURCE_DIR, "tests", "data", "mechanisms", "box.json")
+    )
+    options = popupcore.SheetOptions()
+    options.paper = "A3"
+    options.kerf = 0.2
+    sheets = popupcore.layout_sheets(scaffold, options)
+    assert isinstance(sheets, popupcore.SheetSet)
+    assert sheets.options.paper == "A3" and sheets.options.kerf == 0.2
+    data = json.loads(sheets.to_json())  # the file format, written from the same layout
+    assert [p.id for p in sheets.pieces] == [p["id"] for p in data["pieces"]]
+    assert sheets.pieces[0].id == "P1" and sheets.sheet_count == len(data["sheets"])
+    assert math.isclose(sheets.cut_length, data["cut_length"], rel_tol=1e-12)
+    assert sheets.round_trip.ok and sheets.round_trip.max_error <= sheets.round_trip.tolerance
+    for piece, written in zip(sheets.pieces, data["pieces"]):
+        assert piece.printed_side == "front"
+        assert [f.direction for f in piece.folds] == [f["direction"] for f in written["folds"]]
+        assert [t.code for t in piece.tabs] == [t["code"] for t in written["tabs"]]
+        for patch in piece.patches:
+            assert patch.outer.shape[1] == 2 and patch.outer.shape[0] >= 3
+        # Kerf moves every cut line out by half of it: the compensated outline is larger.
+        for cut, nominal in zip(piece.cut, piece.cut_nominal):
+            assert abs(shoelace(cut.outer)) > abs(shoelace(nominal.outer))
+    for d in sheets.diagnostics:
+        assert d.to_dict() in data["diagnostics"]
+
+
+def shoelace(loop):
+    return 0.5 * sum(
+        loop[i][0] * loop[(i + 1) % len(loop)][1] - loop[(i + 1) % len(loop)][0] * loop[i][1]
+        for i in range(len(loop))
+    )

@@ -27,7 +27,7 @@ def layout(scaffold, **options):
     not fit the paper."""
     from popupwb.core import popupcore
 
-    return json.loads(popupcore.layout_sheets(scaffold, core_options(**options)))
+    return json.loads(popupcore.layout_sheets(scaffold, core_options(**options)).to_json())
 
 
 def report(sheet_set, dxf_check=None, not_valid=None):
