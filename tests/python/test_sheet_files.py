@@ -63,6 +63,16 @@ def test_dxf_reads_back_exactly(written):
         assert len(space.query(f"LINE[layer=='{direction.upper()}']")) == wanted
 
 
+def test_dxf_records_its_kerf_and_paper_thickness(tmp_path):
+    design = DESIGNS[0]
+    scaffold = popupcore.load_scaffold(design)
+    for kerf in (0.0, 0.25):
+        paths = export_sheets(layout(scaffold, paper="A3", kerf=kerf), str(tmp_path / str(kerf)))
+        header = dict(ezdxf.readfile(paths["dxf"]).header.custom_vars)
+        assert float(header["PopUpKerf"]) == kerf
+        assert float(header["PopUpPaperThickness"]) == scaffold.paper_thickness
+
+
 def test_report_json(written):
     sheet_set, paths = written
     with open(paths["report"]) as f:

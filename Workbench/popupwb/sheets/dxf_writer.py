@@ -4,6 +4,8 @@ Layers (layer_style.SheetStyle): CUT holds only closed LWPOLYLINEs, one per cut 
 VALLEY one LINE per fold; GLUE the outline of each glue area; LABEL centred TEXT (and, for a
 design the validity check rejects, the NOT VALID stamp of not_valid_stamp.py on every sheet).
 Entities take colour and linetype BYLAYER, so a cutter can map layers (or colours) to operations.
+The header's custom properties record the kerf the CUT lines were written with (PopUpKerf, mm)
+and the paper thickness (PopUpPaperThickness, mm).
 """
 
 import ezdxf
@@ -17,6 +19,8 @@ from .not_valid_stamp import stamp_label
 SHEET_GAP = 20.0  # mm
 INSUNITS_MM = 4
 MEASUREMENT_METRIC = 1
+KERF_PROPERTY = "PopUpKerf"  # mm, in the header's custom properties
+THICKNESS_PROPERTY = "PopUpPaperThickness"  # mm
 
 
 def write_dxf(sheet_set, path, style=None, not_valid=None):
@@ -24,7 +28,7 @@ def write_dxf(sheet_set, path, style=None, not_valid=None):
     `not_valid` (a not_valid_stamp.NotValid) stamps every sheet."""
     sheets = read_sheet_set(sheet_set)
     style = style or SheetStyle()
-    doc = _new_document(style)
+    doc = _new_document(style, sheets)
     pitch = sheets.width + SHEET_GAP
     stamp = _stamp(sheets, not_valid)
     for sheet in sheets.sheets:
@@ -41,7 +45,7 @@ def write_dxf_per_sheet(sheet_set, path, style=None, not_valid=None):
     paths = sheet_file_paths(path, len(sheets.sheets))
     stamp = _stamp(sheets, not_valid)
     for sheet, sheet_path in zip(sheets.sheets, paths):
-        doc = _new_document(style)
+        doc = _new_document(style, sheets)
         _draw_sheet(doc.modelspace(), sheet, style, x_offset=0.0, stamp=stamp)
         doc.saveas(sheet_path)
     return paths
@@ -53,8 +57,12 @@ def _stamp(sheets, not_valid):
     return stamp_label(sheets.width, sheets.height, sheets.margin, not_valid)
 
 
-def _new_document(style):
+def _new_document(style, sheets):
     doc = ezdxf.new("R2010", setup=True, units=INSUNITS_MM)
+    # What a re-reader needs besides the layers: the kerf the CUT lines were offset by (half on
+    # each side), so the nominal outlines can be recovered; CAD programs keep custom properties.
+    doc.header.custom_vars.append(KERF_PROPERTY, repr(sheets.kerf))
+    doc.header.custom_vars.append(THICKNESS_PROPERTY, repr(sheets.paper_thickness))
     doc.header["$INSUNITS"] = INSUNITS_MM
     doc.header["$MEASUREMENT"] = MEASUREMENT_METRIC
     for layer in style.layers():

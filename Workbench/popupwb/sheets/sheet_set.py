@@ -129,6 +129,7 @@ class SheetSet:
     width: float  # mm
     height: float  # mm
     margin: float  # mm
+    kerf: float  # mm, the cut lines' offset is half of it
     paper_thickness: float  # mm
     sheets: Tuple[Sheet, ...]
     cut_length: float  # mm, all cut loops
@@ -301,6 +302,7 @@ def read_sheet_set(data):
         width=paper["width"].number(positive=True),
         height=paper["height"].number(positive=True),
         margin=options["margin"].number(),
+        kerf=options["kerf"].number(),
         paper_thickness=options["paper_thickness"].number(positive=True),
         sheets=_sheets(root, pieces_by_id),
         cut_length=root["cut_length"].number(),
