@@ -96,7 +96,7 @@ def wait_until(condition, timeout_ms=60000):
 
 def mechanisms():
     # The card commands, the task panel, the validity check and the animation.
-    from popupwb import assembly
+    from popupwb import card_scaffold
     from popupwb.commands import animate, check_validity
     from popupwb.taskpanels import mechanism_panel
     from popupwb.viewproviders.patch_colours import OFFENDING
@@ -105,7 +105,7 @@ def mechanisms():
     before = report_view_text()
     doc = FreeCAD.newDocument("GuiSmokeCard")
     Gui.runCommand("PopUp_Card")
-    cards = [o for o in doc.Objects if assembly.is_card(o)]
+    cards = [o for o in doc.Objects if card_scaffold.is_card(o)]
     out["card_made"] = len(cards) == 1 and cards[0].Preset == "A5"
     card = cards[0]
     card.Preset = "A4"

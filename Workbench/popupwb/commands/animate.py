@@ -9,7 +9,7 @@ import FreeCAD
 import FreeCADGui
 
 import popupwb
-from popupwb import assembly
+from popupwb import card_scaffold
 
 COMMAND_ID = "PopUp_Animate"
 STEP_DEGREES = 3.0
@@ -21,10 +21,10 @@ _player = None  # the running Player, kept alive here
 def _selected_card(doc):
     for obj in FreeCADGui.Selection.getSelection(doc.Name):
         try:
-            return assembly.root_card(obj)
+            return card_scaffold.root_card(obj)
         except ValueError:
             continue
-    cards = [o for o in doc.Objects if assembly.is_card(o)]
+    cards = [o for o in doc.Objects if card_scaffold.is_card(o)]
     return cards[0] if len(cards) == 1 else None
 
 
@@ -108,7 +108,7 @@ class AnimateCommand:
 
     def IsActive(self):
         doc = FreeCAD.ActiveDocument
-        return doc is not None and any(assembly.is_card(o) for o in doc.Objects)
+        return doc is not None and any(card_scaffold.is_card(o) for o in doc.Objects)
 
     def Activated(self):
         if stop():

@@ -5,7 +5,7 @@ import FreeCAD
 import FreeCADGui
 
 import popupwb
-from popupwb import assembly
+from popupwb import card_scaffold
 from popupwb.features.scaffold_feature import is_scaffold
 
 COMMAND_ID = "PopUp_CheckValidity"
@@ -15,16 +15,16 @@ last_reports = []
 
 
 def _checkable(obj):
-    return is_scaffold(obj) or assembly.is_card(obj)
+    return is_scaffold(obj) or card_scaffold.is_card(obj)
 
 
 def _target(obj):
     """The object a check of `obj` runs on: itself, or the card of a mechanism (None if none)."""
     if _checkable(obj):
         return obj
-    if assembly.is_mechanism(obj):
+    if card_scaffold.is_mechanism(obj):
         try:
-            return assembly.root_card(obj)
+            return card_scaffold.root_card(obj)
         except ValueError:
             return None
     return None

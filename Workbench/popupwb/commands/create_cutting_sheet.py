@@ -5,7 +5,7 @@ import FreeCAD
 import FreeCADGui
 
 import popupwb
-from popupwb import assembly
+from popupwb import card_scaffold
 
 COMMAND_ID = "PopUp_CuttingSheet"
 FIRST_PAPERS = ("A4", "A3")
@@ -17,10 +17,10 @@ def find_card(doc):
         return None
     for obj in FreeCADGui.Selection.getSelection(doc.Name):
         try:
-            return assembly.root_card(obj)
+            return card_scaffold.root_card(obj)
         except ValueError:  # not a PopUp object, or a mechanism without card
             continue
-    cards = [o for o in doc.Objects if assembly.is_card(o)]
+    cards = [o for o in doc.Objects if card_scaffold.is_card(o)]
     return cards[0] if len(cards) == 1 else None
 
 
@@ -30,7 +30,7 @@ def first_paper(card):
     """
     from popupwb.sheets import export
 
-    built = assembly.assembly_of(card)
+    built = card_scaffold.for_card(card)
     if built.card_error is None:
         for paper in FIRST_PAPERS:
             try:
@@ -52,7 +52,7 @@ class CreateCuttingSheetCommand:
 
     def IsActive(self):
         doc = FreeCAD.ActiveDocument
-        return doc is not None and any(assembly.is_card(o) for o in doc.Objects)
+        return doc is not None and any(card_scaffold.is_card(o) for o in doc.Objects)
 
     def Activated(self):
         create()

@@ -7,7 +7,7 @@ import FreeCAD
 import FreeCADGui
 
 import popupwb
-from popupwb import assembly
+from popupwb import card_scaffold
 
 # command id -> (make function name, menu text, tool tip)
 MECHANISMS = {
@@ -66,7 +66,7 @@ COMMAND_IDS = list(MECHANISMS)
 
 
 def _is_host(obj):
-    return bool(assembly.host_pair_names(obj))
+    return bool(card_scaffold.host_pair_names(obj))
 
 
 def find_host(doc):
@@ -77,7 +77,7 @@ def find_host(doc):
     selected = [o for o in FreeCADGui.Selection.getSelection(doc.Name) if _is_host(o)]
     if selected:
         return selected[0]
-    cards = [o for o in doc.Objects if assembly.is_card(o)]
+    cards = [o for o in doc.Objects if card_scaffold.is_card(o)]
     return cards[0] if len(cards) == 1 else None
 
 
@@ -95,7 +95,7 @@ class CreateMechanismCommand:
 
     def IsActive(self):
         doc = FreeCAD.ActiveDocument
-        return doc is not None and any(assembly.is_card(o) for o in doc.Objects)
+        return doc is not None and any(card_scaffold.is_card(o) for o in doc.Objects)
 
     def Activated(self):
         create(self.command_id)

@@ -21,7 +21,7 @@ import json
 
 import FreeCAD
 
-from popupwb import assembly
+from popupwb import card_scaffold
 from popupwb.features.property_adder import property_adder
 from popupwb.sheets.sheet_options import SHEET_OPTIONS, defaults, sides_text
 from popupwb.stateless_proxy import StatelessProxy
@@ -176,7 +176,7 @@ class CuttingSheet(StatelessProxy):
     def execute(self, obj):
         from popupwb.sheets import export
 
-        built = assembly.assembly_of(self._card(obj))
+        built = card_scaffold.for_card(self._card(obj))
         options = layout_options(obj)
         self._check_styles(obj)
         settings = (obj.MakePages, obj.MountainStyle, obj.ValleyStyle, obj.Force)
@@ -199,10 +199,10 @@ class CuttingSheet(StatelessProxy):
     def _card(self, obj):
         """The linked card, built; raises naming what is wrong with it."""
         card = obj.Card
-        if card is None or not assembly.is_card(card):
+        if card is None or not card_scaffold.is_card(card):
             found = "empty" if card is None else card.Label
             raise self._error(obj, f"Card = {found}, must be a PopUpCard")
-        built = assembly.assembly_of(card)
+        built = card_scaffold.for_card(card)
         if built.card_error:
             raise self._error(
                 obj, f"the card {card.Label} is in error, fix it first: {built.card_error}"

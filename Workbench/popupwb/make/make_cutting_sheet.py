@@ -2,7 +2,7 @@
 
 import FreeCAD
 
-from popupwb import assembly
+from popupwb import card_scaffold
 from popupwb.features.cutting_sheet import CUSTOM, OPTIONS, PAPERS, CuttingSheet
 from popupwb.sheets.sheet_options import defaults, option_named, parse_sides, sides_text
 
@@ -24,7 +24,7 @@ def make_cutting_sheet(
     min_tab_width, min_feature (mm), tab_angle, min_corner_angle (degrees), fold_hints,
     printed_sides ({"P1": "back"}). The caller recomputes.
     """
-    if not assembly.is_card(card):
+    if not card_scaffold.is_card(card):
         raise ValueError(
             f"make_cutting_sheet: card {getattr(card, 'Label', card)} must be a PopUpCard"
         )

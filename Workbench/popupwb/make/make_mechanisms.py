@@ -9,7 +9,7 @@ when the host does not build.
 
 import FreeCAD
 
-from popupwb import assembly
+from popupwb import card_scaffold
 from popupwb.features.box_fold import BoxFold
 from popupwb.features.floating_layer import FloatingLayer
 from popupwb.features.horizontal_translation import HorizontalTranslation
@@ -22,9 +22,9 @@ from popupwb.features.v_fold import VFold
 
 
 def _host_pair(host, name):
-    """The popupcore.BasePatchPair `name` of `host` from the card's assembly, or None."""
+    """The popupcore.BasePatchPair `name` of `host` from the card's scaffold, or None."""
     try:
-        built = assembly.assembly_of(assembly.root_card(host))
+        built = card_scaffold.for_card(card_scaffold.root_card(host))
     except ValueError:
         return None
     for pair in built.offered.get(host.Name, []):
@@ -36,10 +36,10 @@ def _host_pair(host, name):
 def make_mechanism(proxy_class, host, host_pair=None, name=None, **params):
     """Adds a `proxy_class` mechanism on `host` (a PopUpCard or a mechanism) at its base patch pair
     `host_pair` (default: the first it offers). The caller recomputes."""
-    if not (assembly.is_card(host) or assembly.is_mechanism(host)):
+    if not (card_scaffold.is_card(host) or card_scaffold.is_mechanism(host)):
         label = getattr(host, "Label", host)
         raise ValueError(f"{proxy_class.__name__}: host {label} must be a PopUpCard or a mechanism")
-    choices = assembly.host_pair_names(host)
+    choices = card_scaffold.host_pair_names(host)
     if not choices:
         raise ValueError(f"{proxy_class.__name__}: {host.Label} offers no base patch pair")
     if host_pair is None:

@@ -18,13 +18,13 @@ def deferred_colour(obj):
 
 def hosted_on(obj):
     """The mechanisms whose Host is `obj`, in document order."""
-    from popupwb import assembly
+    from popupwb import card_scaffold
 
     try:
         objects = obj.Document.Objects
     except (ReferenceError, RuntimeError):
         return []
-    return [o for o in objects if assembly.is_mechanism(o) and getattr(o, "Host", None) is obj]
+    return [o for o in objects if card_scaffold.is_mechanism(o) and getattr(o, "Host", None) is obj]
 
 
 def attach_if_missing(obj, view_provider_class):

@@ -8,7 +8,7 @@ from popupwb.viewproviders.scaffold_viewprovider import ROLE_COLOURS
 
 OFFENDING = (0.90, 0.10, 0.10)
 
-_HIGHLIGHTS = {}  # (document name, card name) -> (assembly digest, set of patch ids)
+_HIGHLIGHTS = {}  # (document name, card name) -> (design digest, set of patch ids)
 
 
 def highlight(card, digest, patch_ids):
@@ -24,23 +24,23 @@ def highlighted(card, digest):
 
 def colour_object(obj):
     """Sets obj.ViewObject.DiffuseColor from the roles of its patches (a PopUpCard shows every
-    patch of its assembly, a mechanism its own). Quietly does nothing when the shape and the
-    assembly do not match (the feature itself reports errors)."""
-    from popupwb import assembly
+    patch of its scaffold, a mechanism its own). Quietly does nothing when the shape and the
+    scaffold do not match (the feature itself reports errors)."""
+    from popupwb import card_scaffold
 
     try:
         vobj = obj.ViewObject
         if vobj is None or obj.Shape.isNull():
             return
-        card = assembly.root_card(obj)
+        card = card_scaffold.root_card(obj)
     except (ReferenceError, RuntimeError, ValueError, AttributeError):
         return  # deleted before a deferred call, or a broken Host chain
-    built = assembly.assembly_of(card)
+    built = card_scaffold.for_card(card)
     if built.scaffold is None or obj.Name not in built.patches:
         return
     ids = (
         list(range(len(built.scaffold.patches)))
-        if assembly.is_card(obj)
+        if card_scaffold.is_card(obj)
         else built.patches[obj.Name]
     )
     children = obj.Shape.childShapes()
@@ -61,7 +61,7 @@ def colour_object(obj):
 
 def colour_card_and_mechanisms(card):
     """Recolours a card and every mechanism of it (after a validity check)."""
-    from popupwb import assembly
+    from popupwb import card_scaffold
 
-    for obj in [card] + assembly.mechanisms_of(card):
+    for obj in [card] + card_scaffold.mechanisms_of(card):
         colour_object(obj)
