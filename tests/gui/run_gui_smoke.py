@@ -46,6 +46,7 @@ COMMANDS = [
     "PopUp_ExportSheets",
 ]
 WIDTH, HEIGHT = 800, 600
+LEGACY = ("legacy_card.FCStd", "legacy_card_gui.FCStd")
 
 MACRO = r"""
 import json
@@ -240,6 +241,29 @@ def mechanisms():
     FreeCAD.closeDocument(doc.Name)
 
 
+def legacy_documents():
+    # Documents an older workbench saved, headless (no view providers stored: features attach
+    # theirs by name) and from the GUI (view providers stored by module and class).
+    out = result["legacy"] = {}
+    for path in CONFIG["legacy"]:
+        doc = FreeCAD.openDocument(path)
+        objects = [doc.getObject(name) for name in ("Card", "Tent", "CuttingSheet")]
+        doc.getObject("Card").FoldAngle = 120.0
+        doc.recompute()
+        shown = objects[:2]
+        coloured = wait_until(
+            lambda: all(len(o.ViewObject.DiffuseColor) == len(o.Shape.Faces) for o in shown),
+            10000,
+        )
+        out[os.path.basename(path)] = {
+            "view_providers": [type(o.ViewObject.Proxy).__name__ for o in objects],
+            "icons": [os.path.basename(o.ViewObject.Proxy.getIcon()) for o in objects],
+            "coloured": coloured,
+            "states": sorted(set(s for o in objects for s in o.State)),
+        }
+        FreeCAD.closeDocument(doc.Name)
+
+
 def main():
     Gui.activateWorkbench("PopUpWorkbench")
     result["workbench"] = Gui.activeWorkbench().name()
@@ -289,6 +313,7 @@ def main():
     mechanisms()
     motion_mechanisms()
     cutting_sheet()
+    legacy_documents()
 
 
 def cutting_sheet():
@@ -376,6 +401,7 @@ def run_freecad():
         "sample": SAMPLE,
         "fold_angle": 120.0,
         "check_command": "PopUp_CheckValidity",
+        "legacy": [os.path.join(SOURCE_DIR, "tests", "data", name) for name in LEGACY],
         "commands": COMMANDS,
         "png": os.path.join(OUT_DIR, "screenshot.png"),
         "card_png": os.path.join(OUT_DIR, "card.png"),
@@ -537,6 +563,21 @@ def main():
         + os.path.join(OUT_DIR, "screenshot.png"),
     )
     check_mechanisms(check, result.get("mechanisms") or {})
+    for name in LEGACY:
+        legacy = (result.get("legacy") or {}).get(name) or {}
+        check(
+            f"{name} opens with its view providers",
+            legacy.get("view_providers")
+            == ["CardViewProvider", "MechanismViewProvider", "CuttingSheetViewProvider"]
+            and legacy.get("icons")
+            == ["PopUp_Card.svg", "PopUp_TentFold.svg", "PopUp_CuttingSheet.svg"],
+            legacy,
+        )
+        check(
+            f"{name} recomputes, coloured by role",
+            legacy.get("coloured") is True and legacy.get("states") == ["Up-to-date"],
+            legacy,
+        )
     failed = checks.count(False)
     print(f"gui_smoke: {len(checks) - failed} passed, {failed} failed")
     return 1 if failed else 0

@@ -12,6 +12,7 @@ import FreeCAD
 from popupwb import card_scaffold
 from popupwb.features.property_adder import add_validity_outputs, property_adder
 from popupwb.stateless_proxy import StatelessProxy
+from popupwb.view_provider_by_name import attach_view_provider
 
 TYPE = card_scaffold.CARD_TYPE
 VERSION = "1"
@@ -46,6 +47,8 @@ class PopUpCard(StatelessProxy):
     """Proxy of a Part::FeaturePython: the card and, through its scaffold, all its mechanisms."""
 
     TYPE = TYPE
+    # popupwb.viewproviders module and class, imported only in the GUI (view_provider_by_name)
+    VIEW_PROVIDER = ("card_viewprovider", "CardViewProvider")
 
     def __init__(self, obj):
         obj.Proxy = self
@@ -106,10 +109,7 @@ class PopUpCard(StatelessProxy):
 
     def onDocumentRestored(self, obj):
         self.add_properties(obj)
-        if FreeCAD.GuiUp:
-            from popupwb.viewproviders.card_viewprovider import CardViewProvider, attach_if_missing
-
-            attach_if_missing(obj, CardViewProvider)
+        attach_view_provider(obj)  # saved headless: it has none yet
 
     def execute(self, obj):
         start = time.perf_counter()

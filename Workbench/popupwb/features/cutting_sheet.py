@@ -25,6 +25,7 @@ from popupwb import card_scaffold
 from popupwb.features.property_adder import property_adder
 from popupwb.sheets.sheet_options import SHEET_OPTIONS, defaults, sides_text
 from popupwb.stateless_proxy import StatelessProxy
+from popupwb.view_provider_by_name import attach_view_provider
 
 TYPE = "PopUp::CuttingSheet"
 VERSION = "1"
@@ -52,6 +53,8 @@ class CuttingSheet(StatelessProxy):
     """Proxy of a Part::FeaturePython: the flat layout of its Card."""
 
     TYPE = TYPE
+    # popupwb.viewproviders module and class, imported only in the GUI (view_provider_by_name)
+    VIEW_PROVIDER = ("cutting_sheet_viewprovider", "CuttingSheetViewProvider")
 
     def __init__(self, obj):
         obj.Proxy = self
@@ -165,13 +168,7 @@ class CuttingSheet(StatelessProxy):
 
     def onDocumentRestored(self, obj):
         self.add_properties(obj)
-        if FreeCAD.GuiUp:
-            from popupwb.viewproviders.card_viewprovider import attach_if_missing
-            from popupwb.viewproviders.cutting_sheet_viewprovider import (
-                CuttingSheetViewProvider,
-            )
-
-            attach_if_missing(obj, CuttingSheetViewProvider)
+        attach_view_provider(obj)  # saved headless: it has none yet
 
     def execute(self, obj):
         from popupwb.sheets import export

@@ -21,6 +21,7 @@ import FreeCAD
 
 from popupwb import card_scaffold
 from popupwb.stateless_proxy import StatelessProxy
+from popupwb.view_provider_by_name import attach_view_provider
 
 VERSION = "1"
 
@@ -64,6 +65,8 @@ class MechanismFeature(StatelessProxy):
 
     IS_MECHANISM = True
     TYPE = None
+    # popupwb.viewproviders module and class, imported only in the GUI (view_provider_by_name)
+    VIEW_PROVIDER = ("mechanism_viewprovider", "MechanismViewProvider")
     GROUP = "Mechanism"  # property group of the parameters
     PARAMS = None  # name of the popupcore params class, e.g. "TentFoldParams"
     GENERATOR = None  # name of the popupcore generator, e.g. "add_tent_fold"
@@ -162,11 +165,7 @@ class MechanismFeature(StatelessProxy):
 
     def onDocumentRestored(self, obj):
         self.add_properties(obj)
-        if FreeCAD.GuiUp:
-            from popupwb.viewproviders.card_viewprovider import attach_if_missing
-            from popupwb.viewproviders.mechanism_viewprovider import MechanismViewProvider
-
-            attach_if_missing(obj, MechanismViewProvider)
+        attach_view_provider(obj)  # saved headless: it has none yet
 
     def onChanged(self, obj, prop):
         if _restoring(obj) or not hasattr(obj, "Version"):

@@ -5,6 +5,7 @@ import FreeCAD
 from popupwb import card_scaffold
 from popupwb.features.cutting_sheet import CUSTOM, OPTIONS, PAPERS, CuttingSheet
 from popupwb.sheets.sheet_options import defaults, option_named, parse_sides, sides_text
+from popupwb.view_provider_by_name import view_provider_class
 
 
 def make_cutting_sheet(
@@ -57,7 +58,5 @@ def make_cutting_sheet(
         setattr(obj, by_key[key], value)
     obj.MakePages = make_pages
     if FreeCAD.GuiUp:
-        from popupwb.viewproviders.cutting_sheet_viewprovider import CuttingSheetViewProvider
-
-        CuttingSheetViewProvider(obj.ViewObject)
+        view_provider_class(obj.Proxy)(obj.ViewObject)
     return obj

@@ -19,6 +19,7 @@ from popupwb.features.rotation_arm import RotationArm
 from popupwb.features.v_box_fold import VBoxFold
 from popupwb.features.vertical_translation import VerticalTranslation
 from popupwb.features.v_fold import VFold
+from popupwb.view_provider_by_name import view_provider_class
 
 
 def _host_pair(host, name):
@@ -72,9 +73,7 @@ def make_mechanism(proxy_class, host, host_pair=None, name=None, **params):
     obj.Host = host  # sets Card and the HostPair choices
     obj.HostPair = host_pair
     if FreeCAD.GuiUp:
-        from popupwb.viewproviders.mechanism_viewprovider import MechanismViewProvider
-
-        MechanismViewProvider(obj.ViewObject)
+        view_provider_class(obj.Proxy)(obj.ViewObject)
     return obj
 
 
