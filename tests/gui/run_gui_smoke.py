@@ -45,6 +45,14 @@ COMMANDS = [
     "PopUp_CuttingSheet",
     "PopUp_ExportSheets",
 ]
+OTHER_COMMANDS = [
+    "PopUp_Card",
+    "PopUp_CheckValidity",
+    "PopUp_Animate",
+    "PopUp_LoadDesign",
+    "PopUp_CuttingSheet",
+    "PopUp_ExportSheets",
+]
 WIDTH, HEIGHT = 800, 600
 LEGACY = ("legacy_card.FCStd", "legacy_card_gui.FCStd")
 
@@ -268,6 +276,12 @@ def main():
     Gui.activateWorkbench("PopUpWorkbench")
     result["workbench"] = Gui.activeWorkbench().name()
     result["commands"] = [c for c in CONFIG["commands"] if c in Gui.listCommands()]
+    # Every registered PopUp_* command that is not one of the others comes from the registry.
+    from popupwb import mechanism_registry
+
+    registered = set(c for c in Gui.listCommands() if c.startswith("PopUp_"))
+    result["mechanism_commands"] = sorted(registered - set(CONFIG["other_commands"]))
+    result["registry_commands"] = sorted(mechanism_registry.COMMAND_IDS)
     toolbar = Gui.getMainWindow().findChild(QtGui.QToolBar, "PopUp")
     result["toolbar_actions"] = len(toolbar.actions()) if toolbar else 0
 
@@ -403,6 +417,7 @@ def run_freecad():
         "check_command": "PopUp_CheckValidity",
         "legacy": [os.path.join(SOURCE_DIR, "tests", "data", name) for name in LEGACY],
         "commands": COMMANDS,
+        "other_commands": OTHER_COMMANDS,
         "png": os.path.join(OUT_DIR, "screenshot.png"),
         "card_png": os.path.join(OUT_DIR, "card.png"),
         "result": os.path.join(OUT_DIR, "result.json"),
@@ -531,6 +546,12 @@ def main():
     )
     check("commands registered", result.get("commands") == COMMANDS, result.get("commands"))
     check("toolbar has the commands", result.get("toolbar_actions", 0) >= len(COMMANDS))
+    check(
+        "every mechanism command comes from the registry, and every registry entry is a command",
+        result.get("mechanism_commands") == result.get("registry_commands")
+        and result.get("registry_commands") == sorted(set(COMMANDS) - set(OTHER_COMMANDS)),
+        result.get("mechanism_commands"),
+    )
     check(
         "scaffold recomputed to a valid shape",
         result.get("shape_valid") is True and "Invalid" not in result.get("object_state", []),
