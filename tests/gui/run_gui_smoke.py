@@ -59,6 +59,7 @@ LEGACY = ("legacy_card.FCStd", "legacy_card_gui.FCStd")
 MACRO = r"""
 import json
 import os
+import re
 import traceback
 
 import FreeCAD
@@ -249,6 +250,38 @@ def mechanisms():
     FreeCAD.closeDocument(doc.Name)
 
 
+def selection_messages():
+    # What the commands say when nothing suitable is selected, and that they then add nothing.
+    from popupwb import make
+
+    out = result["selection"] = {}
+    doc = FreeCAD.newDocument("GuiSmokeSelection")
+    card = make.make_card(doc, name="Card")
+    make.make_card(doc, name="Card")  # Card001: two cards, so none is "the only one"
+    doc.recompute()
+    tent = make.make_tent_fold(card, name="Tent")
+    doc.recompute()
+    count = len(doc.Objects)
+
+    def messages(command, selected=()):
+        Gui.Selection.clearSelection()
+        for obj in selected:
+            Gui.Selection.addSelection(obj)
+        wait_until(lambda: False, 100)
+        before = report_view_text()
+        Gui.runCommand(command)
+        wait_until(lambda: False, 200)  # the report view appends queued messages on events
+        lines = report_view_text()[len(before) :].splitlines()
+        return [re.sub(r"^\d\d:\d\d:\d\d\s+", "", line) for line in lines if line]  # no time
+
+    out["mechanism_without_host"] = messages("PopUp_StepFold")
+    out["mechanism_on_tent"] = messages("PopUp_StepFold", [tent])
+    out["sheet_without_card"] = messages("PopUp_CuttingSheet")
+    out["added"] = len(doc.Objects) - count
+    Gui.Selection.clearSelection()
+    FreeCAD.closeDocument(doc.Name)
+
+
 def legacy_documents():
     # Documents an older workbench saved, headless (no view providers stored: features attach
     # theirs by name) and from the GUI (view providers stored by module and class).
@@ -327,6 +360,7 @@ def main():
     mechanisms()
     motion_mechanisms()
     cutting_sheet()
+    selection_messages()
     legacy_documents()
 
 
@@ -584,6 +618,30 @@ def main():
         + os.path.join(OUT_DIR, "screenshot.png"),
     )
     check_mechanisms(check, result.get("mechanisms") or {})
+    selection = result.get("selection") or {}
+    hosts = "a card or a mechanism offering base patch pairs (box fold, floating layer, v-fold)"
+    check(
+        "a mechanism command without a host says what to select",
+        selection.get("mechanism_without_host")
+        == [f"PopUp_StepFold: select {hosts} (the document has several: Card, Card001)"],
+        selection.get("mechanism_without_host"),
+    )
+    check(
+        "a mechanism command on a tent says it offers no pair",
+        selection.get("mechanism_on_tent")
+        == [f"PopUp_StepFold: Tent offers no base patch pair: select {hosts}"],
+        selection.get("mechanism_on_tent"),
+    )
+    check(
+        "PopUp_CuttingSheet without a card says what to select",
+        selection.get("sheet_without_card")
+        == [
+            "PopUp_CuttingSheet: select a card or one of its mechanisms "
+            "(the document has several: Card, Card001)"
+        ],
+        selection.get("sheet_without_card"),
+    )
+    check("refused commands add nothing", selection.get("added") == 0, selection.get("added"))
     for name in LEGACY:
         legacy = (result.get("legacy") or {}).get(name) or {}
         check(

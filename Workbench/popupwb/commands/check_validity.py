@@ -6,6 +6,7 @@ import FreeCADGui
 
 import popupwb
 from popupwb import card_scaffold
+from popupwb.commands.selection import SelectionError, selected_designs
 from popupwb.features.scaffold_feature import is_scaffold
 
 COMMAND_ID = "PopUp_CheckValidity"
@@ -16,30 +17,6 @@ last_reports = []
 
 def _checkable(obj):
     return is_scaffold(obj) or card_scaffold.is_card(obj)
-
-
-def _target(obj):
-    """The object a check of `obj` runs on: itself, or the card of a mechanism (None if none)."""
-    if _checkable(obj):
-        return obj
-    if card_scaffold.is_mechanism(obj):
-        try:
-            return card_scaffold.root_card(obj)
-        except ValueError:
-            return None
-    return None
-
-
-def _targets():
-    doc = FreeCAD.ActiveDocument
-    if doc is None:
-        return []
-    selected = []
-    for obj in FreeCADGui.Selection.getSelection(doc.Name):
-        target = _target(obj)
-        if target is not None and all(target is not other for other in selected):
-            selected.append(target)
-    return selected or [o for o in doc.Objects if _checkable(o)]
 
 
 class CheckValidityCommand:
@@ -60,8 +37,13 @@ class CheckValidityCommand:
         from popupwb.validity import run_check
 
         _show_report_view()
+        try:
+            targets = selected_designs(FreeCAD.ActiveDocument)
+        except SelectionError as error:
+            FreeCAD.Console.PrintError(f"{COMMAND_ID}: {error}\n")
+            return
         reports = []
-        for obj in _targets():
+        for obj in targets:
             try:
                 reports.append(run_check(obj))
             except RuntimeError as error:  # a core failure on one object must not stop the rest

@@ -6,22 +6,10 @@ import FreeCADGui
 
 import popupwb
 from popupwb import card_scaffold
+from popupwb.commands.selection import SelectionError, selected_card
 
 COMMAND_ID = "PopUp_CuttingSheet"
 FIRST_PAPERS = ("A4", "A3")
-
-
-def find_card(doc):
-    """The root card of the first selected card or mechanism, else the only card, else None."""
-    if doc is None:
-        return None
-    for obj in FreeCADGui.Selection.getSelection(doc.Name):
-        try:
-            return card_scaffold.root_card(obj)
-        except ValueError:  # not a PopUp object, or a mechanism without card
-            continue
-    cards = [o for o in doc.Objects if card_scaffold.is_card(o)]
-    return cards[0] if len(cards) == 1 else None
 
 
 def first_paper(card):
@@ -63,12 +51,10 @@ def create(card=None):
     from popupwb.make import make_cutting_sheet
 
     doc = FreeCAD.ActiveDocument
-    card = card or find_card(doc)
-    if card is None:
-        FreeCAD.Console.PrintError(
-            f"{COMMAND_ID}: select a card or one of its mechanisms (the document has several "
-            "cards or none)\n"
-        )
+    try:
+        card = card or selected_card(doc)
+    except SelectionError as error:
+        FreeCAD.Console.PrintError(f"{COMMAND_ID}: {error}\n")
         return None
     doc.openTransaction("Add cutting sheets")
     obj = make_cutting_sheet(card, paper=first_paper(card), name=f"{card.Name}Sheets")

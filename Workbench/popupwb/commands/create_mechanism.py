@@ -6,23 +6,8 @@ import FreeCAD
 import FreeCADGui
 
 from popupwb import card_scaffold
+from popupwb.commands.selection import SelectionError, selected_host
 from popupwb.mechanism_registry import COMMAND_IDS, by_command
-
-
-def _is_host(obj):
-    return bool(card_scaffold.host_pair_names(obj))
-
-
-def find_host(doc):
-    """The selected card or mechanism that offers base patch pairs, else the only card, else
-    None."""
-    if doc is None:
-        return None
-    selected = [o for o in FreeCADGui.Selection.getSelection(doc.Name) if _is_host(o)]
-    if selected:
-        return selected[0]
-    cards = [o for o in doc.Objects if card_scaffold.is_card(o)]
-    return cards[0] if len(cards) == 1 else None
 
 
 class CreateMechanismCommand:
@@ -50,12 +35,10 @@ def create(command_id, host=None):
     from popupwb import make
 
     doc = FreeCAD.ActiveDocument
-    host = host or find_host(doc)
-    if host is None:
-        FreeCAD.Console.PrintError(
-            f"{command_id}: select a card or a box fold to build on (the document has "
-            "several cards or none)\n"
-        )
+    try:
+        host = host or selected_host(doc)
+    except SelectionError as error:
+        FreeCAD.Console.PrintError(f"{command_id}: {error}\n")
         return None
     mechanism = by_command(command_id)
     doc.openTransaction(f"Add {mechanism.menu_text.lower()}")
