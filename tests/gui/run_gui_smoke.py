@@ -184,7 +184,7 @@ def mechanisms():
     Gui.Selection.clearSelection()
     Gui.Selection.addSelection(tent)  # a mechanism stands for its card
     Gui.runCommand("PopUp_CheckValidity")
-    out["checked"] = [r["object"] for r in check_validity.last_reports] == [card.Name]
+    out["checked"] = check_validity.last_checked == [card.Name]
     out["valid"] = card.Valid
     out["diagnostics"] = list(card.Diagnostics)
 
@@ -282,6 +282,66 @@ def selection_messages():
     FreeCAD.closeDocument(doc.Name)
 
 
+def python_console_text():
+    console = Gui.getMainWindow().findChild(QtGui.QPlainTextEdit, "Python console")
+    return console.toPlainText() if console else ""
+
+
+def macro_replay():
+    # The commands echo their Python in the console (as the macro recorder records it); replaying
+    # those lines in a fresh document makes the same objects.
+    out = result["macro"] = {}
+    doc = FreeCAD.newDocument("GuiSmokeMacro")
+    before = python_console_text()
+
+    def run(command, host=None):
+        Gui.Selection.clearSelection()
+        if host is not None:
+            Gui.Selection.addSelection(host)
+        known = set(o.Name for o in doc.Objects)
+        Gui.runCommand(command)
+        return [o for o in doc.Objects if o.Name not in known][:1]
+
+    (card,) = run("PopUp_Card")
+    (box,) = run("PopUp_BoxFold", card)
+    run("PopUp_TentFold", box)
+    run("PopUp_CuttingSheet", card)
+    run("PopUp_CheckValidity", card)
+    wait_until(lambda: False, 200)
+    # The console's last line is its prompt, which the next statement fills in.
+    new_lines = python_console_text().splitlines()[len(before.splitlines()) - 1 :]
+    echoed = [
+        line[len(">>> ") :]
+        for line in new_lines
+        if line.startswith(">>> ") and ("popupwb" in line or "recompute()" in line)
+    ]
+    out["lines"] = echoed
+
+    def summary(document):
+        from popupwb import card_scaffold
+
+        objects = [o for o in document.Objects if hasattr(o, "Proxy") and o.Proxy is not None]
+        return {
+            o.Name: {
+                "class": type(o.Proxy).__name__,
+                "host": o.Host.Name if getattr(o, "Host", None) else None,
+                "parameters": o.Proxy.parameter_values(o) if card_scaffold.is_mechanism(o) else [],
+                "faces": len(o.Shape.Faces),
+                "valid": getattr(o, "Valid", None),
+                "pieces": getattr(o, "PieceCount", None),
+            }
+            for o in objects
+        }
+
+    out["original"] = summary(doc)
+    replay = FreeCAD.newDocument("GuiSmokeReplay")
+    FreeCAD.setActiveDocument(replay.Name)
+    exec("\n".join(echoed), {"FreeCAD": FreeCAD})
+    out["replayed"] = summary(replay)
+    FreeCAD.closeDocument(replay.Name)
+    FreeCAD.closeDocument(doc.Name)
+
+
 def legacy_documents():
     # Documents an older workbench saved, headless (no view providers stored: features attach
     # theirs by name) and from the GUI (view providers stored by module and class).
@@ -306,6 +366,8 @@ def legacy_documents():
 
 
 def main():
+    # "Show script commands in python console" (off by default): what a user turns on to see them.
+    FreeCAD.ParamGet("User parameter:BaseApp/Preferences/Macro").SetBool("ScriptToPyConsole", True)
     Gui.activateWorkbench("PopUpWorkbench")
     result["workbench"] = Gui.activeWorkbench().name()
     result["commands"] = [c for c in CONFIG["commands"] if c in Gui.listCommands()]
@@ -334,7 +396,7 @@ def main():
     Gui.Selection.clearSelection()
     Gui.Selection.addSelection(obj)
     Gui.runCommand(CONFIG["check_command"])
-    result["command_ran"] = len(check_validity.last_reports) == 1
+    result["command_ran"] = check_validity.last_checked == [obj.Name]
     result["valid"] = obj.Valid
     result["diagnostics"] = list(obj.Diagnostics)
     Gui.Selection.clearSelection()
@@ -361,6 +423,7 @@ def main():
     motion_mechanisms()
     cutting_sheet()
     selection_messages()
+    macro_replay()
     legacy_documents()
 
 
@@ -642,6 +705,33 @@ def main():
         selection.get("sheet_without_card"),
     )
     check("refused commands add nothing", selection.get("added") == 0, selection.get("added"))
+    macro = result.get("macro") or {}
+    expected = [
+        "card = popupwb.make.make_card(FreeCAD.ActiveDocument, preset='A5')",
+        "mechanism = popupwb.make.make_box_fold(FreeCAD.ActiveDocument.getObject('Card'))",
+        "mechanism = popupwb.make.make_tent_fold(FreeCAD.ActiveDocument.getObject('BoxFold'))",
+        "sheet = popupwb.make.make_cutting_sheet(FreeCAD.ActiveDocument.getObject('Card'), "
+        "paper='A4', name='CardSheets')",
+        "popupwb.validity.run_check(FreeCAD.ActiveDocument.getObject('Card'))",
+    ]
+    lines = macro.get("lines") or []
+    check(
+        "the commands echo their popupwb calls in the Python console",
+        [line for line in lines if "popupwb." in line and "import" not in line] == expected
+        and lines.count("import popupwb.make") == 4
+        and lines.count("import popupwb.validity") == 1
+        and lines.count("FreeCAD.ActiveDocument.recompute()") == 4,
+        lines,
+    )
+    original = macro.get("original") or {}
+    check(
+        "replaying the echoed lines in a fresh document makes the same objects",
+        set(original) == {"Card", "BoxFold", "TentFold", "CardSheets"}
+        and macro.get("replayed") == original
+        and original["TentFold"]["host"] == "BoxFold"
+        and original["Card"]["valid"] is True,
+        {"original": original, "replayed": macro.get("replayed")},
+    )
     for name in LEGACY:
         legacy = (result.get("legacy") or {}).get(name) or {}
         check(

@@ -6,13 +6,15 @@ import FreeCADGui
 
 import popupwb
 from popupwb import card_scaffold
+from popupwb.commands.echoed_python import import_echoed, object_expression
 from popupwb.commands.selection import SelectionError, selected_designs
 from popupwb.features.scaffold_feature import is_scaffold
 
 COMMAND_ID = "PopUp_CheckValidity"
 
-# Reports of the last run, for scripts and the GUI smoke test (the command returns nothing).
-last_reports = []
+# Names of the objects the last run checked, for scripts and the GUI smoke test (each check
+# writes its verdict into the object's Valid and Diagnostics).
+last_checked = []
 
 
 def _checkable(obj):
@@ -34,21 +36,22 @@ class CheckValidityCommand:
         return doc is not None and any(_checkable(o) for o in doc.Objects)
 
     def Activated(self):
-        from popupwb.validity import run_check
-
         _show_report_view()
         try:
             targets = selected_designs(FreeCAD.ActiveDocument)
         except SelectionError as error:
             FreeCAD.Console.PrintError(f"{COMMAND_ID}: {error}\n")
             return
-        reports = []
+        import_echoed("popupwb.validity")
+        checked = []
         for obj in targets:
+            # Echoed like the commands that add objects, so a macro can re-run the check.
             try:
-                reports.append(run_check(obj))
+                FreeCADGui.doCommand(f"popupwb.validity.run_check({object_expression(obj)})")
+                checked.append(obj.Name)
             except RuntimeError as error:  # a core failure on one object must not stop the rest
                 FreeCAD.Console.PrintError(f"{obj.Label}: validity check failed: {error}\n")
-        last_reports[:] = reports
+        last_checked[:] = checked
 
 
 def _show_report_view():

@@ -6,6 +6,8 @@ import FreeCADGui
 
 import popupwb
 from popupwb import card_scaffold
+from popupwb.features.cutting_sheet import is_cutting_sheet
+from popupwb.commands.echoed_python import object_expression, run_echoed
 from popupwb.commands.selection import SelectionError, selected_card
 
 COMMAND_ID = "PopUp_CuttingSheet"
@@ -47,19 +49,20 @@ class CreateCuttingSheetCommand:
 
 
 def create(card=None):
-    """What the command does; returns the new CuttingSheet (None, with a message, without card)."""
-    from popupwb.make import make_cutting_sheet
-
+    """What the command does; returns the new CuttingSheet (None, with a message, without card).
+    The console shows the `popupwb.make.make_cutting_sheet(...)` line it ran."""
     doc = FreeCAD.ActiveDocument
     try:
         card = card or selected_card(doc)
     except SelectionError as error:
         FreeCAD.Console.PrintError(f"{COMMAND_ID}: {error}\n")
         return None
-    doc.openTransaction("Add cutting sheets")
-    obj = make_cutting_sheet(card, paper=first_paper(card), name=f"{card.Name}Sheets")
-    doc.commitTransaction()
-    doc.recompute()
+    line = (
+        f"sheet = popupwb.make.make_cutting_sheet({object_expression(card)}, "
+        f"paper={first_paper(card)!r}, name={card.Name + 'Sheets'!r})"
+    )
+    added = run_echoed(doc, "Add cutting sheets", [line])
+    obj = next(o for o in added if is_cutting_sheet(o))
     if "Invalid" in obj.State:
         FreeCAD.Console.PrintError(f"{obj.getStatusString()}\n")
     FreeCADGui.Selection.clearSelection()

@@ -6,6 +6,7 @@ import FreeCAD
 import FreeCADGui
 
 from popupwb import card_scaffold
+from popupwb.commands.echoed_python import object_expression, run_echoed
 from popupwb.commands.selection import SelectionError, selected_host
 from popupwb.mechanism_registry import COMMAND_IDS, by_command
 
@@ -31,9 +32,9 @@ class CreateMechanismCommand:
 
 
 def create(command_id, host=None):
-    """What the command does; returns the new mechanism (None, with a message, without host)."""
-    from popupwb import make
-
+    """What the command does; returns the new mechanism (None, with a message, without host).
+    The console shows `popupwb.make.make_<type>(<host>)`: the host's defaults are fitted again
+    on replay, so the line stays short and reproduces the same mechanism."""
     doc = FreeCAD.ActiveDocument
     try:
         host = host or selected_host(doc)
@@ -41,15 +42,13 @@ def create(command_id, host=None):
         FreeCAD.Console.PrintError(f"{command_id}: {error}\n")
         return None
     mechanism = by_command(command_id)
-    doc.openTransaction(f"Add {mechanism.menu_text.lower()}")
+    line = f"mechanism = popupwb.make.{mechanism.make_name}({object_expression(host)})"
     try:
-        obj = getattr(make, mechanism.make_name)(host)
+        added = run_echoed(doc, f"Add {mechanism.menu_text.lower()}", [line])
     except ValueError as error:
-        doc.abortTransaction()
         FreeCAD.Console.PrintError(f"{command_id}: {error}\n")
         return None
-    doc.commitTransaction()
-    doc.recompute()
+    obj = next(o for o in added if card_scaffold.is_mechanism(o))
     FreeCADGui.Selection.clearSelection()
     FreeCADGui.Selection.addSelection(obj)
     return obj

@@ -11,13 +11,19 @@ def object_expression(obj):
     return f"FreeCAD.ActiveDocument.getObject({obj.Name!r})"
 
 
+def import_echoed(module):
+    """Echoes `import <module>` every time: FreeCADGui.addModule echoes an import only the first
+    time in a session, so a macro recorded later would lack it and fail on replay."""
+    FreeCADGui.doCommand(f"import {module}")
+
+
 def run_echoed(doc, transaction, lines, modules=("popupwb.make",)):
     """Imports `modules` and runs `lines` through FreeCADGui.doCommand as one undo transaction
-    named `transaction` of `doc`, then recomputes (also echoed). Returns the objects the lines
-    added to `doc`, in document order. An exception of a line aborts the transaction and
-    propagates (the console shows the line that failed)."""
+    named `transaction` of `doc` (the active document), then recomputes (also echoed). Returns
+    the objects the lines added to `doc`, in document order. An exception of a line aborts the
+    transaction and propagates (the console shows the line that failed)."""
     for module in modules:
-        FreeCADGui.addModule(module)
+        import_echoed(module)
     before = {o.Name for o in doc.Objects}
     doc.openTransaction(transaction)
     try:
