@@ -3,7 +3,9 @@
 Writes a macro that activates the workbench, loads resources/samples/demo_card.json as a Scaffold,
 runs PopUp_CheckValidity, saves an isometric screenshot; then builds a card with every mechanism
 through the toolbar commands, edits one in its task panel, checks and animates the card, saves a
-second screenshot; writes a JSON result. Runs FreeCAD on it and checks the result. Run by ctest (gui_smoke) with /usr/bin/python3; by hand:
+second screenshot; checks what the commands say when nothing suitable is selected, reads the
+Python lines the commands echo off the Python console and replays them in a fresh document, opens
+the legacy documents of tests/data; writes a JSON result. Runs FreeCAD on it and checks the result. Run by ctest (gui_smoke) with /usr/bin/python3; by hand:
 
     /usr/bin/python3 tests/gui/run_gui_smoke.py      # POPUP_BUILD_DIR defaults to ./build
 
