@@ -118,7 +118,7 @@ def _import_freecad():
 
 def _design_objects(doc):
     """The Scaffold and PopUpCard objects of `doc`, in document order."""
-    from popupwb.assembly import is_card
+    from popupwb.card_scaffold import is_card
     from popupwb.features.scaffold_feature import is_scaffold
 
     return [obj for obj in doc.Objects if is_scaffold(obj) or is_card(obj)]
@@ -144,9 +144,9 @@ def _select_cards(path, objects, card):
 def _card_design(path, card, several):
     """The assembled scaffold of a PopUpCard and its mechanisms; a part that does not build makes
     the input unusable (the message is the feature's error)."""
-    from popupwb.assembly import assembly_of
+    from popupwb.card_scaffold import for_card
 
-    built = assembly_of(card)
+    built = for_card(card)
     problems = ([built.card_error] if built.card_error else []) + list(built.errors.values())
     if problems:
         # Several cards: say which one, and that the others can still be checked alone.

@@ -65,9 +65,9 @@ def run_check(obj, samples=181, clearance=0.0):
     """
     import FreeCAD
 
-    from popupwb import assembly
+    from popupwb import card_scaffold
 
-    if assembly.is_card(obj):
+    if card_scaffold.is_card(obj):
         report = _check_card(obj, samples, clearance)
     else:
         report = _check_scaffold(obj, samples, clearance)
@@ -117,13 +117,13 @@ def offending_patches(report):
 
 
 def _check_card(card, samples, clearance):
-    """The card's whole assembly; mechanisms that do not build are findings of their own."""
+    """The card's whole scaffold; mechanisms that do not build are findings of their own."""
     import FreeCAD
 
-    from popupwb import assembly
+    from popupwb import card_scaffold
     from popupwb.core import popupcore
 
-    built = assembly.assembly_of(card)
+    built = card_scaffold.for_card(card)
     if built.card_error:
         return {"valid": False, "diagnostics": [design_error(built.card_error)]}
     report = popupcore.check_validity(

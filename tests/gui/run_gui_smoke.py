@@ -3,7 +3,9 @@
 Writes a macro that activates the workbench, loads resources/samples/demo_card.json as a Scaffold,
 runs PopUp_CheckValidity, saves an isometric screenshot; then builds a card with every mechanism
 through the toolbar commands, edits one in its task panel, checks and animates the card, saves a
-second screenshot; writes a JSON result. Runs FreeCAD on it and checks the result. Run by ctest (gui_smoke) with /usr/bin/python3; by hand:
+second screenshot; checks what the commands say when nothing suitable is selected, reads the
+Python lines the commands echo off the Python console and replays them in a fresh document, opens
+the legacy documents of tests/data; writes a JSON result. Runs FreeCAD on it and checks the result. Run by ctest (gui_smoke) with /usr/bin/python3; by hand:
 
     /usr/bin/python3 tests/gui/run_gui_smoke.py      # POPUP_BUILD_DIR defaults to ./build
 
@@ -45,11 +47,21 @@ COMMANDS = [
     "PopUp_CuttingSheet",
     "PopUp_ExportSheets",
 ]
+OTHER_COMMANDS = [
+    "PopUp_Card",
+    "PopUp_CheckValidity",
+    "PopUp_Animate",
+    "PopUp_LoadDesign",
+    "PopUp_CuttingSheet",
+    "PopUp_ExportSheets",
+]
 WIDTH, HEIGHT = 800, 600
+LEGACY = ("legacy_card.FCStd", "legacy_card_gui.FCStd")
 
 MACRO = r"""
 import json
 import os
+import re
 import traceback
 
 import FreeCAD
@@ -96,7 +108,7 @@ def wait_until(condition, timeout_ms=60000):
 
 def mechanisms():
     # The card commands, the task panel, the validity check and the animation.
-    from popupwb import assembly
+    from popupwb import card_scaffold
     from popupwb.commands import animate, check_validity
     from popupwb.taskpanels import mechanism_panel
     from popupwb.viewproviders.patch_colours import OFFENDING
@@ -105,7 +117,7 @@ def mechanisms():
     before = report_view_text()
     doc = FreeCAD.newDocument("GuiSmokeCard")
     Gui.runCommand("PopUp_Card")
-    cards = [o for o in doc.Objects if assembly.is_card(o)]
+    cards = [o for o in doc.Objects if card_scaffold.is_card(o)]
     out["card_made"] = len(cards) == 1 and cards[0].Preset == "A5"
     card = cards[0]
     card.Preset = "A4"
@@ -174,7 +186,7 @@ def mechanisms():
     Gui.Selection.clearSelection()
     Gui.Selection.addSelection(tent)  # a mechanism stands for its card
     Gui.runCommand("PopUp_CheckValidity")
-    out["checked"] = [r["object"] for r in check_validity.last_reports] == [card.Name]
+    out["checked"] = check_validity.last_checked == [card.Name]
     out["valid"] = card.Valid
     out["diagnostics"] = list(card.Diagnostics)
 
@@ -240,10 +252,133 @@ def mechanisms():
     FreeCAD.closeDocument(doc.Name)
 
 
+def selection_messages():
+    # What the commands say when nothing suitable is selected, and that they then add nothing.
+    from popupwb import make
+
+    out = result["selection"] = {}
+    doc = FreeCAD.newDocument("GuiSmokeSelection")
+    card = make.make_card(doc, name="Card")
+    make.make_card(doc, name="Card")  # Card001: two cards, so none is "the only one"
+    doc.recompute()
+    tent = make.make_tent_fold(card, name="Tent")
+    doc.recompute()
+    count = len(doc.Objects)
+
+    def messages(command, selected=()):
+        Gui.Selection.clearSelection()
+        for obj in selected:
+            Gui.Selection.addSelection(obj)
+        wait_until(lambda: False, 100)
+        before = report_view_text()
+        Gui.runCommand(command)
+        wait_until(lambda: False, 200)  # the report view appends queued messages on events
+        lines = report_view_text()[len(before) :].splitlines()
+        return [re.sub(r"^\d\d:\d\d:\d\d\s+", "", line) for line in lines if line]  # no time
+
+    out["mechanism_without_host"] = messages("PopUp_StepFold")
+    out["mechanism_on_tent"] = messages("PopUp_StepFold", [tent])
+    out["sheet_without_card"] = messages("PopUp_CuttingSheet")
+    out["added"] = len(doc.Objects) - count
+    Gui.Selection.clearSelection()
+    FreeCAD.closeDocument(doc.Name)
+
+
+def python_console_text():
+    console = Gui.getMainWindow().findChild(QtGui.QPlainTextEdit, "Python console")
+    return console.toPlainText() if console else ""
+
+
+def macro_replay():
+    # The commands echo their Python in the console (as the macro recorder records it); replaying
+    # those lines in a fresh document makes the same objects.
+    out = result["macro"] = {}
+    doc = FreeCAD.newDocument("GuiSmokeMacro")
+    before = python_console_text()
+
+    def run(command, host=None):
+        Gui.Selection.clearSelection()
+        if host is not None:
+            Gui.Selection.addSelection(host)
+        known = set(o.Name for o in doc.Objects)
+        Gui.runCommand(command)
+        return [o for o in doc.Objects if o.Name not in known][:1]
+
+    (card,) = run("PopUp_Card")
+    (box,) = run("PopUp_BoxFold", card)
+    run("PopUp_TentFold", box)
+    run("PopUp_CuttingSheet", card)
+    run("PopUp_CheckValidity", card)
+    wait_until(lambda: False, 200)
+    # The console's last line is its prompt, which the next statement fills in.
+    new_lines = python_console_text().splitlines()[len(before.splitlines()) - 1 :]
+    echoed = [
+        line[len(">>> ") :]
+        for line in new_lines
+        if line.startswith(">>> ") and ("popupwb" in line or "recompute()" in line)
+    ]
+    out["lines"] = echoed
+
+    def summary(document):
+        from popupwb import card_scaffold
+
+        objects = [o for o in document.Objects if hasattr(o, "Proxy") and o.Proxy is not None]
+        return {
+            o.Name: {
+                "class": type(o.Proxy).__name__,
+                "host": o.Host.Name if getattr(o, "Host", None) else None,
+                "parameters": o.Proxy.parameter_values(o) if card_scaffold.is_mechanism(o) else [],
+                "faces": len(o.Shape.Faces),
+                "valid": getattr(o, "Valid", None),
+                "pieces": getattr(o, "PieceCount", None),
+            }
+            for o in objects
+        }
+
+    out["original"] = summary(doc)
+    replay = FreeCAD.newDocument("GuiSmokeReplay")
+    FreeCAD.setActiveDocument(replay.Name)
+    exec("\n".join(echoed), {"FreeCAD": FreeCAD})
+    out["replayed"] = summary(replay)
+    FreeCAD.closeDocument(replay.Name)
+    FreeCAD.closeDocument(doc.Name)
+
+
+def legacy_documents():
+    # Documents an older workbench saved, headless (no view providers stored: features attach
+    # theirs by name) and from the GUI (view providers stored by module and class).
+    out = result["legacy"] = {}
+    for path in CONFIG["legacy"]:
+        doc = FreeCAD.openDocument(path)
+        objects = [doc.getObject(name) for name in ("Card", "Tent", "CuttingSheet")]
+        doc.getObject("Card").FoldAngle = 120.0
+        doc.recompute()
+        shown = objects[:2]
+        coloured = wait_until(
+            lambda: all(len(o.ViewObject.DiffuseColor) == len(o.Shape.Faces) for o in shown),
+            10000,
+        )
+        out[os.path.basename(path)] = {
+            "view_providers": [type(o.ViewObject.Proxy).__name__ for o in objects],
+            "icons": [os.path.basename(o.ViewObject.Proxy.getIcon()) for o in objects],
+            "coloured": coloured,
+            "states": sorted(set(s for o in objects for s in o.State)),
+        }
+        FreeCAD.closeDocument(doc.Name)
+
+
 def main():
+    # "Show script commands in python console" (off by default): what a user turns on to see them.
+    FreeCAD.ParamGet("User parameter:BaseApp/Preferences/Macro").SetBool("ScriptToPyConsole", True)
     Gui.activateWorkbench("PopUpWorkbench")
     result["workbench"] = Gui.activeWorkbench().name()
     result["commands"] = [c for c in CONFIG["commands"] if c in Gui.listCommands()]
+    # Every registered PopUp_* command that is not one of the others comes from the registry.
+    from popupwb import mechanism_registry
+
+    registered = set(c for c in Gui.listCommands() if c.startswith("PopUp_"))
+    result["mechanism_commands"] = sorted(registered - set(CONFIG["other_commands"]))
+    result["registry_commands"] = sorted(mechanism_registry.COMMAND_IDS)
     toolbar = Gui.getMainWindow().findChild(QtGui.QToolBar, "PopUp")
     result["toolbar_actions"] = len(toolbar.actions()) if toolbar else 0
 
@@ -263,7 +398,7 @@ def main():
     Gui.Selection.clearSelection()
     Gui.Selection.addSelection(obj)
     Gui.runCommand(CONFIG["check_command"])
-    result["command_ran"] = len(check_validity.last_reports) == 1
+    result["command_ran"] = check_validity.last_checked == [obj.Name]
     result["valid"] = obj.Valid
     result["diagnostics"] = list(obj.Diagnostics)
     Gui.Selection.clearSelection()
@@ -289,6 +424,9 @@ def main():
     mechanisms()
     motion_mechanisms()
     cutting_sheet()
+    selection_messages()
+    macro_replay()
+    legacy_documents()
 
 
 def cutting_sheet():
@@ -376,7 +514,9 @@ def run_freecad():
         "sample": SAMPLE,
         "fold_angle": 120.0,
         "check_command": "PopUp_CheckValidity",
+        "legacy": [os.path.join(SOURCE_DIR, "tests", "data", name) for name in LEGACY],
         "commands": COMMANDS,
+        "other_commands": OTHER_COMMANDS,
         "png": os.path.join(OUT_DIR, "screenshot.png"),
         "card_png": os.path.join(OUT_DIR, "card.png"),
         "result": os.path.join(OUT_DIR, "result.json"),
@@ -506,6 +646,12 @@ def main():
     check("commands registered", result.get("commands") == COMMANDS, result.get("commands"))
     check("toolbar has the commands", result.get("toolbar_actions", 0) >= len(COMMANDS))
     check(
+        "every mechanism command comes from the registry, and every registry entry is a command",
+        result.get("mechanism_commands") == result.get("registry_commands")
+        and result.get("registry_commands") == sorted(set(COMMANDS) - set(OTHER_COMMANDS)),
+        result.get("mechanism_commands"),
+    )
+    check(
         "scaffold recomputed to a valid shape",
         result.get("shape_valid") is True and "Invalid" not in result.get("object_state", []),
         result.get("object_state"),
@@ -537,6 +683,72 @@ def main():
         + os.path.join(OUT_DIR, "screenshot.png"),
     )
     check_mechanisms(check, result.get("mechanisms") or {})
+    selection = result.get("selection") or {}
+    hosts = "a card or a mechanism offering base patch pairs (box fold, floating layer, v-fold)"
+    check(
+        "a mechanism command without a host says what to select",
+        selection.get("mechanism_without_host")
+        == [f"PopUp_StepFold: select {hosts} (the document has several: Card, Card001)"],
+        selection.get("mechanism_without_host"),
+    )
+    check(
+        "a mechanism command on a tent says it offers no pair",
+        selection.get("mechanism_on_tent")
+        == [f"PopUp_StepFold: Tent offers no base patch pair: select {hosts}"],
+        selection.get("mechanism_on_tent"),
+    )
+    check(
+        "PopUp_CuttingSheet without a card says what to select",
+        selection.get("sheet_without_card")
+        == [
+            "PopUp_CuttingSheet: select a card or one of its mechanisms "
+            "(the document has several: Card, Card001)"
+        ],
+        selection.get("sheet_without_card"),
+    )
+    check("refused commands add nothing", selection.get("added") == 0, selection.get("added"))
+    macro = result.get("macro") or {}
+    expected = [
+        "card = popupwb.make.make_card(FreeCAD.ActiveDocument, preset='A5')",
+        "mechanism = popupwb.make.make_box_fold(FreeCAD.ActiveDocument.getObject('Card'))",
+        "mechanism = popupwb.make.make_tent_fold(FreeCAD.ActiveDocument.getObject('BoxFold'))",
+        "sheet = popupwb.make.make_cutting_sheet(FreeCAD.ActiveDocument.getObject('Card'), "
+        "paper='A4', name='CardSheets')",
+        "popupwb.validity.run_check(FreeCAD.ActiveDocument.getObject('Card'))",
+    ]
+    lines = macro.get("lines") or []
+    check(
+        "the commands echo their popupwb calls in the Python console",
+        [line for line in lines if "popupwb." in line and "import" not in line] == expected
+        and lines.count("import popupwb.make") == 4
+        and lines.count("import popupwb.validity") == 1
+        and lines.count("FreeCAD.ActiveDocument.recompute()") == 4,
+        lines,
+    )
+    original = macro.get("original") or {}
+    check(
+        "replaying the echoed lines in a fresh document makes the same objects",
+        set(original) == {"Card", "BoxFold", "TentFold", "CardSheets"}
+        and macro.get("replayed") == original
+        and original["TentFold"]["host"] == "BoxFold"
+        and original["Card"]["valid"] is True,
+        {"original": original, "replayed": macro.get("replayed")},
+    )
+    for name in LEGACY:
+        legacy = (result.get("legacy") or {}).get(name) or {}
+        check(
+            f"{name} opens with its view providers",
+            legacy.get("view_providers")
+            == ["CardViewProvider", "MechanismViewProvider", "CuttingSheetViewProvider"]
+            and legacy.get("icons")
+            == ["PopUp_Card.svg", "PopUp_TentFold.svg", "PopUp_CuttingSheet.svg"],
+            legacy,
+        )
+        check(
+            f"{name} recomputes, coloured by role",
+            legacy.get("coloured") is True and legacy.get("states") == ["Up-to-date"],
+            legacy,
+        )
     failed = checks.count(False)
     print(f"gui_smoke: {len(checks) - failed} passed, {failed} failed")
     return 1 if failed else 0

@@ -26,7 +26,7 @@ ALL_FACES = 2 + sum(FACES.values())
 
 @pytest.fixture(scope="module")
 def popup(freecad):
-    import popupwb.assembly as assembly
+    import popupwb.card_scaffold as card_scaffold
     import popupwb.make as make
     import popupwb.validity as validity
     from popupwb.core import popupcore
@@ -35,11 +35,11 @@ def popup(freecad):
         pass
 
     modules = Modules()
-    modules.core, modules.make, modules.validity, modules.assembly = (
+    modules.core, modules.make, modules.validity, modules.card_scaffold = (
         popupcore,
         make,
         validity,
-        assembly,
+        card_scaffold,
     )
     return modules
 
@@ -157,7 +157,7 @@ def test_closed_card_lies_in_the_page_plane(doc, popup, card):
 
 
 def test_fold_angle_poses_the_whole_card_with_one_simulation(doc, popup, card, monkeypatch):
-    built = popup.assembly.assembly_of(card["Card"])
+    built = popup.card_scaffold.for_card(card["Card"])
     calls = []
     simulate = popup.core.simulate_fold
     resume = popup.core.continue_fold
@@ -179,7 +179,7 @@ def test_fold_angle_poses_the_whole_card_with_one_simulation(doc, popup, card, m
     assert touched == ["Card"]
     recompute_ok(doc, *card.values())
     assert calls == [[math.radians(77.0)]]  # one simulation, shared by the five features
-    assert popup.assembly.assembly_of(card["Card"]) is built  # the design was not rebuilt
+    assert popup.card_scaffold.for_card(card["Card"]) is built  # the design was not rebuilt
     for name, obj in card.items():
         assert np.abs(np.array(vertices(obj.Shape)) - before[name]).max() > 1.0, name
     card["Card"].FoldAngle = 180.0
@@ -228,7 +228,7 @@ def test_a_crossing_is_reported_with_the_patches_it_names(doc, popup, card):
     recompute_ok(doc, *card.values())
     report = popup.validity.run_check(card["Card"])
     assert report["valid"] is False and report["intersection_free"] is False
-    built = popup.assembly.assembly_of(card["Card"])
+    built = popup.card_scaffold.for_card(card["Card"])
     offending = popup.validity.offending_patches(report)
     owners = {built.patch_owner(i) for i in offending}
     assert owners == {"Box", "VFold"}
@@ -266,7 +266,7 @@ def test_a_failing_host_takes_down_only_what_stands_on_it(doc, popup, card):
     assert card["Box"].getStatusString().startswith("Box: Height = -1 mm, must be > 0")
     assert not in_error(card["VFold"]) and not in_error(card["Card"])
     assert len(card["Card"].Shape.Faces) == 2 + 2 + 6  # the pages, the v-fold and the v-box
-    built = popup.assembly.assembly_of(card["Card"])
+    built = popup.card_scaffold.for_card(card["Card"])
     for name in ("Tent", "Layer", "Step"):
         assert built.errors[name] == f"{name}: Host = Box, which is in error; fix it first"
     card["Box"].Height = 30.0
@@ -292,14 +292,16 @@ def test_card_errors_name_the_card_and_the_property(doc, popup, card):
 
 def test_host_pairs_come_from_the_host_and_follow_its_label(doc, popup, card):
     box, tent, step = card["Box"], card["Tent"], card["Step"]
-    built = popup.assembly.assembly_of(card["Card"])
+    built = popup.card_scaffold.for_card(card["Card"])
     names = ["Box.top", "Box.side_ground", "Box.side_backdrop"]
-    assert built.pair_names("Box") == names == popup.assembly.host_pair_names(box)
+    assert built.pair_names("Box") == names == popup.card_scaffold.host_pair_names(box)
     layer = card["Layer"]  # what the workbench expects a host to offer is what the core offers
-    assert built.pair_names("Layer") == popup.assembly.host_pair_names(layer)
-    assert built.pair_names("Tent") == [] == popup.assembly.host_pair_names(tent)
+    assert built.pair_names("Layer") == popup.card_scaffold.host_pair_names(layer)
+    assert built.pair_names("Tent") == [] == popup.card_scaffold.host_pair_names(tent)
     v_fold = card["VFold"]
-    assert built.pair_names("VFold") == ["VFold.wings"] == popup.assembly.host_pair_names(v_fold)
+    assert (
+        built.pair_names("VFold") == ["VFold.wings"] == popup.card_scaffold.host_pair_names(v_fold)
+    )
     assert built.pair_names(card["Card"].Name) == ["central fold"]
     assert tent.getEnumerationsOfProperty("HostPair") == names
     assert (tent.HostPair, step.HostPair) == ("Box.top", "Box.side_ground")
@@ -309,7 +311,7 @@ def test_host_pairs_come_from_the_host_and_follow_its_label(doc, popup, card):
     recompute_ok(doc, *card.values())
     assert (tent.HostPair, step.HostPair) == ("Cake.top", "Cake.side_ground")
     assert vertices(step.Shape) == pytest.approx(step_points, abs=1e-12)
-    names = [p.name for p in popup.assembly.assembly_of(card["Card"]).scaffold.patches]
+    names = [p.name for p in popup.card_scaffold.for_card(card["Card"]).scaffold.patches]
     assert "Cake.TG" in names and not any(n.startswith("Box.") for n in names)
     step.HostPair = "Cake.side_backdrop"  # same step on the other wall: mirrored in x
     recompute_ok(doc, *card.values())
@@ -348,7 +350,7 @@ def test_thickened_card_has_one_solid_per_patch(doc, popup, card):
     for name, count in FACES.items():
         assert len(card[name].Shape.Solids) == count and card[name].Shape.isValid()
     assert len(card["Card"].Shape.Solids) == ALL_FACES
-    area = sum(p.area() for p in popup.assembly.assembly_of(card["Card"]).scaffold.patches)
+    area = sum(p.area() for p in popup.card_scaffold.for_card(card["Card"]).scaffold.patches)
     assert card["Card"].Shape.Volume == pytest.approx(0.3 * area, rel=1e-6)
 
 
@@ -359,7 +361,7 @@ def test_make_refuses_unknown_pairs_and_parameters(doc, popup, card):
         popup.make.make_step_fold(card["Card"], rise=3)
     with pytest.raises(ValueError, match="must be a PopUpCard or a mechanism"):
         popup.make.make_box_fold(doc.addObject("App::FeaturePython", "Plain"))
-    assert popup.assembly.host_pair_names(card["Tent"]) == []  # a tent offers nothing
+    assert popup.card_scaffold.host_pair_names(card["Tent"]) == []  # a tent offers nothing
 
 
 @pytest.mark.parametrize("kind", ["tent", "step", "v", "box", "v_box", "floating_layer"])
@@ -543,7 +545,7 @@ def test_horizontal_translation_slides_m_through_the_slit(doc, popup):
     x, z = popup.core.horizontal_translation_tip(params, math.radians(90.0))
     tip = popup_vector((x, 65.0, z))  # M stops 5 mm short of the step's ends (the slit's bridge)
     assert min((v.Point - tip).Length for v in slider.Shape.Vertexes) < 1e-9
-    scaffold = popup.assembly.assembly_of(card).scaffold
+    scaffold = popup.card_scaffold.for_card(card).scaffold
     assert len(scaffold.slits) == 1
     assert popup.validity.run_check(card)["valid"]
     slider.RunBackdrop = 45.0  # not below RunGround: refused, naming the property

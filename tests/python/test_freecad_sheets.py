@@ -25,7 +25,7 @@ SHEET_GAP = 20.0  # mm between sheets, as in sheets.dxf
 
 @pytest.fixture(scope="module")
 def popup(freecad):
-    import popupwb.assembly as assembly
+    import popupwb.card_scaffold as card_scaffold
     import popupwb.features.cutting_sheet as cutting_sheet
     import popupwb.make as make
     import popupwb.sheets.techdraw_pages as pages
@@ -35,7 +35,7 @@ def popup(freecad):
         pass
 
     modules = Modules()
-    modules.core, modules.make, modules.assembly = popupcore, make, assembly
+    modules.core, modules.make, modules.card_scaffold = popupcore, make, card_scaffold
     modules.feature, modules.pages = cutting_sheet, pages
     return modules
 
@@ -80,7 +80,7 @@ def page_objects_count(doc):
 
 def test_flat_faces_are_the_patches_exactly(doc, popup, card):
     sheet = card["Sheet"]
-    scaffold = popup.assembly.assembly_of(card["Card"]).scaffold
+    scaffold = popup.card_scaffold.for_card(card["Card"]).scaffold
     sheet_set = sheet_set_of(sheet)
     assert sheet.SheetCount >= 1 and sheet.SheetCount == len(sheet_set["sheets"])
     assert sheet.ShelfSheetCount == sheet_set["shelf_sheet_count"]

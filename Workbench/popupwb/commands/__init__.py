@@ -9,12 +9,13 @@ from popupwb.commands import (
     export_sheets,
     load_design,
 )
+from popupwb.mechanism_registry import COMMAND_IDS as MECHANISM_COMMAND_IDS
 
 # Toolbar and menu order: make a card, nest mechanisms on it, check and play it, lay it out on
 # cutting sheets and export them; design files.
 COMMANDS = (
     [create_card.COMMAND_ID]
-    + create_mechanism.COMMAND_IDS
+    + MECHANISM_COMMAND_IDS
     + [check_validity.COMMAND_ID, animate.COMMAND_ID]
     + [create_cutting_sheet.COMMAND_ID, export_sheets.COMMAND_ID, load_design.COMMAND_ID]
 )

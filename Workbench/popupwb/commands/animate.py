@@ -9,23 +9,14 @@ import FreeCAD
 import FreeCADGui
 
 import popupwb
-from popupwb import assembly
+from popupwb import card_scaffold
+from popupwb.commands.selection import SelectionError, selected_card
 
 COMMAND_ID = "PopUp_Animate"
 STEP_DEGREES = 3.0
 STEP_MS = 30
 
 _player = None  # the running Player, kept alive here
-
-
-def _selected_card(doc):
-    for obj in FreeCADGui.Selection.getSelection(doc.Name):
-        try:
-            return assembly.root_card(obj)
-        except ValueError:
-            continue
-    cards = [o for o in doc.Objects if assembly.is_card(o)]
-    return cards[0] if len(cards) == 1 else None
 
 
 class Player:
@@ -108,15 +99,15 @@ class AnimateCommand:
 
     def IsActive(self):
         doc = FreeCAD.ActiveDocument
-        return doc is not None and any(assembly.is_card(o) for o in doc.Objects)
+        return doc is not None and any(card_scaffold.is_card(o) for o in doc.Objects)
 
     def Activated(self):
         if stop():
             return
-        doc = FreeCAD.ActiveDocument
-        card = _selected_card(doc) if doc else None
-        if card is None:
-            FreeCAD.Console.PrintError(f"{COMMAND_ID}: select a card (or one of its mechanisms)\n")
+        try:
+            card = selected_card(FreeCAD.ActiveDocument)
+        except SelectionError as error:
+            FreeCAD.Console.PrintError(f"{COMMAND_ID}: {error}\n")
             return
         play(card)
 

@@ -5,41 +5,20 @@ import FreeCAD
 import FreeCADGui
 
 import popupwb
-from popupwb import assembly
+from popupwb import card_scaffold
+from popupwb.commands.echoed_python import import_echoed, object_expression
+from popupwb.commands.selection import SelectionError, selected_designs
 from popupwb.features.scaffold_feature import is_scaffold
 
 COMMAND_ID = "PopUp_CheckValidity"
 
-# Reports of the last run, for scripts and the GUI smoke test (the command returns nothing).
-last_reports = []
+# Names of the objects the last run checked, for scripts and the GUI smoke test (each check
+# writes its verdict into the object's Valid and Diagnostics).
+last_checked = []
 
 
 def _checkable(obj):
-    return is_scaffold(obj) or assembly.is_card(obj)
-
-
-def _target(obj):
-    """The object a check of `obj` runs on: itself, or the card of a mechanism (None if none)."""
-    if _checkable(obj):
-        return obj
-    if assembly.is_mechanism(obj):
-        try:
-            return assembly.root_card(obj)
-        except ValueError:
-            return None
-    return None
-
-
-def _targets():
-    doc = FreeCAD.ActiveDocument
-    if doc is None:
-        return []
-    selected = []
-    for obj in FreeCADGui.Selection.getSelection(doc.Name):
-        target = _target(obj)
-        if target is not None and all(target is not other for other in selected):
-            selected.append(target)
-    return selected or [o for o in doc.Objects if _checkable(o)]
+    return is_scaffold(obj) or card_scaffold.is_card(obj)
 
 
 class CheckValidityCommand:
@@ -57,16 +36,22 @@ class CheckValidityCommand:
         return doc is not None and any(_checkable(o) for o in doc.Objects)
 
     def Activated(self):
-        from popupwb.validity import run_check
-
         _show_report_view()
-        reports = []
-        for obj in _targets():
+        try:
+            targets = selected_designs(FreeCAD.ActiveDocument)
+        except SelectionError as error:
+            FreeCAD.Console.PrintError(f"{COMMAND_ID}: {error}\n")
+            return
+        import_echoed("popupwb.validity")
+        checked = []
+        for obj in targets:
+            # Echoed like the commands that add objects, so a macro can re-run the check.
             try:
-                reports.append(run_check(obj))
+                FreeCADGui.doCommand(f"popupwb.validity.run_check({object_expression(obj)})")
+                checked.append(obj.Name)
             except RuntimeError as error:  # a core failure on one object must not stop the rest
                 FreeCAD.Console.PrintError(f"{obj.Label}: validity check failed: {error}\n")
-        last_reports[:] = reports
+        last_checked[:] = checked
 
 
 def _show_report_view():

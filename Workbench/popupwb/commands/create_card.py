@@ -4,6 +4,8 @@ import FreeCAD
 import FreeCADGui
 
 import popupwb
+from popupwb import card_scaffold
+from popupwb.commands.echoed_python import run_echoed
 
 COMMAND_ID = "PopUp_Card"
 
@@ -25,14 +27,14 @@ class CreateCardCommand:
 
 
 def create(preset="A5"):
-    """What the command does; returns the new card."""
-    from popupwb.make import make_card
-
-    doc = FreeCAD.ActiveDocument or FreeCAD.newDocument()
-    doc.openTransaction("Add pop-up card")
-    card = make_card(doc, preset=preset)
-    doc.commitTransaction()
-    doc.recompute()
+    """What the command does; returns the new card. The console shows the
+    `popupwb.make.make_card(...)` line it ran (and `FreeCAD.newDocument()` without a document)."""
+    if FreeCAD.ActiveDocument is None:
+        FreeCADGui.doCommand("FreeCAD.newDocument()")
+    doc = FreeCAD.ActiveDocument
+    line = f"card = popupwb.make.make_card(FreeCAD.ActiveDocument, preset={preset!r})"
+    added = run_echoed(doc, "Add pop-up card", [line])
+    card = next(o for o in added if card_scaffold.is_card(o))
     if FreeCADGui.ActiveDocument is not None:
         FreeCADGui.Selection.clearSelection()
         FreeCADGui.Selection.addSelection(card)

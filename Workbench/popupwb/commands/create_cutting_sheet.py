@@ -5,23 +5,13 @@ import FreeCAD
 import FreeCADGui
 
 import popupwb
-from popupwb import assembly
+from popupwb import card_scaffold
+from popupwb.features.cutting_sheet import is_cutting_sheet
+from popupwb.commands.echoed_python import object_expression, run_echoed
+from popupwb.commands.selection import SelectionError, selected_card
 
 COMMAND_ID = "PopUp_CuttingSheet"
 FIRST_PAPERS = ("A4", "A3")
-
-
-def find_card(doc):
-    """The root card of the first selected card or mechanism, else the only card, else None."""
-    if doc is None:
-        return None
-    for obj in FreeCADGui.Selection.getSelection(doc.Name):
-        try:
-            return assembly.root_card(obj)
-        except ValueError:  # not a PopUp object, or a mechanism without card
-            continue
-    cards = [o for o in doc.Objects if assembly.is_card(o)]
-    return cards[0] if len(cards) == 1 else None
 
 
 def first_paper(card):
@@ -30,7 +20,7 @@ def first_paper(card):
     """
     from popupwb.sheets import export
 
-    built = assembly.assembly_of(card)
+    built = card_scaffold.for_card(card)
     if built.card_error is None:
         for paper in FIRST_PAPERS:
             try:
@@ -52,28 +42,27 @@ class CreateCuttingSheetCommand:
 
     def IsActive(self):
         doc = FreeCAD.ActiveDocument
-        return doc is not None and any(assembly.is_card(o) for o in doc.Objects)
+        return doc is not None and any(card_scaffold.is_card(o) for o in doc.Objects)
 
     def Activated(self):
         create()
 
 
 def create(card=None):
-    """What the command does; returns the new CuttingSheet (None, with a message, without card)."""
-    from popupwb.make import make_cutting_sheet
-
+    """What the command does; returns the new CuttingSheet (None, with a message, without card).
+    The console shows the `popupwb.make.make_cutting_sheet(...)` line it ran."""
     doc = FreeCAD.ActiveDocument
-    card = card or find_card(doc)
-    if card is None:
-        FreeCAD.Console.PrintError(
-            f"{COMMAND_ID}: select a card or one of its mechanisms (the document has several "
-            "cards or none)\n"
-        )
+    try:
+        card = card or selected_card(doc)
+    except SelectionError as error:
+        FreeCAD.Console.PrintError(f"{COMMAND_ID}: {error}\n")
         return None
-    doc.openTransaction("Add cutting sheets")
-    obj = make_cutting_sheet(card, paper=first_paper(card), name=f"{card.Name}Sheets")
-    doc.commitTransaction()
-    doc.recompute()
+    line = (
+        f"sheet = popupwb.make.make_cutting_sheet({object_expression(card)}, "
+        f"paper={first_paper(card)!r}, name={card.Name + 'Sheets'!r})"
+    )
+    added = run_echoed(doc, "Add cutting sheets", [line])
+    obj = next(o for o in added if is_cutting_sheet(o))
     if "Invalid" in obj.State:
         FreeCAD.Console.PrintError(f"{obj.getStatusString()}\n")
     FreeCADGui.Selection.clearSelection()

@@ -12,20 +12,10 @@ import FreeCAD
 import FreeCADGui
 
 import popupwb
+from popupwb.commands.selection import SelectionError, selected_cutting_sheet
 from popupwb.features.cutting_sheet import export_cutting_sheet, is_cutting_sheet
 
 COMMAND_ID = "PopUp_ExportSheets"
-
-
-def selected_cutting_sheet(doc):
-    """The first selected CuttingSheet, else the document's only one, else None."""
-    if doc is None:
-        return None
-    for obj in FreeCADGui.Selection.getSelection(doc.Name):
-        if is_cutting_sheet(obj):
-            return obj
-    sheets = [o for o in doc.Objects if is_cutting_sheet(o)]
-    return sheets[0] if len(sheets) == 1 else None
 
 
 class ExportSheetsCommand:
@@ -44,11 +34,10 @@ class ExportSheetsCommand:
     def Activated(self):
         from PySide import QtGui
 
-        obj = selected_cutting_sheet(FreeCAD.ActiveDocument)
-        if obj is None:
-            FreeCAD.Console.PrintError(
-                f"{COMMAND_ID}: select a cutting sheet (the document has several)\n"
-            )
+        try:
+            obj = selected_cutting_sheet(FreeCAD.ActiveDocument)
+        except SelectionError as error:
+            FreeCAD.Console.PrintError(f"{COMMAND_ID}: {error}\n")
             return
         folder = QtGui.QFileDialog.getExistingDirectory(
             FreeCADGui.getMainWindow(), f"Export {obj.Label} into"

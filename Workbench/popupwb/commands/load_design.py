@@ -6,6 +6,8 @@ import FreeCAD
 import FreeCADGui
 
 import popupwb
+from popupwb.commands.echoed_python import run_echoed
+from popupwb.features.scaffold_feature import is_scaffold
 
 COMMAND_ID = "PopUp_LoadDesign"
 
@@ -40,20 +42,22 @@ class LoadDesignCommand:
 
 
 def load(path):
-    """What the command does once a file is chosen; returns the new object (or None)."""
-    from popupwb.make import make_scaffold
-
-    doc = FreeCAD.ActiveDocument or FreeCAD.newDocument()
-    doc.openTransaction("Load pop-up design")
+    """What the command does once a file is chosen; returns the new object (or None). The console
+    shows the `popupwb.make.make_scaffold(...)` line it ran."""
+    if FreeCAD.ActiveDocument is None:
+        FreeCADGui.doCommand("FreeCAD.newDocument()")
+    doc = FreeCAD.ActiveDocument
+    label = os.path.splitext(os.path.basename(path))[0]
+    lines = [
+        f"scaffold = popupwb.make.make_scaffold(FreeCAD.ActiveDocument, {path!r})",
+        f"scaffold.Label = {label!r}",
+    ]
     try:
-        obj = make_scaffold(doc, path)
+        added = run_echoed(doc, "Load pop-up design", lines)
     except (OSError, ValueError) as error:
-        doc.abortTransaction()
         FreeCAD.Console.PrintError(f"PopUp: {error}\n")
         return None
-    obj.Label = os.path.splitext(os.path.basename(path))[0]
-    doc.commitTransaction()
-    doc.recompute()
+    obj = next(o for o in added if is_scaffold(o))
     if FreeCADGui.ActiveDocument is not None:
         FreeCADGui.ActiveDocument.ActiveView.fitAll()
     return obj

@@ -9,11 +9,12 @@ import time
 
 import FreeCAD
 
-from popupwb import assembly
+from popupwb import card_scaffold
 from popupwb.features.property_adder import add_validity_outputs, property_adder
 from popupwb.stateless_proxy import StatelessProxy
+from popupwb.view_provider_by_name import attach_view_provider
 
-TYPE = assembly.CARD_TYPE
+TYPE = card_scaffold.CARD_TYPE
 VERSION = "1"
 
 # Width (along the fold) and Depth (each page) of the sheet folded in half across its long side:
@@ -31,7 +32,7 @@ PRESET_NAMES = list(PRESETS) + [CUSTOM]
 
 def is_card(obj):
     """True for document objects driven by PopUpCard."""
-    return assembly.is_card(obj)
+    return card_scaffold.is_card(obj)
 
 
 def _restoring(obj):
@@ -43,9 +44,11 @@ _APPLYING_PRESET = set()
 
 
 class PopUpCard(StatelessProxy):
-    """Proxy of a Part::FeaturePython: the card and, through the assembly, all its mechanisms."""
+    """Proxy of a Part::FeaturePython: the card and, through its scaffold, all its mechanisms."""
 
     TYPE = TYPE
+    # popupwb.viewproviders module and class, imported only in the GUI (view_provider_by_name)
+    VIEW_PROVIDER = ("card_viewprovider", "CardViewProvider")
 
     def __init__(self, obj):
         obj.Proxy = self
@@ -106,10 +109,7 @@ class PopUpCard(StatelessProxy):
 
     def onDocumentRestored(self, obj):
         self.add_properties(obj)
-        if FreeCAD.GuiUp:
-            from popupwb.viewproviders.card_viewprovider import CardViewProvider, attach_if_missing
-
-            attach_if_missing(obj, CardViewProvider)
+        attach_view_provider(obj)  # saved headless: it has none yet
 
     def execute(self, obj):
         start = time.perf_counter()
@@ -121,7 +121,7 @@ class PopUpCard(StatelessProxy):
             raise ValueError(
                 f"{obj.Label}: PaperThickness = {thickness:g} mm, must be > 0 when Thickened"
             )
-        built = assembly.assembly_of(obj)
+        built = card_scaffold.for_card(obj)
         if built.card_error:
             raise ValueError(built.card_error)
         if obj.CheckedDesign != built.digest and (obj.Valid or obj.Diagnostics):

@@ -21,10 +21,11 @@ import json
 
 import FreeCAD
 
-from popupwb import assembly
+from popupwb import card_scaffold
 from popupwb.features.property_adder import property_adder
 from popupwb.sheets.sheet_options import SHEET_OPTIONS, defaults, sides_text
 from popupwb.stateless_proxy import StatelessProxy
+from popupwb.view_provider_by_name import attach_view_provider
 
 TYPE = "PopUp::CuttingSheet"
 VERSION = "1"
@@ -52,6 +53,8 @@ class CuttingSheet(StatelessProxy):
     """Proxy of a Part::FeaturePython: the flat layout of its Card."""
 
     TYPE = TYPE
+    # popupwb.viewproviders module and class, imported only in the GUI (view_provider_by_name)
+    VIEW_PROVIDER = ("cutting_sheet_viewprovider", "CuttingSheetViewProvider")
 
     def __init__(self, obj):
         obj.Proxy = self
@@ -165,18 +168,12 @@ class CuttingSheet(StatelessProxy):
 
     def onDocumentRestored(self, obj):
         self.add_properties(obj)
-        if FreeCAD.GuiUp:
-            from popupwb.viewproviders.card_viewprovider import attach_if_missing
-            from popupwb.viewproviders.cutting_sheet_viewprovider import (
-                CuttingSheetViewProvider,
-            )
-
-            attach_if_missing(obj, CuttingSheetViewProvider)
+        attach_view_provider(obj)  # saved headless: it has none yet
 
     def execute(self, obj):
         from popupwb.sheets import export
 
-        built = assembly.assembly_of(self._card(obj))
+        built = card_scaffold.for_card(self._card(obj))
         options = layout_options(obj)
         self._check_styles(obj)
         settings = (obj.MakePages, obj.MountainStyle, obj.ValleyStyle, obj.Force)
@@ -199,10 +196,10 @@ class CuttingSheet(StatelessProxy):
     def _card(self, obj):
         """The linked card, built; raises naming what is wrong with it."""
         card = obj.Card
-        if card is None or not assembly.is_card(card):
+        if card is None or not card_scaffold.is_card(card):
             found = "empty" if card is None else card.Label
             raise self._error(obj, f"Card = {found}, must be a PopUpCard")
-        built = assembly.assembly_of(card)
+        built = card_scaffold.for_card(card)
         if built.card_error:
             raise self._error(
                 obj, f"the card {card.Label} is in error, fix it first: {built.card_error}"

@@ -1,7 +1,7 @@
 """MechanismFeature: base of the pop-up mechanism features (tent, step, v-fold, box fold...).
 
 A mechanism stands on a base patch pair (HostPair) offered by its Host: the card's central fold or
-a pair a box fold offers. Its parameters are properties; the card's assembly (popupwb.assembly)
+a pair a box fold offers. Its parameters are properties; the card's scaffold (popupwb.card_scaffold)
 calls the popupcore generator with them, and execute() shows this mechanism's own patches of the
 card posed at the card's FoldAngle. A parameter the generator refuses puts only this feature (and
 what is nested on it) in error, with the core's message naming the property.
@@ -19,8 +19,9 @@ import math
 import FreeCAD
 
 
-from popupwb import assembly
+from popupwb import card_scaffold
 from popupwb.stateless_proxy import StatelessProxy
+from popupwb.view_provider_by_name import attach_view_provider
 
 VERSION = "1"
 
@@ -56,7 +57,7 @@ def _restoring(obj):
 
 def is_mechanism(obj):
     """True for document objects driven by a MechanismFeature subclass."""
-    return assembly.is_mechanism(obj)
+    return card_scaffold.is_mechanism(obj)
 
 
 class MechanismFeature(StatelessProxy):
@@ -64,6 +65,8 @@ class MechanismFeature(StatelessProxy):
 
     IS_MECHANISM = True
     TYPE = None
+    # popupwb.viewproviders module and class, imported only in the GUI (view_provider_by_name)
+    VIEW_PROVIDER = ("mechanism_viewprovider", "MechanismViewProvider")
     GROUP = "Mechanism"  # property group of the parameters
     PARAMS = None  # name of the popupcore params class, e.g. "TentFoldParams"
     GENERATOR = None  # name of the popupcore generator, e.g. "add_tent_fold"
@@ -162,11 +165,7 @@ class MechanismFeature(StatelessProxy):
 
     def onDocumentRestored(self, obj):
         self.add_properties(obj)
-        if FreeCAD.GuiUp:
-            from popupwb.viewproviders.card_viewprovider import attach_if_missing
-            from popupwb.viewproviders.mechanism_viewprovider import MechanismViewProvider
-
-            attach_if_missing(obj, MechanismViewProvider)
+        attach_view_provider(obj)  # saved headless: it has none yet
 
     def onChanged(self, obj, prop):
         if _restoring(obj) or not hasattr(obj, "Version"):
@@ -198,12 +197,12 @@ class MechanismFeature(StatelessProxy):
         """After Host changed: the Card links of this mechanism and of everything nested on it
         (their root card may have changed too), and the HostPair choices."""
         with _quiet(obj):
-            set_choices(obj, assembly.host_pair_names(obj.Host) if obj.Host else [])
+            set_choices(obj, card_scaffold.host_pair_names(obj.Host) if obj.Host else [])
         for other in obj.Document.Objects:
-            if not assembly.is_mechanism(other):
+            if not card_scaffold.is_mechanism(other):
                 continue
             try:
-                card = assembly.root_card(other)
+                card = card_scaffold.root_card(other)
             except ValueError:
                 card = None  # execute() reports it
             if other.Card is not card:
@@ -211,13 +210,13 @@ class MechanismFeature(StatelessProxy):
                     other.Card = card
 
     def execute(self, obj):
-        card = assembly.root_card(obj)  # ValueError names a bad Host
+        card = card_scaffold.root_card(obj)  # ValueError names a bad Host
         if obj.Card is not card:
             raise ValueError(
                 f"{obj.Label}: Card = {obj.Card.Label if obj.Card else 'empty'}, must be "
                 f"{card.Label}, the card at the root of its Host chain (set Host again)"
             )
-        built = assembly.assembly_of(card)
+        built = card_scaffold.for_card(card)
         if built.card_error is None and obj.Host.Name in built.offered:
             with _quiet(obj):
                 set_choices(obj, built.pair_names(obj.Host.Name))
@@ -226,7 +225,7 @@ class MechanismFeature(StatelessProxy):
             raise ValueError(error)
         if obj.Name not in built.patches:
             raise ValueError(
-                f"{obj.Label}: not part of {card.Label}'s assembly (Host = "
+                f"{obj.Label}: not part of {card.Label}'s scaffold (Host = "
                 f"{obj.Host.Label}); recompute the document"
             )
         angle = card.FoldAngle.Value

@@ -17,6 +17,7 @@ import Part
 from popupwb.core import popupcore
 from popupwb.features.property_adder import add_validity_outputs, property_adder
 from popupwb.stateless_proxy import StatelessProxy
+from popupwb.view_provider_by_name import attach_view_provider
 
 TYPE = "PopUp::Scaffold"
 VERSION = "1"
@@ -78,6 +79,8 @@ class ScaffoldFeature(StatelessProxy):
     """Proxy of a Part::FeaturePython showing a design file at a fold angle."""
 
     TYPE = TYPE
+    # popupwb.viewproviders module and class, imported only in the GUI (view_provider_by_name)
+    VIEW_PROVIDER = ("scaffold_viewprovider", "ScaffoldViewProvider")
 
     def __init__(self, obj):
         obj.Proxy = self
@@ -119,11 +122,7 @@ class ScaffoldFeature(StatelessProxy):
 
     def onDocumentRestored(self, obj):
         self.add_properties(obj)
-        if FreeCAD.GuiUp:  # saved headless: no view provider yet
-            from popupwb.viewproviders.card_viewprovider import attach_if_missing
-            from popupwb.viewproviders.scaffold_viewprovider import ScaffoldViewProvider
-
-            attach_if_missing(obj, ScaffoldViewProvider)
+        attach_view_provider(obj)  # saved headless: it has none yet
 
     def execute(self, obj):
         start = time.perf_counter()

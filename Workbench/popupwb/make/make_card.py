@@ -3,6 +3,7 @@
 import FreeCAD
 
 from popupwb.features.card_feature import CUSTOM, PRESET_NAMES, PopUpCard
+from popupwb.view_provider_by_name import view_provider_class
 
 
 def make_card(doc, preset="A5", width=None, depth=None, fold_angle=180.0, name="Card"):
@@ -26,7 +27,5 @@ def make_card(doc, preset="A5", width=None, depth=None, fold_angle=180.0, name="
             obj.Depth = depth
     obj.FoldAngle = fold_angle
     if FreeCAD.GuiUp:
-        from popupwb.viewproviders.card_viewprovider import CardViewProvider
-
-        CardViewProvider(obj.ViewObject)
+        view_provider_class(obj.Proxy)(obj.ViewObject)
     return obj

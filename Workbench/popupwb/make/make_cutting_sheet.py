@@ -2,9 +2,10 @@
 
 import FreeCAD
 
-from popupwb import assembly
+from popupwb import card_scaffold
 from popupwb.features.cutting_sheet import CUSTOM, OPTIONS, PAPERS, CuttingSheet
 from popupwb.sheets.sheet_options import defaults, option_named, parse_sides, sides_text
+from popupwb.view_provider_by_name import view_provider_class
 
 
 def make_cutting_sheet(
@@ -24,7 +25,7 @@ def make_cutting_sheet(
     min_tab_width, min_feature (mm), tab_angle, min_corner_angle (degrees), fold_hints,
     printed_sides ({"P1": "back"}). The caller recomputes.
     """
-    if not assembly.is_card(card):
+    if not card_scaffold.is_card(card):
         raise ValueError(
             f"make_cutting_sheet: card {getattr(card, 'Label', card)} must be a PopUpCard"
         )
@@ -57,7 +58,5 @@ def make_cutting_sheet(
         setattr(obj, by_key[key], value)
     obj.MakePages = make_pages
     if FreeCAD.GuiUp:
-        from popupwb.viewproviders.cutting_sheet_viewprovider import CuttingSheetViewProvider
-
-        CuttingSheetViewProvider(obj.ViewObject)
+        view_provider_class(obj.Proxy)(obj.ViewObject)
     return obj

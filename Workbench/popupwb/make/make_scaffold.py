@@ -5,6 +5,7 @@ import os
 import FreeCAD
 
 from popupwb.features.scaffold_feature import ScaffoldFeature, load_design
+from popupwb.view_provider_by_name import view_provider_class
 
 
 def make_scaffold(doc, design_file, fold_angle=180.0, name="Scaffold"):
@@ -25,7 +26,5 @@ def make_scaffold(doc, design_file, fold_angle=180.0, name="Scaffold"):
     except (OSError, ValueError):
         pass  # execute() puts the object in error with the reason
     if FreeCAD.GuiUp:
-        from popupwb.viewproviders.scaffold_viewprovider import ScaffoldViewProvider
-
-        ScaffoldViewProvider(obj.ViewObject)
+        view_provider_class(obj.Proxy)(obj.ViewObject)
     return obj

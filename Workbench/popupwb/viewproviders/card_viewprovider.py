@@ -5,34 +5,15 @@ import popupwb
 from popupwb.stateless_proxy import StatelessProxy
 
 
-def deferred_colour(obj):
-    """Colours now and once more after the C++ view provider rebuilt its face set (Python's
-    updateData runs first, and DiffuseColor only takes when its length matches the faces)."""
-    from PySide import QtCore
-
-    from popupwb.viewproviders.patch_colours import colour_object
-
-    colour_object(obj)
-    QtCore.QTimer.singleShot(0, lambda: colour_object(obj))
-
-
 def hosted_on(obj):
     """The mechanisms whose Host is `obj`, in document order."""
-    from popupwb import assembly
+    from popupwb import card_scaffold
 
     try:
         objects = obj.Document.Objects
     except (ReferenceError, RuntimeError):
         return []
-    return [o for o in objects if assembly.is_mechanism(o) and getattr(o, "Host", None) is obj]
-
-
-def attach_if_missing(obj, view_provider_class):
-    """Gives `obj` its view provider when it has none: documents saved headless (make_* outside
-    the GUI) open with bare view objects, without role colours, icons or task panels."""
-    vobj = getattr(obj, "ViewObject", None)
-    if vobj is not None and getattr(vobj, "Proxy", None) is None:
-        view_provider_class(vobj)
+    return [o for o in objects if card_scaffold.is_mechanism(o) and getattr(o, "Host", None) is obj]
 
 
 class CardViewProvider(StatelessProxy):
@@ -56,7 +37,9 @@ class CardViewProvider(StatelessProxy):
 
     def updateData(self, obj, prop):
         if prop == "Shape":
-            deferred_colour(obj)
+            from popupwb.viewproviders.patch_colours import colour_after_shape_change
+
+            colour_after_shape_change(obj)
 
     def onChanged(self, vobj, prop):
         return None

@@ -1,14 +1,24 @@
-"""Face colours of card and mechanism objects: by patch role, offending patches in red.
+"""Face colours of every PopUp object that shows patches (Scaffold, card, mechanism): by patch
+role, offending patches in red. The only place that writes DiffuseColor.
 
 PopUp_CheckValidity marks the patches its findings name (highlight()); the marks last while the
 card's design is the one checked (a changed design drops them). Kept in memory, never saved.
 """
 
-from popupwb.viewproviders.scaffold_viewprovider import ROLE_COLOURS
-
+# Paper-like tints per patch role (RGB 0..1); the base patches stay closest to white card.
+ROLE_COLOURS = {
+    "ground": (0.93, 0.91, 0.85),
+    "backdrop": (0.88, 0.86, 0.80),
+    "support": (0.55, 0.73, 0.90),
+    "top": (0.60, 0.83, 0.56),
+    "front": (0.96, 0.66, 0.38),
+    "back": (0.97, 0.85, 0.45),
+    "tab": (0.70, 0.70, 0.70),
+    "other": (0.86, 0.60, 0.78),
+}
 OFFENDING = (0.90, 0.10, 0.10)
 
-_HIGHLIGHTS = {}  # (document name, card name) -> (assembly digest, set of patch ids)
+_HIGHLIGHTS = {}  # (document name, card name) -> (design digest, set of patch ids)
 
 
 def highlight(card, digest, patch_ids):
@@ -22,32 +32,47 @@ def highlighted(card, digest):
     return marked[1] if marked and marked[0] == digest else set()
 
 
-def colour_object(obj):
-    """Sets obj.ViewObject.DiffuseColor from the roles of its patches (a PopUpCard shows every
-    patch of its assembly, a mechanism its own). Quietly does nothing when the shape and the
-    assembly do not match (the feature itself reports errors)."""
-    from popupwb import assembly
+def _shown_patches(obj):
+    """(patches of the design, ids of the ones `obj` shows in shape order, ids marked red), or None
+    when `obj` shows no design (the feature itself reports why)."""
+    from popupwb import card_scaffold
+    from popupwb.features.scaffold_feature import is_scaffold, scaffold_of
 
+    if is_scaffold(obj):
+        try:
+            patches = scaffold_of(obj).patches
+        except ValueError:
+            return None
+        return patches, list(range(len(patches))), set()
+    try:
+        card = card_scaffold.root_card(obj)
+    except ValueError:
+        return None  # a broken Host chain
+    built = card_scaffold.for_card(card)
+    if built.scaffold is None or obj.Name not in built.patches:
+        return None
+    patches = built.scaffold.patches
+    ids = list(range(len(patches))) if card_scaffold.is_card(obj) else built.patches[obj.Name]
+    return patches, ids, highlighted(card, built.digest)
+
+
+def colour_object(obj):
+    """Sets obj.ViewObject.DiffuseColor from the roles of the patches it shows (a Scaffold and a
+    card every patch of their design, a mechanism its own). Its shape holds one child (face, or
+    solid when thickened) per patch; nothing happens when the shape and the design do not match."""
     try:
         vobj = obj.ViewObject
         if vobj is None or obj.Shape.isNull():
             return
-        card = assembly.root_card(obj)
-    except (ReferenceError, RuntimeError, ValueError, AttributeError):
-        return  # deleted before a deferred call, or a broken Host chain
-    built = assembly.assembly_of(card)
-    if built.scaffold is None or obj.Name not in built.patches:
+        shown = _shown_patches(obj)
+    except (ReferenceError, RuntimeError, AttributeError):
+        return  # deleted before a deferred call
+    if shown is None:
         return
-    ids = (
-        list(range(len(built.scaffold.patches)))
-        if assembly.is_card(obj)
-        else built.patches[obj.Name]
-    )
+    patches, ids, red = shown
     children = obj.Shape.childShapes()
     if len(children) != len(ids):
         return
-    red = highlighted(card, built.digest)
-    patches = built.scaffold.patches
     colours = []
     for child, patch_id in zip(children, ids):
         if patch_id in red:
@@ -59,9 +84,18 @@ def colour_object(obj):
         vobj.DiffuseColor = colours
 
 
+def colour_after_shape_change(obj):
+    """Colours now and once more after the C++ view provider rebuilt its face set (Python's
+    updateData runs first, and DiffuseColor only takes when its length matches the faces)."""
+    from PySide import QtCore
+
+    colour_object(obj)
+    QtCore.QTimer.singleShot(0, lambda: colour_object(obj))
+
+
 def colour_card_and_mechanisms(card):
     """Recolours a card and every mechanism of it (after a validity check)."""
-    from popupwb import assembly
+    from popupwb import card_scaffold
 
-    for obj in [card] + assembly.mechanisms_of(card):
+    for obj in [card] + card_scaffold.mechanisms_of(card):
         colour_object(obj)

@@ -1,13 +1,17 @@
-"""The whole card's scaffold, assembled from a PopUpCard and the mechanism features nested on it.
+"""The card's scaffold: one popupcore.Scaffold built from a PopUpCard and the mechanism features
+nested on it.
 
 A card and its mechanisms are one rigid-body system: the core builds and simulates them together.
-Every feature of the card asks this module for the same Assembly (built once per design, cached by
-a key made of every property that shapes it) and for the same posed compound at the card's
-FoldAngle (simulated once per angle, cached), then keeps only its own patches.
+Every feature of the card asks this module for the same CardScaffold (built once per design,
+cached by a key made of every property that shapes it) and for the same posed compound at the
+card's FoldAngle (simulated once per angle, cached), then keeps only its own patches.
 
 Design order: the card, then each mechanism after its host (depth first from the card, siblings in
 document order, so the patch ids are the same in every process). A mechanism whose generator
 raises, or whose host failed, adds nothing; its message is remembered for its own execute().
+
+Formerly popupwb.assembly: it builds a scaffold, and "assembly" is the cutting sheets' glue order.
+No document stores this module's name (it holds no proxy class), so the old name is gone.
 """
 
 import collections
@@ -17,8 +21,8 @@ import math
 CARD_TYPE = "PopUp::Card"
 CENTRAL_FOLD = "central fold"  # popupcore.central_fold(card).name
 
-_ASSEMBLIES = collections.OrderedDict()  # design key -> Assembly
-_ASSEMBLY_CACHE_SIZE = 8
+_BUILT = collections.OrderedDict()  # design key -> CardScaffold
+_BUILT_CACHE_SIZE = 8
 _STATES = collections.OrderedDict()  # (design key, angle) -> FoldState or error text
 _STATE_CACHE_SIZE = 64
 _SHAPES = collections.OrderedDict()  # (design key, angle, thickness) -> Part.Shape compound
@@ -118,7 +122,7 @@ def design_key(card):
     return tuple(parts)
 
 
-class Assembly:
+class CardScaffold:
     """One card's scaffold with everything the features need to show their part of it.
 
     scaffold          popupcore.Scaffold of the card and every mechanism that built
@@ -246,35 +250,35 @@ def _resolve_pair(obj, pairs):
 
 
 def build(card):
-    """A new Assembly of `card` (no cache; assembly_of() is the cached entry point)."""
+    """A new CardScaffold of `card` (no cache; for_card() is the cached entry point)."""
     from popupwb.core import popupcore
 
-    assembly = Assembly(design_key(card))
+    built = CardScaffold(design_key(card))
     try:
         scaffold = popupcore.make_card(_card_params(card))
     except ValueError as error:  # DesignError
-        assembly.card_error = str(error)  # names the card by its Label and the parameter
+        built.card_error = str(error)  # names the card by its Label and the parameter
         for obj in mechanisms_of(card):
-            assembly.errors[
+            built.errors[
                 obj.Name
             ] = f"{obj.Label}: the card {card.Label} cannot be built, fix it first"
-        return assembly
-    assembly.scaffold = scaffold
-    assembly.order.append(card.Name)
-    assembly.patches[card.Name] = [scaffold.ground, scaffold.backdrop]
-    assembly.offered[card.Name] = [popupcore.central_fold(scaffold)]
+        return built
+    built.scaffold = scaffold
+    built.order.append(card.Name)
+    built.patches[card.Name] = [scaffold.ground, scaffold.backdrop]
+    built.offered[card.Name] = [popupcore.central_fold(scaffold)]
     for obj in mechanisms_of(card):
         host = obj.Host
-        if host.Name not in assembly.offered:
-            assembly.errors[
+        if host.Name not in built.offered:
+            built.errors[
                 obj.Name
             ] = f"{obj.Label}: Host = {host.Label}, which is in error; fix it first"
             continue
-        pairs = assembly.offered[host.Name]
+        pairs = built.offered[host.Name]
         pair = _resolve_pair(obj, pairs)
         if pair is None:
             choices = ", ".join(f"'{p.name}'" for p in pairs) or "none"
-            assembly.errors[obj.Name] = (
+            built.errors[obj.Name] = (
                 f"{obj.Label}: HostPair = '{obj.HostPair}', must be one of the pairs "
                 f"{host.Label} offers ({choices})"
             )
@@ -282,28 +286,28 @@ def build(card):
         try:
             parts = obj.Proxy.generate(obj, scaffold, pair)
         except ValueError as error:  # DesignError names the mechanism (its Label) and parameter
-            assembly.errors[obj.Name] = str(error)
+            built.errors[obj.Name] = str(error)
             continue
-        assembly.order.append(obj.Name)
-        assembly.patches[obj.Name] = list(parts.patches)
-        assembly.offered[obj.Name] = list(parts.offered)
-    return assembly
+        built.order.append(obj.Name)
+        built.patches[obj.Name] = list(parts.patches)
+        built.offered[obj.Name] = list(parts.offered)
+    return built
 
 
-def assembly_of(card):
-    """The Assembly of `card`, built once per design key (module-level cache, never saved)."""
+def for_card(card):
+    """The CardScaffold of `card`, built once per design key (module-level cache, never saved)."""
     key = design_key(card)
-    assembly = _ASSEMBLIES.get(key)
-    if assembly is None:
-        assembly = build(card)
-        _remember(_ASSEMBLIES, key, assembly, _ASSEMBLY_CACHE_SIZE)
+    built = _BUILT.get(key)
+    if built is None:
+        built = build(card)
+        _remember(_BUILT, key, built, _BUILT_CACHE_SIZE)
     else:
-        _ASSEMBLIES.move_to_end(key)
-    return assembly
+        _BUILT.move_to_end(key)
+    return built
 
 
 def clear_caches():
-    """Forgets every cached assembly, state and shape (tests, timing)."""
-    _ASSEMBLIES.clear()
+    """Forgets every cached scaffold, state and shape (tests, timing)."""
+    _BUILT.clear()
     _STATES.clear()
     _SHAPES.clear()
