@@ -20,7 +20,7 @@ sys.path.append("/usr/lib/freecad-python3/lib")
 
 import FreeCAD  # noqa: E402
 
-from popupwb import assembly, make  # noqa: E402
+from popupwb import card_scaffold, make  # noqa: E402
 from popupwb.core import popupcore  # noqa: E402
 
 
@@ -82,7 +82,7 @@ def main():
     broken = [o.Label for o in doc.Objects if "Invalid" in o.State or "Error" in o.State]
     if broken:
         sys.exit(f"benchmark card does not build: {broken}")
-    scaffold = assembly.assembly_of(card).scaffold
+    scaffold = card_scaffold.for_card(card).scaffold
     report = popupcore.check_validity(scaffold)
     print(
         f"card: {len(mechanisms)} mechanisms, {len(scaffold.patches)} patches, "
@@ -110,12 +110,12 @@ def main():
     drag_ms = timed(drag, 20)
 
     # Baseline: no continuation from solved angles (every new angle swept from the design).
-    nearest = assembly.Assembly._nearest_state
-    assembly.Assembly._nearest_state = lambda self, angle: None
+    nearest = card_scaffold.CardScaffold._nearest_state
+    card_scaffold.CardScaffold._nearest_state = lambda self, angle: None
     card.FoldAngle = 120.5
     doc.recompute()
     baseline_ms = timed(lambda k: _drag_off(card, doc, k), 20)
-    assembly.Assembly._nearest_state = nearest
+    card_scaffold.CardScaffold._nearest_state = nearest
 
     print(
         f"parameter edit + recompute, card open at 180 deg (median of 12): {edit_open_ms:7.1f} ms"
