@@ -129,7 +129,6 @@ def _check_card(card, samples, clearance):
     report = popupcore.check_validity(
         built.scaffold, samples=samples, clearance=clearance
     ).to_dict()
-    doc = card.Document
     for name, message in built.errors.items():
         report["diagnostics"].append(design_error(message))
     report["valid"] = bool(report["valid"]) and not built.errors

@@ -16,8 +16,6 @@ import collections
 import contextlib
 import math
 
-import FreeCAD
-
 
 from popupwb import card_scaffold
 from popupwb.stateless_proxy import StatelessProxy

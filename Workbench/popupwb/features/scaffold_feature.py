@@ -8,7 +8,6 @@ path, the class name and the property names are stored in .FCStd files: never re
 import collections
 import hashlib
 import math
-import os
 import time
 
 import FreeCAD
