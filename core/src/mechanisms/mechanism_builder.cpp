@@ -54,6 +54,19 @@ Result<MechanismParts> MechanismBuilder::finish()
 {
     Result<MechanismParts> r;
     const double tol = 1e-6 * std::max(scaffold_.size(), 1.0);
+    // The host pair must be this scaffold's: its patches here, its hinge on both of them.
+    for (int id : {host_.ground, host_.backdrop}) {
+        const Patch* p = scaffold_.find_patch(id);
+        const Vec3 end = host_.origin + host_.length * host_.axis;
+        if (p && p->contains(host_.origin, 10 * tol) && p->contains(end, 10 * tol))
+            continue;
+        r.fail(DiagnosticCode::bad_host,
+               parts_.name + ": host " + host_.name + " is not a base patch pair of this design" +
+                   (p ? ": its hinge is not on patch " : ": it names patch ") + std::to_string(id) +
+                   (p ? "" : ", which this design does not have"),
+               about_parameter("Host"));
+        break;
+    }
     for (size_t k = first_hinge_; k < scaffold_.hinges.size() && r.ok; ++k) {
         const Hinge& h = scaffold_.hinges[k];
         for (int id : {h.patch_a, h.patch_b}) {

@@ -1,7 +1,10 @@
 #include "popup/model/scaffold.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -65,6 +68,37 @@ bool finite(const Vec3& x)
     return x.allFinite();
 }
 
+// The first two vertices of a loop at the same point (to a nanometre), in O(n log n).
+std::optional<std::pair<size_t, size_t>> repeated_vertex(const Loop3& loop)
+{
+    std::map<std::array<double, 3>, size_t> seen; // rounded as doubles: no integer overflow
+    for (size_t i = 0; i < loop.size(); ++i) {
+        const std::array<double, 3> key{std::round(loop[i].x() * 1e6),
+                                        std::round(loop[i].y() * 1e6),
+                                        std::round(loop[i].z() * 1e6)};
+        const auto [at, fresh] = seen.emplace(key, i);
+        if (!fresh)
+            return std::make_pair(at->second, i);
+    }
+    return std::nullopt;
+}
+
+std::vector<Loop3*> loops_of(Patch& p)
+{
+    std::vector<Loop3*> loops{&p.outer};
+    for (Loop3& h : p.holes)
+        loops.push_back(&h);
+    return loops;
+}
+
+std::vector<const Loop3*> loops_of(const Patch& p)
+{
+    std::vector<const Loop3*> loops{&p.outer};
+    for (const Loop3& h : p.holes)
+        loops.push_back(&h);
+    return loops;
+}
+
 } // namespace
 
 Result<Scaffold> validate_scaffold(Scaffold s)
@@ -79,6 +113,12 @@ Result<Scaffold> validate_scaffold(Scaffold s)
         return r;
     }
     bool coordinates_ok = true;
+    for (Patch& p : s.patches) {
+        // Files from other tools often close a ring by repeating its first point: drop it.
+        for (Loop3* loop : loops_of(p))
+            if (loop->size() > 3 && loop->front() == loop->back())
+                loop->pop_back();
+    }
     for (const Patch& p : s.patches) {
         if (p.outer.size() < 3) {
             patch_error(DiagnosticCode::too_few_vertices, p,
@@ -94,6 +134,22 @@ Result<Scaffold> validate_scaffold(Scaffold s)
                         "a vertex has a NaN or infinite coordinate");
             coordinates_ok = false;
         }
+    }
+    if (!coordinates_ok)
+        return r;
+    // A loop visiting one point twice has no well-defined inside (and breaks the meshing).
+    for (const Patch& p : s.patches) {
+        const std::vector<const Loop3*> loops = loops_of(p);
+        for (size_t l = 0; l < loops.size(); ++l)
+            if (const auto twice = repeated_vertex(*loops[l])) {
+                const Vec3& x = (*loops[l])[twice->first];
+                std::ostringstream m;
+                m << (l == 0 ? "outline" : "hole " + std::to_string(l)) << " visits (" << x.x()
+                  << ", " << x.y() << ", " << x.z() << ") twice, as vertices " << twice->first
+                  << " and " << twice->second;
+                patch_error(DiagnosticCode::repeated_vertex, p, m.str());
+                coordinates_ok = false;
+            }
     }
     if (!coordinates_ok)
         return r;

@@ -1,6 +1,8 @@
 #include "body_graph.hpp"
 
+#include <algorithm>
 #include <numeric>
+#include <sstream>
 
 namespace popup {
 
@@ -11,6 +13,45 @@ struct DisjointSets {
     int find(int i) { return parent[i] == i ? i : parent[i] = find(parent[i]); }
     void join(int a, int b) { parent[find(a)] = find(b); }
 };
+/// Every free group must hang from the base through a hinge or a slit, and the two bases must
+/// share the central fold: otherwise nothing holds the patches and the solver has no equations.
+void check_attachment(const Scaffold& s, const BodyGraph& g, Result<BodyGraph>& r)
+{
+    const bool bases_hinged = std::any_of(s.hinges.begin(), s.hinges.end(), [&](const Hinge& h) {
+        const int a = g.body_of_patch[s.patch_index(h.patch_a)];
+        const int b = g.body_of_patch[s.patch_index(h.patch_b)];
+        return a != b && g.is_base(a) && g.is_base(b);
+    });
+    if (!bases_hinged)
+        r.fail(DiagnosticCode::bases_not_hinged,
+               "no hinge joins the ground and the backdrop: the card needs its central fold",
+               about_patches({s.ground, s.backdrop}));
+    for (size_t c = 0; c < g.components.size(); ++c) {
+        const auto touches_base = [&](int body_a, int body_b) {
+            return g.is_base(body_a) || g.is_base(body_b);
+        };
+        bool held = false;
+        for (int j : g.component_joints[c])
+            held = held || touches_base(g.joints[j].body_a, g.joints[j].body_b);
+        for (int k : g.component_slits[c])
+            held = held || touches_base(g.slits[k].body_cut, g.slits[k].body_through);
+        if (held)
+            continue;
+        std::vector<int> ids;
+        std::ostringstream names;
+        for (size_t i = 0; i < s.patches.size(); ++i)
+            if (g.component_of_body[g.body_of_patch[i]] == int(c)) {
+                names << (ids.empty() ? "" : ", ") << "patch " << s.patches[i].id;
+                ids.push_back(s.patches[i].id);
+            }
+        r.fail(DiagnosticCode::detached_patch,
+               names.str() + (ids.size() == 1 ? " is" : " are") +
+                   " joined to the card by no hinge or slit: hinge or glue " +
+                   (ids.size() == 1 ? "it" : "them") + " to a patch of the card",
+               about_patches(ids));
+    }
+}
+
 } // namespace
 
 Result<BodyGraph> build_body_graph(const Scaffold& s)
@@ -101,6 +142,7 @@ Result<BodyGraph> build_body_graph(const Scaffold& s)
                                               : g.component_of_body[joint.body_a];
         g.component_joints[c].push_back(int(j));
     }
+    check_attachment(s, g, r);
     return r;
 }
 

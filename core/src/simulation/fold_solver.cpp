@@ -491,6 +491,8 @@ bool FoldSolver::singular(int c, const Configuration& q) const
     const Eigen::MatrixXd J = jacobian(c, q);
     if (J.cols() == 0)
         return false;
+    if (J.rows() == 0) // no constraint at all: every motion is free
+        return true;
     const Eigen::VectorXd s = Eigen::JacobiSVD<Eigen::MatrixXd>(J).singularValues();
     return s.minCoeff() <= 1e-6 * std::max(s.maxCoeff(), 1.0);
 }

@@ -351,3 +351,29 @@ TEST(BoxFold, SeveralPanelPairsPerEndStayValid)
     EXPECT_FALSE(bad.ok);
     EXPECT_EQ(bad.diagnostics.front().parameter, "PanelPairs");
 }
+
+TEST(Generators, ABasePairOfAnotherDesignIsRefused)
+{
+    // A pair from a larger card: its hinge runs past this card's fold, and a pair naming a patch
+    // this design lacks: both refused, the design untouched.
+    const Scaffold other = fixtures::generator_card(400);
+    Scaffold s = fixtures::generator_card(200);
+    const size_t patches = s.patches.size(), hinges = s.hinges.size();
+    BasePatchPair foreign = central_fold(other);
+    TentFoldParams p;
+    p.width = 40;
+    p.offset = 20; // fits either fold: only the pair itself is wrong
+    for (BasePatchPair host : {foreign, [&] {
+                                   BasePatchPair missing = central_fold(s);
+                                   missing.backdrop = 77;
+                                   return missing;
+                               }()}) {
+        const Result<MechanismParts> r = add_tent_fold(s, host, p, "Tent");
+        ASSERT_FALSE(r.ok);
+        EXPECT_EQ(r.diagnostics.front().code, DiagnosticCode::bad_host)
+            << r.diagnostics.front().message;
+        EXPECT_EQ(r.diagnostics.front().parameter, "Host");
+        EXPECT_EQ(s.patches.size(), patches);
+        EXPECT_EQ(s.hinges.size(), hinges);
+    }
+}

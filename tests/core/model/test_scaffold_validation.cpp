@@ -78,3 +78,29 @@ TEST(ScaffoldValidation, MissingBasePatchAndBadIdsAreNamed)
     EXPECT_TRUE(has(r, "bad_glue_patches", "glue[0]"));
     EXPECT_TRUE(has(r, "bad_hinge_patches", "hinge 7"));
 }
+
+TEST(ScaffoldValidation, AClosingRepeatIsDroppedAndOtherRepeatsAreNamed)
+{
+    Scaffold closed = fixtures::make_card();
+    closed.patches[0].outer.push_back(closed.patches[0].outer.front()); // ring closed by repeat
+    const Result<Scaffold> accepted = validate_scaffold(closed);
+    ASSERT_TRUE(accepted.ok);
+    EXPECT_EQ(accepted.value.patches[0].outer.size(), 4u);
+    EXPECT_NEAR(accepted.value.patches[0].area(), 200.0 * 140.0, 1e-9);
+
+    Scaffold twice = fixtures::make_card();
+    Loop3& outer = twice.patches[0].outer;
+    outer.insert(outer.begin() + 1, outer.front()); // vertices 0 and 1 at one point
+    const Result<Scaffold> refused = validate_scaffold(twice);
+    EXPECT_FALSE(refused.ok);
+    ASSERT_EQ(refused.diagnostics.size(), 1u);
+    const Diagnostic& d = refused.diagnostics.front();
+    EXPECT_EQ(d.code, DiagnosticCode::repeated_vertex);
+    EXPECT_EQ(d.patches, std::vector<int>{twice.patches[0].id});
+    EXPECT_NE(d.message.find("as vertices 0 and 1"), std::string::npos) << d.message;
+
+    Scaffold bow = fixtures::make_card(); // a vertex visited again later in the loop
+    bow.patches[0].outer.push_back({70, 100, 0});
+    bow.patches[0].outer.push_back({140, 200, 0});
+    EXPECT_EQ(validate_scaffold(bow).diagnostics.front().code, DiagnosticCode::repeated_vertex);
+}

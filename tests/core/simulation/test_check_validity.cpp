@@ -198,3 +198,39 @@ TEST(CheckValidity, TheVerdictDoesNotDependOnTheSampleCount)
         }
     }
 }
+
+TEST(CheckValidity, PatchesHeldByNothingAreNamedNotCrashes)
+{
+    // A tent whose hinges are all gone: no central fold, and the slopes hang from nothing.
+    Scaffold loose = fixtures::make_card();
+    const std::vector<int> tent = fixtures::add_tent_fold(loose, 40, 60, 30, 40);
+    loose.hinges.clear();
+    const ValidityReport r = check_validity(loose);
+    EXPECT_FALSE(r.valid());
+    std::vector<DiagnosticCode> codes;
+    for (const Diagnostic& d : r.diagnostics)
+        codes.push_back(d.code);
+    EXPECT_NE(std::find(codes.begin(), codes.end(), DiagnosticCode::bases_not_hinged), codes.end());
+    // Each slope hangs alone: one finding each, naming it.
+    std::vector<int> ids;
+    for (const Diagnostic& d : r.diagnostics)
+        if (d.code == DiagnosticCode::detached_patch)
+            ids.insert(ids.end(), d.patches.begin(), d.patches.end());
+    std::sort(ids.begin(), ids.end());
+    std::vector<int> expected = tent;
+    std::sort(expected.begin(), expected.end());
+    EXPECT_EQ(ids, expected);
+
+    // One patch beside a well-built card, attached to nothing.
+    Scaffold stray = fixtures::make_card();
+    fixtures::add_tent_fold(stray, 40, 60, 30, 40);
+    const int alone =
+        fixtures::add_quad(stray, {100, 170, 0}, {110, 170, 0}, {110, 180, 0}, {100, 180, 0});
+    const ValidityReport s = check_validity(stray);
+    EXPECT_FALSE(s.valid());
+    ASSERT_EQ(s.diagnostics.size(), 1u);
+    EXPECT_EQ(s.diagnostics.front().code, DiagnosticCode::detached_patch);
+    EXPECT_EQ(s.diagnostics.front().patches, std::vector<int>{alone});
+    const Result<FoldSweep> sweep = simulate_fold(stray, {M_PI / 2});
+    EXPECT_FALSE(sweep.ok);
+}

@@ -15,6 +15,7 @@ namespace popup {
     X(empty_scaffold)                                                                              \
     X(too_few_vertices)                                                                            \
     X(non_finite_coordinate)                                                                       \
+    X(repeated_vertex)                                                                             \
     X(duplicate_patch_id)                                                                          \
     X(degenerate_patch)                                                                            \
     X(non_planar_patch)                                                                            \
@@ -32,6 +33,8 @@ namespace popup {
     X(slit_off_plane)                                                                              \
     X(bad_glue_patches)                                                                            \
     X(base_glued)                                                                                  \
+    X(bases_not_hinged)                                                                            \
+    X(detached_patch)                                                                              \
     /* mechanisms */                                                                               \
     X(bad_parameter)                                                                               \
     X(bad_host)                                                                                    \
