@@ -1,6 +1,8 @@
 #include "popup/io/design_file.hpp"
 
+#include <climits>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -45,6 +47,14 @@ int read_int(const json& value, const std::string& path)
 {
     if (!value.is_number_integer())
         throw FieldError{path, "must be an integer, got " + std::string(value.type_name())};
+    // Ids are 32-bit: a larger one must not wrap onto another patch (2^32 is not patch 0).
+    const bool in_range =
+        value.is_number_unsigned()
+            ? value.get<std::uint64_t>() <= std::uint64_t(INT_MAX)
+            : value.get<std::int64_t>() >= INT_MIN && value.get<std::int64_t>() <= INT_MAX;
+    if (!in_range)
+        throw FieldError{path, "= " + value.dump() + " is out of range, must be between " +
+                                   std::to_string(INT_MIN) + " and " + std::to_string(INT_MAX)};
     return value.get<int>();
 }
 

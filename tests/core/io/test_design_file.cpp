@@ -84,6 +84,15 @@ TEST(DesignFile, BadFieldsAreNamedByPath)
     EXPECT_EQ(first_parameter(broken("\"outline\": [", "\"outlines\": [")), "patches[0].outline");
     EXPECT_EQ(first_parameter(broken("\"fold\": \"valley\"", "\"fold\": \"up\"")),
               "hinges[0].fold");
+    // Ids beyond 32 bits would wrap onto another patch (2^32 onto patch 0): refused, with range.
+    for (const char* id : {"4294967296", "2147483648", "-2147483649", "18446744073709551615"}) {
+        const Result<Scaffold> r = broken("\"ground\": 0", std::string("\"ground\": ") + id);
+        EXPECT_EQ(first_parameter(r), "ground") << id;
+        EXPECT_NE(r.diagnostics.front().message.find("-2147483648 and 2147483647"),
+                  std::string::npos)
+            << r.diagnostics.front().message;
+    }
+    EXPECT_TRUE(broken("\"ground\": 0", "\"ground\": 0").ok);
 }
 
 TEST(DesignFile, NullCoordinateIsNamed)
