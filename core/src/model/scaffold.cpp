@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "../geometry/loop_crossings.hpp"
 #include "../geometry/polygon_2d.hpp"
 
 namespace popup {
@@ -99,6 +100,41 @@ std::vector<const Loop3*> loops_of(const Patch& p)
     return loops;
 }
 
+// "(x, y, z)" of a point in the patch's own frame, in world coordinates.
+std::string where(const Patch& p, const Vec2& q)
+{
+    const Vec3 x = p.origin + q.x() * p.u + q.y() * p.v;
+    std::ostringstream s;
+    s.precision(6);
+    s << "(" << x.x() << ", " << x.y() << ", " << x.z() << ")";
+    return s.str();
+}
+
+/// The outline and each hole must be simple, the holes inside the outline and apart from it:
+/// otherwise the cut paper is not the patch (a crossing outline has no one inside).
+template <class Report> void check_loops(const Patch& p, Report&& report)
+{
+    const Loop2 outer = p.outer_local();
+    const std::vector<Loop2> holes = p.holes_local();
+    if (const auto at = first_loop_crossing({outer})) {
+        report(DiagnosticCode::self_crossing_outline, p,
+               "outline crosses itself at " + where(p, *at));
+        return;
+    }
+    for (size_t h = 0; h < holes.size(); ++h) {
+        const std::string hole = "hole " + std::to_string(h + 1);
+        if (const auto at = first_loop_crossing({holes[h]}))
+            report(DiagnosticCode::self_crossing_outline, p,
+                   hole + " crosses itself at " + where(p, *at));
+        else if (const auto at = first_loop_crossing({outer, holes[h]}))
+            report(DiagnosticCode::hole_crosses_outline, p,
+                   hole + " crosses or touches the outline at " + where(p, *at));
+        else if (!point_in_polygon(outer, holes[h].front()))
+            report(DiagnosticCode::hole_outside_outline, p,
+                   hole + " lies outside the outline, at " + where(p, holes[h].front()));
+    }
+}
+
 } // namespace
 
 Result<Scaffold> validate_scaffold(Scaffold s)
@@ -171,7 +207,9 @@ Result<Scaffold> validate_scaffold(Scaffold s)
             m << "not planar: a vertex lies " << deviation << " mm off its plane (allowed " << tol
               << " mm)";
             patch_error(DiagnosticCode::non_planar_patch, p, m.str());
+            continue;
         }
+        check_loops(p, patch_error);
     }
     auto check_base = [&](int id, const char* which) {
         if (!s.find_patch(id))

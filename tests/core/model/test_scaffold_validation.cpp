@@ -104,3 +104,40 @@ TEST(ScaffoldValidation, AClosingRepeatIsDroppedAndOtherRepeatsAreNamed)
     bow.patches[0].outer.push_back({140, 200, 0});
     EXPECT_EQ(validate_scaffold(bow).diagnostics.front().code, DiagnosticCode::repeated_vertex);
 }
+
+TEST(ScaffoldValidation, CrossingOutlinesAndStrayHolesAreNamedWithWhere)
+{
+    // The ground (x 0..140, y 0..200 at z = 0) given a spike that folds back across its edge:
+    // y = 170 + x/40 and y = 165 + x/10 cross each other at (66.6667, 171.667) and the edge
+    // x = 140 at (140, 173.5) and (140, 179). The finding names one of them.
+    Scaffold bow = fixtures::make_card();
+    bow.patches[0].outer = {{0, 0, 0},   {140, 0, 0},   {140, 200, 0}, {0, 200, 0},
+                            {0, 170, 0}, {200, 175, 0}, {200, 185, 0}, {0, 165, 0}};
+    const Result<Scaffold> crossing = validate_scaffold(bow);
+    ASSERT_FALSE(crossing.ok);
+    const Diagnostic& d = crossing.diagnostics.front();
+    EXPECT_EQ(d.code, DiagnosticCode::self_crossing_outline);
+    EXPECT_EQ(d.patches, std::vector<int>{bow.patches[0].id});
+    const bool named = d.message.find("at (66.6667, 171.667, 0)") != std::string::npos ||
+                       d.message.find("at (140, 173.5, 0)") != std::string::npos ||
+                       d.message.find("at (140, 179, 0)") != std::string::npos;
+    EXPECT_TRUE(named) << d.message;
+
+    auto with_hole = [](const Loop3& hole) {
+        Scaffold s = fixtures::make_card();
+        s.patches[0].holes = {hole};
+        return validate_scaffold(s);
+    };
+    // Clockwise seen from above, as holes are.
+    const Result<Scaffold> inside = with_hole({{20, 20, 0}, {20, 40, 0}, {40, 40, 0}, {40, 20, 0}});
+    EXPECT_TRUE(inside.ok) << inside.diagnostics.front().message;
+    const Result<Scaffold> outside =
+        with_hole({{500, 500, 0}, {500, 600, 0}, {600, 600, 0}, {600, 500, 0}});
+    ASSERT_FALSE(outside.ok);
+    EXPECT_EQ(outside.diagnostics.front().code, DiagnosticCode::hole_outside_outline);
+    const Result<Scaffold> across =
+        with_hole({{120, 160, 0}, {120, 180, 0}, {160, 180, 0}, {160, 160, 0}});
+    ASSERT_FALSE(across.ok);
+    EXPECT_EQ(across.diagnostics.front().code, DiagnosticCode::hole_crosses_outline);
+    EXPECT_NE(across.diagnostics.front().message.find("hole 1"), std::string::npos);
+}

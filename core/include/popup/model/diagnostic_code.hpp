@@ -19,6 +19,9 @@ namespace popup {
     X(duplicate_patch_id)                                                                          \
     X(degenerate_patch)                                                                            \
     X(non_planar_patch)                                                                            \
+    X(self_crossing_outline)                                                                       \
+    X(hole_crosses_outline)                                                                        \
+    X(hole_outside_outline)                                                                        \
     X(missing_base_patch)                                                                          \
     X(bad_design_angle)                                                                            \
     X(bad_paper_thickness)                                                                         \
