@@ -16,6 +16,7 @@ using nlohmann::json;
 namespace {
 
 constexpr const char* kFormatName = "popup-design";
+constexpr size_t kMaxDesignFileBytes = size_t(256) << 20; // 256 MiB: far beyond any real design
 
 // Thrown inside the reader only; turned into a diagnostic naming the field.
 struct FieldError {
@@ -295,15 +296,31 @@ std::string scaffold_to_json(const Scaffold& s)
 
 Result<Scaffold> load_scaffold(const std::string& path)
 {
-    std::ifstream in(path);
+    Result<Scaffold> r;
+    // A NUL would end the name the system sees early: "a.json\0.evil" must not open a.json.
+    if (path.find('\0') != std::string::npos) {
+        r.fail(DiagnosticCode::unreadable_file, "design file name contains a NUL character");
+        return r;
+    }
+    std::ifstream in(path, std::ios::binary);
     if (!in) {
-        Result<Scaffold> r;
         r.fail(DiagnosticCode::unreadable_file, "cannot open design file '" + path + "'");
         return r;
     }
-    std::ostringstream text;
-    text << in.rdbuf();
-    return scaffold_from_json(text.str());
+    // Read at most the limit and one byte more: /dev/zero or a huge file must not run forever.
+    std::string text;
+    std::string chunk(size_t(1) << 20, '\0');
+    while (in && text.size() <= kMaxDesignFileBytes) {
+        in.read(chunk.data(), std::streamsize(chunk.size()));
+        text.append(chunk.data(), size_t(in.gcount()));
+    }
+    if (text.size() > kMaxDesignFileBytes) {
+        r.fail(DiagnosticCode::unreadable_file, "design file '" + path + "' is larger than " +
+                                                    std::to_string(kMaxDesignFileBytes >> 20) +
+                                                    " MiB, the largest design PopUp reads");
+        return r;
+    }
+    return scaffold_from_json(text);
 }
 
 void save_scaffold(const Scaffold& scaffold, const std::string& path)

@@ -60,6 +60,20 @@ TEST(DesignFile, MissingFileIsNamed)
     EXPECT_NE(r.diagnostics.front().message.find("/nonexistent/card.json"), std::string::npos);
 }
 
+TEST(DesignFile, EndlessAndNulNamedFilesAreRefused)
+{
+    const Result<Scaffold> endless = load_scaffold("/dev/zero"); // returns, with a limit
+    ASSERT_FALSE(endless.ok);
+    EXPECT_EQ(endless.diagnostics.front().code, DiagnosticCode::unreadable_file);
+    EXPECT_NE(endless.diagnostics.front().message.find("larger than 256 MiB"), std::string::npos)
+        << endless.diagnostics.front().message;
+    const std::string tricked = std::string("tests/data/tent_fold.json") + '\0' + ".evil";
+    const Result<Scaffold> nul = load_scaffold(tricked);
+    ASSERT_FALSE(nul.ok);
+    EXPECT_NE(nul.diagnostics.front().message.find("NUL"), std::string::npos);
+    EXPECT_TRUE(load_scaffold("tests/data/tent_fold.json").ok); // the real file still loads
+}
+
 TEST(DesignFile, MalformedJsonIsReported)
 {
     const Result<Scaffold> r = scaffold_from_json("{\"format\": ");
