@@ -183,6 +183,12 @@ def _load_json_design(popupcore, path, label):
 def _load_fcstd_designs(popupcore, path, card, one):
     """The designs of the Scaffold and PopUpCard objects of an .FCStd file (or of the one named
     `card`); with `one`, several of them make the input unusable."""
+    from popupwb.document_precheck import check_fcstd
+
+    try:
+        check_fcstd(path)
+    except ValueError as e:
+        raise InputError(f"{path}: {e}")
     with _stdout_to_stderr():
         FreeCAD = _import_freecad()
         try:

@@ -437,3 +437,34 @@ def test_printed_side_turns_the_card_over(tmp_path):
     assert all(side == "front" for piece, side in turned_sides.items() if piece != "P1")
     proc = popup("sheet", design, "--out", str(tmp_path / "x"), "--printed-side", "P1=up")
     assert_clean_error(proc, "--printed-side", "front or back")
+
+
+def rewritten(source, target, change):
+    """A copy of the .FCStd `source` whose Document.xml is change(text)."""
+    import zipfile
+
+    with zipfile.ZipFile(source) as old, zipfile.ZipFile(target, "w") as new:
+        for item in old.infolist():
+            data = old.read(item)
+            if item.filename == "Document.xml":
+                data = change(data)
+            new.writestr(item, data)
+    return str(target)
+
+
+def test_documents_freecad_would_misread_are_refused_unread(card_documents, user_home, tmp_path):
+    good = str(card_documents / "card.FCStd")
+    laughs = (
+        b'<?xml version="1.0"?><!DOCTYPE lolz [<!ENTITY lol "lol">'
+        + b"".join(b'<!ENTITY lol%d "%s">' % (k, b"&lol%d;" % (k - 1) * 10) for k in range(1, 10))
+        + b"]>"
+    )
+    bomb = rewritten(good, tmp_path / "bomb.FCStd", lambda t: laughs + t[t.index(b"<Document") :])
+    proc = popup("check", bomb, home=user_home)
+    assert_clean_error(proc, "bomb.FCStd", "DOCTYPE")
+    cut = rewritten(good, tmp_path / "cut.FCStd", lambda t: t[: len(t) // 2])
+    assert_clean_error(popup("check", cut, home=user_home), "cut.FCStd", "Document.xml is damaged")
+    not_zip = tmp_path / "plain.FCStd"
+    not_zip.write_text("hello")
+    assert_clean_error(popup("check", str(not_zip), home=user_home), "zip archive")
+    assert popup("check", good, home=user_home).returncode == 0
