@@ -244,9 +244,12 @@ def load_designs(path, card=None, one=False):
     return popupcore, [Design(_load_json_design(popupcore, path, path), {})]
 
 
+MAX_SAMPLES = 100000
+
+
 def _check_options(args):
-    if args.samples < 2:
-        raise InputError(f"--samples {args.samples}: must be at least 2")
+    if not 2 <= args.samples <= MAX_SAMPLES:  # the core's range (ValidityOptions)
+        raise InputError(f"--samples {args.samples}: must be 2 to {MAX_SAMPLES}")
     if not math.isfinite(args.clearance) or args.clearance < 0:
         raise InputError(f"--clearance {args.clearance}: must be a finite length >= 0 mm")
 

@@ -141,7 +141,9 @@ def test_inconsistent_design(tmp_path):
 @pytest.mark.parametrize(
     "options, fragment",
     [
-        (["--samples", "1"], "--samples"),
+        (["--samples", "1"], "--samples 1: must be 2 to 100000"),
+        (["--samples", "99999999999999999999"], "--samples 99999999999999999999: must be 2 to"),
+        (["--clearance", "inf"], "--clearance inf"),
         (["--samples", "many"], "--samples"),
         (["--clearance", "-1"], "--clearance"),
         (["--colour", "red"], "--colour"),
