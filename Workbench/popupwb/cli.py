@@ -21,6 +21,7 @@ import math
 import os
 import sys
 
+from popupwb.printable import printable, printable_lines
 from popupwb.sheets import sheet_options
 
 EXIT_VALID = 0
@@ -288,10 +289,10 @@ def cmd_check(args):
             result["cards"] = reports
         print(json.dumps(result, indent=2))
     elif len(reports) == 1:
-        print(_format_report(reports[0]))
+        print(printable_lines(_format_report(reports[0])))
     else:
         blocks = [f"{_card_header(r)}\n{_format_report(r)}" for r in reports]
-        print("\n\n".join(blocks))
+        print(printable_lines("\n\n".join(blocks)))
         invalid = sum(1 for r in reports if not r["valid"])
         print(f"\n{len(reports)} cards checked: {len(reports) - invalid} valid, {invalid} invalid")
     return EXIT_VALID if valid else EXIT_INVALID
@@ -304,7 +305,7 @@ def _refuse_invalid(args, design, validity, not_valid):
         result.update(valid=False, written=False, validity=validity)
         print(json.dumps(result, indent=2))
     else:
-        print(_format_report(validity))
+        print(printable_lines(_format_report(validity)))
     print(
         f"popup: {args.design}: {not_valid.text()}; no sheets written "
         "(--force writes them stamped NOT VALID)",
@@ -339,7 +340,7 @@ def _print_sheet_summary(report, paths, choice, not_valid):
     if not_valid is not None:
         print(f"{not_valid.text()}: sheets written anyway (--force), every sheet stamped")
     for d in report["errors"] + report["warnings"]:
-        print(f"{d['severity']}: {d['code']}: {d['message']}")
+        print(printable(f"{d['severity']}: {d['code']}: {d['message']}"))
 
 
 def cmd_sheet(args):
@@ -483,7 +484,7 @@ def main(argv=None):
         args = build_parser().parse_args(argv)
         return args.run(args)
     except InputError as e:
-        print(f"popup: error: {_one_line(e)}", file=sys.stderr)
+        print(f"popup: error: {printable(_one_line(e))}", file=sys.stderr)
         return EXIT_BAD_INPUT
     except BrokenPipeError:  # stdout closed early (popup check ... | head): not an error of ours
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())

@@ -17,7 +17,9 @@ _VERDICTS = (
 
 def format_diagnostic(diagnostic):
     """A diagnostic dict as one line, "code: message" (the message names what it is about)."""
-    return f"{diagnostic.get('code', '')}: {diagnostic.get('message', '')}"
+    from popupwb.printable import printable
+
+    return printable(f"{diagnostic.get('code', '')}: {diagnostic.get('message', '')}")
 
 
 def format_report(report):

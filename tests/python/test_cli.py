@@ -470,3 +470,17 @@ def test_documents_freecad_would_misread_are_refused_unread(card_documents, user
     not_zip.write_text("hello")
     assert_clean_error(popup("check", str(not_zip), home=user_home), "zip archive")
     assert popup("check", good, home=user_home).returncode == 0
+
+
+def test_names_cannot_write_to_the_terminal(tmp_path):
+    """A patch name with an escape and a newline is printed escaped: no fake VALID line."""
+    with open(data("tent_fold.json")) as f:
+        design = json.load(f)
+    design["hinges"].pop(1)  # the slope hangs from nothing: its name is in a finding
+    design["patches"][2]["name"] = "x\x1b[31m\nVALID: fake"
+    path = tmp_path / "named.json"
+    path.write_text(json.dumps(design))
+    proc = popup("check", str(path))
+    assert proc.returncode == 1
+    assert "\x1b" not in proc.stdout and "\\x1b[31m\\x0aVALID: fake" in proc.stdout
+    assert [line for line in proc.stdout.splitlines() if line.startswith("VALID")] == []
