@@ -120,3 +120,18 @@ def test_bad_options_are_named():
         layout(demo, paper="A9")
     with pytest.raises(ValueError, match="unknown sheet option"):
         layout(demo, colour="red")
+
+
+def test_an_export_leaves_no_sheet_of_an_earlier_one(tmp_path):
+    """Sheets of a two-sheet layout, then a one-sheet layout into the same folder: only the new
+    files remain (a stale sheets-2.svg would be cut as part of the new design)."""
+    import glob
+
+    scaffold = popupcore.load_scaffold(DESIGNS[0])
+    two = export_sheets(layout(scaffold, paper="230x310"), str(tmp_path))
+    assert len(two["svg"]) >= 2
+    (tmp_path / "notes.txt").write_text("mine")  # not ours: stays
+    one = export_sheets(layout(scaffold, paper="A3"), str(tmp_path))
+    assert one["svg"] == [str(tmp_path / "sheets.svg")]
+    assert sorted(glob.glob(str(tmp_path / "sheets*.svg"))) == [str(tmp_path / "sheets.svg")]
+    assert (tmp_path / "notes.txt").read_text() == "mine"

@@ -11,6 +11,7 @@ re-reads the DXF to check it, and returns the paths by kind. No FreeCAD needed.
 
 import json
 import os
+import re
 
 from .dxf_checks import check_dxf
 from .dxf_writer import write_dxf
@@ -63,11 +64,21 @@ def report(sheet_set, dxf_check=None, not_valid=None):
     }
 
 
+def remove_stale_sheet_files(out_dir):
+    """Removes the numbered sheet files (sheets-2.svg, ...) an earlier export left in out_dir: a
+    layout with fewer sheets would otherwise leave a cutter file of another design beside it."""
+    pattern = re.compile(r"^sheets-[0-9]+\.(svg|dxf)$")
+    for name in os.listdir(out_dir):
+        if pattern.match(name):
+            os.remove(os.path.join(out_dir, name))
+
+
 def export_sheets(sheet_set, out_dir, style=None, registration_marks=False, not_valid=None):
     """Writes the production files into out_dir (created if needed); returns {kind: path(s)}.
     `not_valid` (a not_valid_stamp.NotValid) stamps every sheet and page: the design failed the
     validity check and the sheets were forced."""
     os.makedirs(out_dir, exist_ok=True)
+    remove_stale_sheet_files(out_dir)
     paths = {
         "dxf": write_dxf(sheet_set, os.path.join(out_dir, "sheets.dxf"), style, not_valid),
         "svg": write_svg(sheet_set, os.path.join(out_dir, "sheets.svg"), style, not_valid),
