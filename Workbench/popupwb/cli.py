@@ -260,9 +260,12 @@ def _check(popupcore, design, samples, clearance):
     with _stdout_to_stderr():
         report = popupcore.check_validity(design.scaffold, samples=samples, clearance=clearance)
     result = report.to_dict()
-    rejected = [d["message"] for d in result["diagnostics"] if d["code"] == "bad_option"]
-    if rejected:  # limits the core enforces beyond the checks above
-        raise InputError(f"--samples {samples} --clearance {clearance}: {rejected[0]}")
+    rejected = [d for d in result["diagnostics"] if d["code"] == "bad_option"]
+    if rejected:  # limits the core enforces beyond the checks above (they depend on the design)
+        given = {"samples": samples, "clearance": clearance}
+        d = rejected[0]
+        flag = f"--{d['parameter']} {given[d['parameter']]:g}" if d["parameter"] in given else ""
+        raise InputError(f"{flag}: {d['message']}" if flag else d["message"])
     return {**result, **design.fields}
 
 

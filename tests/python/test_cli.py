@@ -484,3 +484,10 @@ def test_names_cannot_write_to_the_terminal(tmp_path):
     assert proc.returncode == 1
     assert "\x1b" not in proc.stdout and "\\x1b[31m\\x0aVALID: fake" in proc.stdout
     assert [line for line in proc.stdout.splitlines() if line.startswith("VALID")] == []
+
+
+def test_a_clearance_beyond_the_model_is_named():
+    """The largest clearance is 5% of the model size popup check reports (345.4 mm here)."""
+    proc = popup("check", data("mechanisms/box.json"), "--clearance", "1000")
+    assert_clean_error(proc, "--clearance 1000: clearance = 1000 mm, must be 0 to 17.2")
+    assert popup("check", data("mechanisms/box.json"), "--clearance", "0").returncode == 0

@@ -171,12 +171,26 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
     auto add = [&](DiagnosticCode code, std::string message, DiagnosticSubject about = {}) {
         report.diagnostics.push_back(Diagnostic::error(code, std::move(message), std::move(about)));
     };
-    if (options.samples < 2 || options.samples > 100000 || !(options.clearance >= 0.0) ||
-        options.refine_depth < 0 || options.refine_depth > 30) {
+    if (options.samples < 2 || options.samples > 100000) {
         add(DiagnosticCode::bad_option,
-            "samples must be 2..100000, clearance >= 0 mm and refine_depth 0..30 (got " +
-                std::to_string(options.samples) + ", " + std::to_string(options.clearance) + ", " +
-                std::to_string(options.refine_depth) + ")");
+            "samples = " + std::to_string(options.samples) + ", must be 2 to 100000",
+            about_parameter("samples"));
+        return report;
+    }
+    // A gap wider than a twentieth of the card is no clearance any more: patches stand further
+    // apart than that only far from each other, and the proximity test loses its meaning.
+    const double largest_clearance = 0.05 * size;
+    if (!(options.clearance >= 0.0 && options.clearance <= largest_clearance)) {
+        std::ostringstream m;
+        m << "clearance = " << options.clearance << " mm, must be 0 to " << largest_clearance
+          << " mm (5% of the model size)";
+        add(DiagnosticCode::bad_option, m.str(), about_parameter("clearance"));
+        return report;
+    }
+    if (options.refine_depth < 0 || options.refine_depth > 30) {
+        add(DiagnosticCode::bad_option,
+            "refine_depth = " + std::to_string(options.refine_depth) + ", must be 0 to 30",
+            about_parameter("refine_depth"));
         return report;
     }
     Result<BodyGraph> graph = build_body_graph(s);

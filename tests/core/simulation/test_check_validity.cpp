@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "popup/simulation/check_validity.hpp"
 #include "sheet_designs.hpp"
@@ -233,4 +234,31 @@ TEST(CheckValidity, PatchesHeldByNothingAreNamedNotCrashes)
     EXPECT_EQ(s.diagnostics.front().patches, std::vector<int>{alone});
     const Result<FoldSweep> sweep = simulate_fold(stray, {M_PI / 2});
     EXPECT_FALSE(sweep.ok);
+}
+
+TEST(CheckValidity, ClearanceIsBoundedAndNeverTurnsInvalidIntoValid)
+{
+    for (const fixtures::NamedDesign& d : fixtures::single_mechanism_cards()) {
+        const double largest = 0.05 * d.scaffold.size();
+        bool was_valid = true;
+        for (double fraction : {0.0, 0.01, 0.05, 0.1, 0.2, 0.4, 0.7, 1.0}) {
+            ValidityOptions options;
+            options.samples = 37;
+            options.clearance = fraction * largest;
+            const ValidityReport r = check_validity(d.scaffold, options);
+            EXPECT_FALSE(r.valid() && !was_valid)
+                << d.name << ": VALID again at clearance " << options.clearance << " mm";
+            was_valid = r.valid();
+        }
+        for (double beyond : {1.001 * largest, 1000.0, std::numeric_limits<double>::infinity(),
+                              -0.1, std::numeric_limits<double>::quiet_NaN()}) {
+            ValidityOptions options;
+            options.clearance = beyond;
+            const ValidityReport r = check_validity(d.scaffold, options);
+            EXPECT_FALSE(r.valid()) << d.name << " " << beyond;
+            ASSERT_EQ(r.diagnostics.size(), 1u);
+            EXPECT_EQ(r.diagnostics.front().code, DiagnosticCode::bad_option);
+            EXPECT_EQ(r.diagnostics.front().parameter, "clearance");
+        }
+    }
 }
