@@ -19,6 +19,10 @@ using Point = Kernel::Point_2;
 std::optional<Vec2> first_loop_crossing(const std::vector<Loop2>& loops)
 {
     std::vector<Segment> edges;
+    for (const Loop2& loop : loops) // exact numbers cannot hold inf or NaN (GMP would trap)
+        for (const Vec2& p : loop)
+            if (!p.allFinite())
+                return p;
     for (const Loop2& loop : loops)
         for (size_t i = 0; i < loop.size(); ++i) {
             const Vec2& a = loop[i];

@@ -54,7 +54,7 @@ int read_int(const json& value, const std::string& path)
             ? value.get<std::uint64_t>() <= std::uint64_t(INT_MAX)
             : value.get<std::int64_t>() >= INT_MIN && value.get<std::int64_t>() <= INT_MAX;
     if (!in_range)
-        throw FieldError{path, "= " + value.dump() + " is out of range, must be between " +
+        throw FieldError{path, "is " + value.dump() + ", out of range: must be between " +
                                    std::to_string(INT_MIN) + " and " + std::to_string(INT_MAX)};
     return value.get<int>();
 }
@@ -69,6 +69,9 @@ Vec3 read_point(const json& value, const std::string& path)
         if (value[k].is_null())
             throw FieldError{path + "[" + std::to_string(k) + "]", "is null (NaN or infinite?)"};
         p[k] = read_number(value[k], path + "[" + std::to_string(k) + "]");
+        if (std::abs(p[k]) > 1e6) // a kilometre: no paper design reaches it
+            throw FieldError{path + "[" + std::to_string(k) + "]",
+                             "is " + value[k].dump() + " mm, must be within ±1e6 mm"};
     }
     return p;
 }

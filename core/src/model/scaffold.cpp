@@ -55,6 +55,8 @@ double Scaffold::size() const
 
 namespace {
 
+constexpr double kLargestCoordinate = 1e6; // mm
+
 std::string patch_subject(const Patch& p)
 {
     std::ostringstream s;
@@ -64,9 +66,11 @@ std::string patch_subject(const Patch& p)
     return s.str();
 }
 
+// Within a kilometre of the origin: any paper design is, and squares of such coordinates (areas,
+// normals) stay far from overflow.
 bool finite(const Vec3& x)
 {
-    return x.allFinite();
+    return x.allFinite() && x.cwiseAbs().maxCoeff() <= kLargestCoordinate;
 }
 
 // The first two vertices of a loop at the same point (to a nanometre), in O(n log n).
@@ -167,7 +171,7 @@ Result<Scaffold> validate_scaffold(Scaffold s)
             ok = ok && std::all_of(h.begin(), h.end(), finite);
         if (!ok) {
             patch_error(DiagnosticCode::non_finite_coordinate, p,
-                        "a vertex has a NaN or infinite coordinate");
+                        "a vertex has a NaN or infinite coordinate, or one beyond ±1e6 mm");
             coordinates_ok = false;
         }
     }

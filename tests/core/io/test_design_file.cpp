@@ -74,6 +74,18 @@ TEST(DesignFile, EndlessAndNulNamedFilesAreRefused)
     EXPECT_TRUE(load_scaffold("tests/data/tent_fold.json").ok); // the real file still loads
 }
 
+TEST(DesignFile, AFarCoordinateIsNamedByItsField)
+{
+    std::string text = scaffold_to_json(tent_card());
+    const size_t key = text.find("\"outline\"");
+    const size_t start = text.find_first_not_of(" \n", text.find('[', text.find('[', key) + 1) + 1);
+    text.replace(start, text.find(',', start) - start, "1e308");
+    const Result<Scaffold> r = scaffold_from_json(text);
+    ASSERT_FALSE(r.ok);
+    EXPECT_EQ(first_parameter(r), "patches[0].outline[0][0]");
+    EXPECT_NE(r.diagnostics.front().message.find("within ±1e6 mm"), std::string::npos);
+}
+
 TEST(DesignFile, MalformedJsonIsReported)
 {
     const Result<Scaffold> r = scaffold_from_json("{\"format\": ");
