@@ -141,3 +141,14 @@ TEST(ScaffoldValidation, CrossingOutlinesAndStrayHolesAreNamedWithWhere)
     EXPECT_EQ(across.diagnostics.front().code, DiagnosticCode::hole_crosses_outline);
     EXPECT_NE(across.diagnostics.front().message.find("hole 1"), std::string::npos);
 }
+
+TEST(ScaffoldValidation, AFarCoordinateIsNamedNotCrashed)
+{
+    // 1e308 overflowed the frame and trapped inside GMP's exact numbers.
+    Scaffold far = fixtures::make_card();
+    far.patches[0].outer[1].x() = 1e308;
+    const Result<Scaffold> r = validate_scaffold(far);
+    ASSERT_FALSE(r.ok);
+    EXPECT_EQ(r.diagnostics.front().code, DiagnosticCode::non_finite_coordinate);
+    EXPECT_EQ(r.diagnostics.front().patches, std::vector<int>{far.patches[0].id});
+}
