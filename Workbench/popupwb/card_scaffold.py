@@ -81,6 +81,25 @@ def host_pair_names(host):
     return []
 
 
+def stray_features(doc):
+    """Messages for the document's PopUp features that no card builds: a mechanism whose Host
+    chain is empty, foreign or loops, and a feature whose code did not load (its proxy module is
+    missing). A damaged file must not check VALID with mechanisms silently left out."""
+    problems = []
+    for obj in doc.Objects:
+        if is_mechanism(obj):
+            try:
+                root_card(obj)
+            except ValueError as error:
+                problems.append(str(error))
+        elif getattr(obj, "Proxy", False) is None and "HostPair" in obj.PropertiesList:
+            problems.append(
+                f"{obj.Label}: its feature code did not load (proxy module missing): the "
+                "document was saved by another version of PopUp or is damaged"
+            )
+    return problems
+
+
 def mechanisms_of(card):
     """The mechanisms hosted (directly or through other mechanisms) on `card`, hosts first."""
     children = collections.defaultdict(list)

@@ -145,10 +145,11 @@ def _select_cards(path, objects, card):
 def _card_design(path, card, several):
     """The assembled scaffold of a PopUpCard and its mechanisms; a part that does not build makes
     the input unusable (the message is the feature's error)."""
-    from popupwb.card_scaffold import for_card
+    from popupwb.card_scaffold import for_card, stray_features
 
     built = for_card(card)
     problems = ([built.card_error] if built.card_error else []) + list(built.errors.values())
+    problems += stray_features(card.Document)
     if problems:
         # Several cards: say which one, and that the others can still be checked alone.
         where = f"{path}: card {card.Label}" if several else path

@@ -131,9 +131,10 @@ def _check_card(card, samples, clearance):
     report = popupcore.check_validity(
         built.scaffold, samples=samples, clearance=clearance
     ).to_dict()
-    for name, message in built.errors.items():
+    problems = list(built.errors.values()) + card_scaffold.stray_features(card.Document)
+    for message in problems:
         report["diagnostics"].append(design_error(message))
-    report["valid"] = bool(report["valid"]) and not built.errors
+    report["valid"] = bool(report["valid"]) and not problems
     card.CheckedDesign = built.digest
     if FreeCAD.GuiUp:
         from popupwb.viewproviders import patch_colours

@@ -491,3 +491,31 @@ def test_a_clearance_beyond_the_model_is_named():
     proc = popup("check", data("mechanisms/box.json"), "--clearance", "1000")
     assert_clean_error(proc, "--clearance 1000: clearance = 1000 mm, must be 0 to 17.2")
     assert popup("check", data("mechanisms/box.json"), "--clearance", "0").returncode == 0
+
+
+def test_a_damaged_document_does_not_check_valid(card_documents, user_home, tmp_path):
+    """card.FCStd with its Box hosted on its own Tent (a Host loop), or with the tent's feature
+    module renamed: mechanisms would be left out silently, so the check refuses the document."""
+    import re
+
+    good = str(card_documents / "card.FCStd")
+
+    def host_loop(xml):
+        text = xml.decode()
+        start = text.index('<Object name="Box">')
+        end = text.index("</Object>", start)
+        looped = re.sub(
+            r'(<Property name="Host".*?<Link value=")Card', r"\1Tent", text[start:end], 1, re.S
+        )
+        assert looped != text[start:end]
+        return (text[:start] + looped + text[end:]).encode()
+
+    def no_proxy(xml):
+        return xml.replace(
+            b'module="popupwb.features.tent_fold"', b'module="popupwb.features.gone"'
+        )
+
+    looped = rewritten(good, tmp_path / "loop.FCStd", host_loop)
+    assert_clean_error(popup("check", looped, home=user_home), "must not loop")
+    missing = rewritten(good, tmp_path / "noproxy.FCStd", no_proxy)
+    assert_clean_error(popup("check", missing, home=user_home), "Tent", "proxy module missing")
