@@ -565,3 +565,13 @@ def test_box_fold_with_stacked_panel_pairs(doc, popup):
     box.PanelPairs = 0
     doc.recompute()
     assert "Invalid" in box.State or "Error" in box.State
+
+
+def test_a_count_beyond_32_bits_puts_only_its_feature_in_error(doc, popup, card):
+    card["Box"].PanelPairs = 2**31
+    doc.recompute()
+    assert in_error(card["Box"]) and not in_error(card["Card"])
+    assert "PanelPairs = 2147483648, must be below 2147483648" in card["Box"].getStatusString()
+    report = popup.validity.run_check(card["Card"])  # reports, does not raise
+    assert report["valid"] is False
+    assert any("PanelPairs" in d["message"] for d in report["diagnostics"])

@@ -139,6 +139,9 @@ class MechanismFeature(StatelessProxy):
 
         params = getattr(popupcore, self.PARAMS)()
         for p, value in zip(self.PARAMETERS, self.parameter_values(obj)):
+            if p.kind == "integer" and not -(2**31) <= value < 2**31:
+                # The core counts in 32 bits: name the property rather than fail in the binding.
+                raise ValueError(f"{obj.Label}: {p.name} = {value}, must be below 2147483648")
             setattr(params, p.field, math.radians(value) if p.kind == "angle" else value)
         return params
 
