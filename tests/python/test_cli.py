@@ -519,3 +519,11 @@ def test_a_damaged_document_does_not_check_valid(card_documents, user_home, tmp_
     assert_clean_error(popup("check", looped, home=user_home), "must not loop")
     missing = rewritten(good, tmp_path / "noproxy.FCStd", no_proxy)
     assert_clean_error(popup("check", missing, home=user_home), "Tent", "proxy module missing")
+
+
+def test_a_utf16_design_is_named_as_such(tmp_path):
+    with open(data("tent_fold.json"), encoding="utf-8") as f:
+        text = f.read()
+    path = tmp_path / "utf16.json"
+    path.write_bytes(b"\xff\xfe" + text.encode("utf-16-le"))
+    assert_clean_error(popup("check", str(path)), "utf16.json", "UTF-8 text", "\\xff")

@@ -3,6 +3,7 @@
 #include <climits>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -17,6 +18,23 @@ namespace {
 
 constexpr const char* kFormatName = "popup-design";
 constexpr size_t kMaxDesignFileBytes = size_t(256) << 20; // 256 MiB: far beyond any real design
+
+// The parser quotes the bytes it stopped at; a UTF-16 or binary file must not turn the message
+// itself into invalid UTF-8 (Python could not even show it).
+std::string printable_ascii(const std::string& text)
+{
+    std::string out;
+    for (unsigned char c : text) {
+        if (c >= 0x20 && c < 0x7f) {
+            out += char(c);
+        } else {
+            char escaped[8];
+            std::snprintf(escaped, sizeof escaped, "\\x%02x", c);
+            out += escaped;
+        }
+    }
+    return out;
+}
 
 // Thrown inside the reader only; turned into a diagnostic naming the field.
 struct FieldError {
@@ -237,7 +255,8 @@ Result<Scaffold> scaffold_from_json(const std::string& text)
     try {
         j = json::parse(text);
     } catch (const json::exception& e) { // syntax errors, and numbers beyond double range
-        r.fail(DiagnosticCode::bad_json, std::string("not valid JSON: ") + e.what());
+        r.fail(DiagnosticCode::bad_json,
+               "not valid JSON (a design file is UTF-8 text): " + printable_ascii(e.what()));
         return r;
     }
     Scaffold s;
