@@ -1,4 +1,7 @@
 // Bindings of the card and the mechanism generators: declarations only.
+#include <cmath>
+#include <stdexcept>
+
 #include <pybind11/eigen.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -36,6 +39,63 @@ void def_generator(py::module_& m, const char* function, Add add, const char* do
         py::arg("scaffold"), py::arg("host"), py::arg("params"), py::arg("name"), doc);
 }
 
+// Closed forms hold for openings 0..π and give numbers only for parameters in range: anything
+// else is a named ValueError, never a silent NaN.
+void check_opening(double opening, const char* name)
+{
+    if (!(opening >= 0.0 && opening <= M_PI))
+        throw std::invalid_argument(std::string(name) + " = " + std::to_string(opening) +
+                                    " rad, must be 0 to π");
+}
+
+bool finite(const Vec2& v)
+{
+    return v.allFinite();
+}
+bool finite(const Vec3& v)
+{
+    return v.allFinite();
+}
+bool finite(const BoxSection& b)
+{
+    return b.top.allFinite() && b.side_ground_top.allFinite() && b.side_backdrop_top.allFinite() &&
+           b.crease_foot.allFinite() && std::isfinite(b.crease_out);
+}
+bool finite(const BasePatchPair& p)
+{
+    return p.origin.allFinite() && p.axis.allFinite() && p.up.allFinite() &&
+           std::isfinite(p.opening) && std::isfinite(p.length);
+}
+
+template <class T> T checked(T value, const char* function)
+{
+    if (!finite(value))
+        throw std::invalid_argument(std::string(function) +
+                                    ": no closed form for these parameters (a NaN or infinite "
+                                    "parameter, or one out of its range)");
+    return value;
+}
+
+/// A closed form f(params, opening), its opening and result checked.
+template <class Params, class Result>
+auto closed_form(Result (*f)(const Params&, double), const char* name)
+{
+    return [f, name](const Params& p, double opening) {
+        check_opening(opening, "opening");
+        return checked(f(p, opening), name);
+    };
+}
+
+/// The same for f(params, design_opening, opening).
+template <class Params, class Result>
+auto closed_form(Result (*f)(const Params&, double, double), const char* name)
+{
+    return [f, name](const Params& p, double design_opening, double opening) {
+        check_opening(design_opening, "design_opening");
+        check_opening(opening, "opening");
+        return checked(f(p, design_opening, opening), name);
+    };
+}
 } // namespace
 
 void bind_mechanisms(py::module_& m)
@@ -111,7 +171,8 @@ void bind_mechanisms(py::module_& m)
     py::class_<HorizontalTranslationParams, StepFoldParams>(m, "HorizontalTranslationParams")
         .def(py::init<>())
         .def_readwrite("reach", &HorizontalTranslationParams::reach);
-    m.def("horizontal_translation_tip", &horizontal_translation_tip, py::arg("params"),
+    m.def("horizontal_translation_tip",
+          closed_form(&horizontal_translation_tip, "horizontal_translation_tip"), py::arg("params"),
           py::arg("opening"), "Closed form: M's far end P (x, z) in the host's section.");
     py::class_<RotationArmParams>(m, "RotationArmParams")
         .def(py::init<>())
@@ -119,7 +180,8 @@ void bind_mechanisms(py::module_& m)
         .def_readwrite("spine", &RotationArmParams::spine)
         .def_readwrite("run", &RotationArmParams::run)
         .def_readwrite("arm", &RotationArmParams::arm);
-    m.def("rotation_arm_tip", &rotation_arm_tip, py::arg("params"), py::arg("opening"),
+    m.def("rotation_arm_tip", closed_form(&rotation_arm_tip, "rotation_arm_tip"), py::arg("params"),
+          py::arg("opening"),
           "Closed form: the arm's tip P (x, y, z) in the host's frame at that opening.");
     py::class_<VBoxFoldParams>(m, "VBoxFoldParams")
         .def(py::init<>())
@@ -128,7 +190,8 @@ void bind_mechanisms(py::module_& m)
         .def_readwrite("height", &VBoxFoldParams::height)
         .def_readwrite("wall_angle", &VBoxFoldParams::wall_angle)
         .def_readwrite("back", &VBoxFoldParams::back);
-    m.def("v_box_front_corner", &v_box_front_corner, py::arg("params"), py::arg("opening"),
+    m.def("v_box_front_corner", closed_form(&v_box_front_corner, "v_box_front_corner"),
+          py::arg("params"), py::arg("opening"),
           "Closed form: the v-box's front top corner in the host's frame at that opening.");
     py::class_<BoxSection>(m, "BoxSection")
         .def_readonly("top", &BoxSection::top)
@@ -136,14 +199,16 @@ void bind_mechanisms(py::module_& m)
         .def_readonly("side_backdrop_top", &BoxSection::side_backdrop_top)
         .def_readonly("crease_foot", &BoxSection::crease_foot)
         .def_readonly("crease_out", &BoxSection::crease_out);
-    m.def("tent_apex", &tent_apex, py::arg("params"), py::arg("opening"),
+    m.def("tent_apex", closed_form(&tent_apex, "tent_apex"), py::arg("params"), py::arg("opening"),
           "Closed form: apex (x, z) in the host's section at that opening.");
-    m.def("step_nose", &step_nose, py::arg("params"), py::arg("opening"));
-    m.def("v_fold_tip", &v_fold_tip, py::arg("params"), py::arg("design_opening"),
+    m.def("step_nose", closed_form(&step_nose, "step_nose"), py::arg("params"), py::arg("opening"));
+    m.def("v_fold_tip", closed_form(&v_fold_tip, "v_fold_tip"), py::arg("params"),
+          py::arg("design_opening"), py::arg("opening"));
+    m.def("v_fold_wings", closed_form(&v_fold_wings, "v_fold_wings"), py::arg("params"),
+          py::arg("design_opening"), py::arg("opening"),
+          "Closed form: the wings' base patch pair, posed at that opening.");
+    m.def("box_fold_section", closed_form(&box_fold_section, "box_fold_section"), py::arg("params"),
           py::arg("opening"));
-    m.def("v_fold_wings", &v_fold_wings, py::arg("params"), py::arg("design_opening"),
-          py::arg("opening"), "Closed form: the wings' base patch pair, posed at that opening.");
-    m.def("box_fold_section", &box_fold_section, py::arg("params"), py::arg("opening"));
 
     def_generator<TentFoldParams>(m, "add_tent_fold", &add_tent_fold,
                                   "Adds a tent fold on `host`; DesignError names a bad parameter.");

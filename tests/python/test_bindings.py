@@ -461,3 +461,27 @@ def test_simulate_fold_releases_the_gil(tent):
     assert call["sweep"].complete
     assert call["duration"] >= 0.1, "the call is too short for the check to mean anything"
     assert longest_pause < 0.5 * call["duration"]
+
+
+def test_closed_forms_refuse_what_they_cannot_answer():
+    nan = float("nan")
+    cases = [
+        (popupcore.box_fold_section, (popupcore.BoxFoldParams(), nan), "opening = nan"),
+        (popupcore.tent_apex, (popupcore.TentFoldParams(), 100.0), "must be 0 to π"),
+        (popupcore.v_fold_wings, (popupcore.VFoldParams(), -1.0, 1.0), "design_opening = -1"),
+        (
+            popupcore.horizontal_translation_tip,
+            (popupcore.HorizontalTranslationParams(), -3.0),
+            "opening = -3",
+        ),
+    ]
+    for function, args, words in cases:
+        with pytest.raises(ValueError, match=words):
+            function(*args)
+    broken = popupcore.TentFoldParams()
+    broken.slope = nan
+    with pytest.raises(ValueError, match="tent_apex: no closed form"):
+        popupcore.tent_apex(broken, 1.0)
+    # In range, the tent's apex stands on the mid-plane (x = 0) above the fold.
+    apex = popupcore.tent_apex(popupcore.TentFoldParams(), 1.0)
+    assert abs(apex[0]) < 1e-12 and apex[1] > 0
