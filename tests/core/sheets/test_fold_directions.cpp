@@ -122,7 +122,10 @@ TEST_P(FoldDirections, EveryFoldOfEveryMechanismTypeMatchesTheMotion)
 }
 
 INSTANTIATE_TEST_SUITE_P(PrintedSides, FoldDirections,
-                         ::testing::Values(PrintedSide::front, PrintedSide::back));
+                         ::testing::Values(PrintedSide::front, PrintedSide::back),
+                         [](const ::testing::TestParamInfo<PrintedSide>& side) {
+                             return std::string(to_string(side.param));
+                         });
 
 TEST(PrintedSide, TurningAPieceOverSwapsItsFoldsAndGlueSides)
 {
