@@ -1,6 +1,7 @@
 #include "mechanism_builder.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 namespace popup {
@@ -66,6 +67,26 @@ Result<MechanismParts> MechanismBuilder::finish()
                    (p ? "" : ", which this design does not have"),
                about_parameter("Host"));
         break;
+    }
+    // Parameters inside their ranges can still make a part vanish or run off to infinity (a
+    // 1e300 mm slope, a wall angle a hair below 90°): the mechanism is in error, not the card.
+    auto degenerate = [&](const std::string& what) {
+        r.fail(DiagnosticCode::bad_parameter, parts_.name + ": these parameters make " + what +
+                                                  "; move them away from the ends of their ranges");
+    };
+    for (size_t k = first_patch_; k < scaffold_.patches.size() && r.ok; ++k) {
+        Patch& p = scaffold_.patches[k];
+        const bool finite = std::all_of(p.outer.begin(), p.outer.end(), [](const Vec3& x) {
+            return x.allFinite() && x.cwiseAbs().maxCoeff() <= 1e6;
+        });
+        if (!finite || !std::isfinite(p.derive_frame()) || !(p.area() > tol * tol))
+            degenerate(p.name + " degenerate (no area, or coordinates beyond ±1e6 mm)");
+    }
+    for (size_t k = first_hinge_; k < scaffold_.hinges.size() && r.ok; ++k) {
+        const Hinge& h = scaffold_.hinges[k];
+        if (!h.from.allFinite() || !h.to.allFinite() || !((h.to - h.from).norm() > 10 * tol))
+            degenerate("fold " + std::to_string(h.id) + " shorter than " +
+                       std::to_string(10 * tol) + " mm");
     }
     for (size_t k = first_hinge_; k < scaffold_.hinges.size() && r.ok; ++k) {
         const Hinge& h = scaffold_.hinges[k];

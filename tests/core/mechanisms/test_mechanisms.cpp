@@ -377,3 +377,27 @@ TEST(Generators, ABasePairOfAnotherDesignIsRefused)
         EXPECT_EQ(s.hinges.size(), hinges);
     }
 }
+
+TEST(Generators, ParametersThatMakeAPartVanishAreTheMechanismsError)
+{
+    // In range, yet degenerate: a 1e300 mm slope runs off to infinity, a wall angle a hair below
+    // 90° leaves a fold a fraction of a micrometre long.
+    Scaffold s = fixtures::generator_card(200);
+    const size_t patches = s.patches.size(), hinges = s.hinges.size();
+    TentFoldParams tent = placed(TentFoldParams{}, 40, 60);
+    tent.slope = 1e300;
+    const Result<MechanismParts> huge = add_tent_fold(s, central_fold(s), tent, "Tent");
+    ASSERT_FALSE(huge.ok);
+    EXPECT_EQ(huge.diagnostics.front().code, DiagnosticCode::bad_parameter);
+    EXPECT_EQ(huge.diagnostics.front().message.rfind("Tent: ", 0), 0u);
+    VBoxFoldParams vbox;
+    vbox.offset = 60;
+    vbox.wall_angle = (90.0 - 1e-3) * M_PI / 180.0;
+    const Result<MechanismParts> thin = add_v_box_fold(s, central_fold(s), vbox, "VBox");
+    ASSERT_FALSE(thin.ok);
+    EXPECT_NE(thin.diagnostics.front().message.find("VBox: these parameters make fold"),
+              std::string::npos)
+        << thin.diagnostics.front().message;
+    EXPECT_EQ(s.patches.size(), patches);
+    EXPECT_EQ(s.hinges.size(), hinges);
+}
