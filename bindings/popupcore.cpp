@@ -192,7 +192,20 @@ PYBIND11_MODULE(popupcore, m)
             "copy", [](const Scaffold& s) { return Scaffold(s); }, "An independent copy.");
 
     m.def(
-        "scaffold_from_json", [](const std::string& t) { return unwrap(scaffold_from_json(t)); },
+        "scaffold_from_json",
+        [](const py::str& text) {
+            // A str that is not valid Unicode (a lone surrogate) has no UTF-8 form: say so,
+            // rather than let pybind11 report an argument-type mismatch.
+            PyObject* utf8 = PyUnicode_AsUTF8String(text.ptr());
+            if (!utf8) {
+                PyErr_Clear();
+                throw DesignFailure({Diagnostic::error(
+                    DiagnosticCode::bad_json,
+                    "design text is not valid Unicode (a lone surrogate?); it cannot be UTF-8")});
+            }
+            const std::string t = py::reinterpret_steal<py::bytes>(utf8);
+            return unwrap(scaffold_from_json(t));
+        },
         py::arg("text"), "Parses a design file's text; raises DesignError naming the field.");
     m.def(
         "load_scaffold", [](const std::string& p) { return unwrap(load_scaffold(p)); },

@@ -233,9 +233,16 @@ std::string patches_to_brep(const Scaffold& scaffold, const FoldState& state,
                                     std::to_string(state.poses.size()) + " poses for " +
                                     std::to_string(scaffold.patches.size()) +
                                     " patches of scaffold \"" + scaffold.name + "\"");
-    if (!std::isfinite(options.thickness) || options.thickness < 0.0)
-        throw std::invalid_argument("patches_to_brep: thickness = " +
-                                    std::to_string(options.thickness) + " mm, must be >= 0");
+    // Paper, not a block: a thickness beyond 5% of the model (as for design files) would make
+    // OCCT's prisms fail with a bare "gp_Dir() - input vector has zero norm".
+    const double largest = 0.05 * std::max(scaffold.size(), 1.0);
+    if (!std::isfinite(options.thickness) || options.thickness < 0.0 ||
+        options.thickness > largest) {
+        std::ostringstream m;
+        m << "patches_to_brep: thickness = " << options.thickness << " mm, must be 0 to " << largest
+          << " mm (5% of the model size)";
+        throw std::invalid_argument(m.str());
+    }
 
     BRep_Builder builder;
     TopoDS_Compound compound;
