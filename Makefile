@@ -7,7 +7,7 @@ MODDIR  := $(HOME)/.local/share/FreeCAD/Mod
 
 DEBS := cmake make g++ pkg-config freecad \
 	libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libtbb-dev \
-	libcgal-dev libeigen3-dev pybind11-dev python3-dev nlohmann-json3-dev libassimp-dev \
+	libcgal-dev libboost-dev libeigen3-dev pybind11-dev python3-dev nlohmann-json3-dev libassimp-dev \
 	python3-ezdxf python3-pytest python3-numpy libgtest-dev libbenchmark-dev \
 	libpolyclipping-dev python3-svgwrite python3-reportlab python3-matplotlib python3-pypdf librecad \
 	xvfb xauth clang-format black patch

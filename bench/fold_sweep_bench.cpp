@@ -81,6 +81,30 @@ void BM_CheckValidity(benchmark::State& state)
     state.counters["valid"] = valid ? 1.0 : 0.0;
 }
 
+/// The tent card with its ground outline split into `vertices` points along its four edges, as
+/// outlines from models are: the validity check must stay near-linear in the vertex count.
+void BM_CheckValidityLongOutline(benchmark::State& state)
+{
+    popup::Scaffold scaffold = generated_scaffold(1);
+    popup::Patch& ground = scaffold.patches[scaffold.patch_index(scaffold.ground)];
+    const popup::Loop3 corners = ground.outer;
+    const int per_edge = static_cast<int>(state.range(0)) / int(corners.size());
+    ground.outer.clear();
+    for (size_t k = 0; k < corners.size(); ++k)
+        for (int i = 0; i < per_edge; ++i)
+            ground.outer.push_back(corners[k] + (corners[(k + 1) % corners.size()] - corners[k]) *
+                                                    (double(i) / per_edge));
+    popup::ValidityOptions options;
+    options.samples = 19;
+    bool valid = false;
+    for (auto _ : state) {
+        valid = popup::check_validity(scaffold, options).valid();
+        benchmark::DoNotOptimize(valid);
+    }
+    state.counters["vertices"] = double(ground.outer.size());
+    state.counters["valid"] = valid ? 1.0 : 0.0;
+}
+
 void BM_PatchesToBrep(benchmark::State& state)
 {
     const popup::Scaffold scaffold = generated_scaffold(static_cast<int>(state.range(0)));
@@ -106,6 +130,12 @@ void BM_PatchesToBrep(benchmark::State& state)
 BENCHMARK(BM_SimulateSweep)->Unit(benchmark::kMillisecond)->Arg(10)->Arg(50)->Arg(100)->Arg(200);
 BENCHMARK(BM_SweepNaiveSteps)->Unit(benchmark::kMillisecond)->Arg(10)->Arg(50)->Arg(100)->Arg(200);
 BENCHMARK(BM_CheckValidity)->Unit(benchmark::kMillisecond)->Arg(10)->Arg(50)->Arg(100)->Arg(200);
+BENCHMARK(BM_CheckValidityLongOutline)
+    ->Unit(benchmark::kMillisecond)
+    ->Arg(1000)
+    ->Arg(10000)
+    ->Arg(100000)
+    ->Iterations(1);
 BENCHMARK(BM_PatchesToBrep)->Unit(benchmark::kMillisecond)->Arg(10)->Arg(50)->Arg(100)->Arg(200);
 
 BENCHMARK_MAIN();

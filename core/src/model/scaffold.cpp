@@ -190,6 +190,19 @@ Result<Scaffold> validate_scaffold(Scaffold s)
                 patch_error(DiagnosticCode::repeated_vertex, p, m.str());
                 coordinates_ok = false;
             }
+        // Two loops sharing a point: a hole touching the outline at a vertex.
+        Loop3 all;
+        for (const Loop3* loop : loops)
+            all.insert(all.end(), loop->begin(), loop->end());
+        if (coordinates_ok && p.holes.size() > 0)
+            if (const auto twice = repeated_vertex(all)) {
+                const Vec3& x = all[twice->first];
+                std::ostringstream m;
+                m << "a hole and the outline (or two holes) share the point (" << x.x() << ", "
+                  << x.y() << ", " << x.z() << ")";
+                patch_error(DiagnosticCode::hole_crosses_outline, p, m.str());
+                coordinates_ok = false;
+            }
     }
     if (!coordinates_ok)
         return r;

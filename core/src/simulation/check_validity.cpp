@@ -5,6 +5,7 @@
 #include <map>
 #include <sstream>
 
+#include "../geometry/indexed_loops.hpp"
 #include "../geometry/polygon_2d.hpp"
 #include "body_graph.hpp"
 #include "crossing_test.hpp"
@@ -328,16 +329,18 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
                 loop.push_back({x.y(), x.z()});
             base.push_back(loop);
         }
+        // Indexed: outlines from models have tens of thousands of vertices.
+        const IndexedLoops base_index[2] = {IndexedLoops({base[0]}), IndexedLoops({base[1]})};
         report.enclosed = true;
         for (size_t i = 0; i < s.patches.size(); ++i) {
             double worst = 0.0;
             Vec2 where = Vec2::Zero();
             for (const Vec3& x : posed_outline(s.patches[i], closed->poses[i])) {
                 const Vec2 q(x.y(), x.z());
-                if (point_in_polygon(base[0], q) || point_in_polygon(base[1], q))
+                if (base_index[0].contains(q) || base_index[1].contains(q))
                     continue;
-                const double out =
-                    std::min(distance_to_boundary(base[0], q), distance_to_boundary(base[1], q));
+                const double out = std::min(base_index[0].distance_to_boundary(q),
+                                            base_index[1].distance_to_boundary(q));
                 if (out > worst) {
                     worst = out;
                     where = q;

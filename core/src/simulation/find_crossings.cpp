@@ -62,23 +62,31 @@ PatchMesh mesh_patch(const Patch& p)
     PatchMesh mesh;
     std::vector<Loop3> loops{p.outer};
     loops.insert(loops.end(), p.holes.begin(), p.holes.end());
-    CDT cdt;
+    // All vertices at once (spatially sorted by CGAL), then the edges as constraints: inserting
+    // long runs of collinear outline points one by one costs O(n²) flips.
+    std::vector<std::pair<K::Point_2, int>> points;
     for (const Loop3& loop : loops) {
         const int first = int(mesh.vertices.size());
-        std::vector<CDT::Vertex_handle> handles;
         for (const Vec3& x : loop) {
             const Vec2 q = p.to_local(x);
-            CDT::Vertex_handle v = cdt.insert(K::Point_2(q.x(), q.y()));
-            v->info() = int(mesh.vertices.size());
+            points.push_back({K::Point_2(q.x(), q.y()), int(mesh.vertices.size())});
             mesh.vertices.push_back(x);
-            handles.push_back(v);
         }
         const int n = int(loop.size());
-        for (int k = 0; k < n; ++k) {
+        for (int k = 0; k < n; ++k)
             mesh.edges.push_back({first + k, first + (k + 1) % n});
-            cdt.insert_constraint(handles[k], handles[(k + 1) % n]);
-        }
     }
+    CDT cdt;
+    cdt.insert(points.begin(), points.end());
+    std::vector<CDT::Vertex_handle> handles(mesh.vertices.size());
+    for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+        handles[v->info()] = v;
+    for (const CDT::Vertex_handle& v : handles)
+        if (v == CDT::Vertex_handle()) // two loop points coincide: validation refuses that
+            throw std::invalid_argument("patch " + std::to_string(p.id) +
+                                        ": two of its loop points coincide");
+    for (const auto& [a, b] : mesh.edges)
+        cdt.insert_constraint(handles[a], handles[b]);
     mark_nesting(cdt);
     for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
         if (f->info().nesting % 2 == 1)

@@ -152,3 +152,16 @@ TEST(ScaffoldValidation, AFarCoordinateIsNamedNotCrashed)
     EXPECT_EQ(r.diagnostics.front().code, DiagnosticCode::non_finite_coordinate);
     EXPECT_EQ(r.diagnostics.front().patches, std::vector<int>{far.patches[0].id});
 }
+
+TEST(ScaffoldValidation, AHoleTouchingTheOutlineAtAVertexIsNamed)
+{
+    Scaffold s = fixtures::make_card();
+    s.patches[0].holes = {
+        {{140, 20, 0}, {120, 10, 0}, {120, 30, 0}}}; // a corner on the x = 140 edge
+    s.patches[0].outer.insert(s.patches[0].outer.begin() + 2, Vec3(140, 20, 0));
+    const Result<Scaffold> r = validate_scaffold(s);
+    ASSERT_FALSE(r.ok);
+    EXPECT_EQ(r.diagnostics.front().code, DiagnosticCode::hole_crosses_outline);
+    EXPECT_NE(r.diagnostics.front().message.find("(140, 20, 0)"), std::string::npos)
+        << r.diagnostics.front().message;
+}
