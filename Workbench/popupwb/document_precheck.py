@@ -35,6 +35,13 @@ def check_fcstd(path):
             "refused unread (entity expansion could exhaust memory)"
         )
     try:
-        ElementTree.fromstring(text)
+        root = ElementTree.fromstring(text)
     except ElementTree.ParseError as e:
         raise ValueError(f"Document.xml is damaged ({e}); the document would load incomplete")
+    # Two objects of one name: FreeCAD keeps one and silently drops or renames the other.
+    seen = set()
+    for obj in root.iterfind("./Objects/Object"):
+        name = obj.get("name")
+        if name in seen:
+            raise ValueError(f"Document.xml names object {name!r} twice; the document is damaged")
+        seen.add(name)

@@ -466,6 +466,14 @@ def test_documents_freecad_would_misread_are_refused_unread(card_documents, user
     assert_clean_error(proc, "bomb.FCStd", "DOCTYPE")
     cut = rewritten(good, tmp_path / "cut.FCStd", lambda t: t[: len(t) // 2])
     assert_clean_error(popup("check", cut, home=user_home), "cut.FCStd", "Document.xml is damaged")
+
+    def twice(xml):
+        start = xml.index(b'<Object type="Part::FeaturePython" name="Tent"')
+        end = xml.index(b"/>", start) + 2
+        return xml[:end] + xml[start:end] + xml[end:]
+
+    doubled = rewritten(good, tmp_path / "twice.FCStd", twice)
+    assert_clean_error(popup("check", doubled, home=user_home), "names object 'Tent' twice")
     not_zip = tmp_path / "plain.FCStd"
     not_zip.write_text("hello")
     assert_clean_error(popup("check", str(not_zip), home=user_home), "zip archive")
