@@ -495,13 +495,3 @@ def test_unhelpful_failures_now_say_what_is_wrong():
     state = popupcore.simulate_fold(box, [math.pi]).states[0]
     with pytest.raises(ValueError, match=r"thickness = 1e\+308 mm, must be 0 to 17\.2"):
         popupcore.patches_to_brep(box, state, 1e308)
-
-
-def test_unhelpful_failures_now_say_what_is_wrong():
-    with pytest.raises(popupcore.DesignError, match="not valid Unicode") as caught:
-        popupcore.scaffold_from_json('"\ud800"')
-    assert caught.value.diagnostics[0]["code"] == "bad_json"
-    box = load(os.path.join("mechanisms", "box.json"))
-    state = popupcore.simulate_fold(box, [math.pi]).states[0]
-    with pytest.raises(ValueError, match=r"thickness = 1e\+308 mm, must be 0 to 17\.2"):
-        popupcore.patches_to_brep(box, state, 1e308)
