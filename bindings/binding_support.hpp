@@ -58,4 +58,5 @@ template <class T> T unwrap(Result<T> r)
 
 void bind_mechanisms(pybind11::module_& m);
 void bind_sheets(pybind11::module_& m);
+void bind_sheet_drawing(pybind11::module_& m);
 void bind_sheet_set(pybind11::module_& m);
