@@ -269,43 +269,84 @@ class _Reader:
     def _points(self, role, where, vectors):
         return [self._xy(role, where, v) for v in vectors]
 
-    def _flattened(self, role, entity, where):
-        """The entity as a WCS point list, curves flattened; (points, closed)."""
-        from ezdxf import path as ezpath
-
+    def _flattened(self, role, entity, kind, where):
+        """A CIRCLE, ARC, ELLIPSE or SPLINE as WCS points on the curve, its chords within
+        FLATTEN_TOLERANCE of it (ezdxf's own flattening of each curve, not of a Bezier
+        approximation, which is off a circle by 2.7e-4 of its radius)."""
+        tolerance = FLATTEN_TOLERANCE / self.scale
         try:
-            outline = ezpath.make_path(entity)
-            vectors = list(outline.flattening(distance=FLATTEN_TOLERANCE / self.scale))
+            if kind in ("CIRCLE", "ARC"):
+                radius = entity.dxf.radius
+                if not math.isfinite(radius) or radius <= 0:
+                    self.fail(role, where, f"has radius {radius}: must be a positive number")
+                vectors = list(entity.flattening(min(tolerance, radius)))
+            else:
+                vectors = list(entity.flattening(tolerance))
+        except DxfReadError:
+            raise
         except Exception as e:  # ezdxf's geometry raises on degenerate curves
             reason = " ".join(str(e).split()) or type(e).__name__
             self.fail(role, where, f"cannot be flattened ({reason})")
         return self._points(role, where, vectors)
 
     def _polyline(self, role, entity, kind, where):
-        """(points, closed) of an LWPOLYLINE or 2D POLYLINE in WCS; bulges flattened."""
-        if kind == "POLYLINE" and not entity.is_2d_polyline:
-            self.fail(role, where, "is a 3D polyline or mesh: only 2D polylines are read")
-        closed = bool(entity.closed) if kind == "LWPOLYLINE" else bool(entity.is_closed)
-        if kind == "LWPOLYLINE":
-            raw = list(entity.get_points("xyb"))
-            bulges = [b for *_, b in raw]
+        """(points, closed) of an LWPOLYLINE or 2D POLYLINE in WCS; arcs (bulges) flattened."""
+        if kind == "POLYLINE":
+            if not entity.is_2d_polyline:
+                self.fail(role, where, "is a 3D polyline or mesh: only 2D polylines are read")
+            closed = bool(entity.is_closed)
+            raw = [
+                (v.dxf.location[0], v.dxf.location[1], v.dxf.get("bulge", 0.0))
+                for v in entity.vertices
+            ]
+            elevation = Vec3(entity.dxf.get("elevation", (0, 0, 0))).z
         else:
-            bulges = [v.dxf.get("bulge", 0.0) for v in entity.vertices]
-        for bulge in bulges:
+            closed = bool(entity.closed)
+            raw = list(entity.get_points("xyb"))
+            elevation = entity.dxf.get("elevation", 0.0)
+        ocs_points = []
+        for index, (x, y, bulge) in enumerate(raw):
+            self._xy(role, where, (x, y))
             if not math.isfinite(bulge):
                 self.fail(role, where, f"has a bulge that is not a finite number ({bulge})")
-        if any(bulges):
-            points = self._flattened(role, entity, where)
-            if closed and len(points) > 1 and _close(points[0], points[-1]):
-                points.pop()
-            return points, closed
-        if kind == "LWPOLYLINE":
-            ocs = entity.ocs()
-            elevation = entity.dxf.get("elevation", 0.0)
-            vectors = [ocs.to_wcs(Vec3(x, y, elevation)) for x, y, _ in raw]
-        else:
-            vectors = list(entity.points_in_wcs())
+            ocs_points.append((x, y))
+            last = index == len(raw) - 1
+            if bulge and not (last and not closed):
+                following = raw[0] if last else raw[index + 1]
+                ocs_points.extend(self._arc_points((x, y), following[:2], bulge))
+        ocs = entity.ocs()
+        vectors = [ocs.to_wcs(Vec3(x, y, elevation)) for x, y in ocs_points]
         return self._points(role, where, vectors), closed
+
+    def _arc_points(self, start, end, bulge):
+        """The points strictly between `start` and `end` on the arc of a polyline segment with
+        this bulge (tan of a quarter of its signed angle), chords within FLATTEN_TOLERANCE."""
+        chord = math.dist(start, end)
+        if chord == 0:
+            return []
+        angle = 4.0 * math.atan(bulge)  # counter-clockwise when positive
+        radius = chord / (2.0 * abs(math.sin(angle / 2.0)))
+        # The centre: from the chord's middle, along its left normal for a counter-clockwise
+        # arc of under half a turn.
+        mx, my = (start[0] + end[0]) / 2.0, (start[1] + end[1]) / 2.0
+        nx, ny = -(end[1] - start[1]) / chord, (end[0] - start[0]) / chord
+        offset = radius * math.cos(angle / 2.0)  # signed: the centre is on the other side past pi
+        cx, cy = mx + nx * offset * math.copysign(1.0, bulge), my + ny * offset * math.copysign(
+            1.0, bulge
+        )
+        tolerance = FLATTEN_TOLERANCE / self.scale
+        if tolerance >= radius:
+            steps = 2
+        else:
+            steps = max(2, math.ceil(abs(angle) / (2.0 * math.acos(1.0 - tolerance / radius))))
+        first = math.atan2(start[1] - cy, start[0] - cx)
+        return [
+            (
+                cx + radius * math.cos(first + angle * k / steps),
+                cy + radius * math.sin(first + angle * k / steps),
+            )
+            for k in range(1, steps)
+        ]
 
     # --- CUT ---------------------------------------------------------------------------------
 
@@ -322,7 +363,7 @@ class _Reader:
         elif kind == "LINE":
             points, closed = self._points("cut", where, (entity.dxf.start, entity.dxf.end)), False
         else:
-            points, closed = self._flattened("cut", entity, where), kind == "CIRCLE"
+            points, closed = self._flattened("cut", entity, kind, where), kind == "CIRCLE"
         points = _without_repeats(points)
         if len(points) > 2 and _close(points[0], points[-1]):
             points.pop()  # returns to its first vertex: closed, whatever the flag says
@@ -416,9 +457,9 @@ class _Reader:
                 bulged = any(b for *_, b in entity.get_points("xyb"))
             else:
                 bulged = any(v.dxf.get("bulge", 0.0) for v in entity.vertices)
+            points, closed = self._polyline(role, entity, kind, where)
             if bulged:
                 self.fail(role, where, "has arcs: a fold line must be straight")
-            points, closed = self._polyline(role, entity, kind, where)
             if closed:
                 self.fail(role, where, "is closed: a fold is a straight line")
         else:
