@@ -232,3 +232,62 @@ def test_a_document_with_several_cards_needs_card(documents, home):
     assert_clean_error(verify(cards, documents / "good", home=home), "--card")
     proc = verify(cards, documents / "good", "--card", "Good", home=home)
     assert proc.returncode == 0, proc.stdout + proc.stderr
+
+
+# --- edits that change the file but not what is cut, creased and glued -------------------------
+
+
+def explode_cut_lines(doc):
+    """LibreCAD's Explode: each CUT polyline becomes its LINEs (written in reverse order)."""
+    space = doc.modelspace()
+    for line in list(space.query("LWPOLYLINE[layer=='CUT']")):
+        points = [tuple(p) for p in line.get_points("xy")]
+        for start, end in reversed(list(zip(points, points[1:] + points[:1]))):
+            space.add_line(start, end, dxfattribs={"layer": "CUT"})
+        space.delete_entity(line)
+
+
+def into_a_turned_block(doc):
+    """Everything grouped into a block, inserted turned a quarter and moved: a rigid motion."""
+    block = doc.blocks.new("SHEETS")
+    space = doc.modelspace()
+    for entity in list(space):
+        space.unlink_entity(entity)
+        block.add_entity(entity)
+    space.add_blockref("SHEETS", (1000.0, -50.0), dxfattribs={"rotation": 90.0})
+
+
+def lower_case_layers(doc):
+    for entity in doc.modelspace():
+        entity.dxf.layer = entity.dxf.layer.lower()
+
+
+def labels_as_mtext(doc):
+    from ezdxf.enums import MTextEntityAlignment
+
+    space = doc.modelspace()
+    for text in list(space.query("TEXT")):
+        mtext = space.add_mtext(
+            text.dxf.text, dxfattribs={"layer": text.dxf.layer, "char_height": text.dxf.height}
+        )
+        mtext.set_location(
+            text.dxf.align_point, attachment_point=MTextEntityAlignment.MIDDLE_CENTER
+        )
+        space.delete_entity(text)
+
+
+@pytest.mark.parametrize(
+    "edit", [explode_cut_lines, into_a_turned_block, lower_case_layers, labels_as_mtext]
+)
+def test_edits_that_keep_the_geometry_still_verify(box_sheets, tmp_path, edit):
+    doc = ezdxf.readfile(str(box_sheets / "sheets.dxf"))
+    edit(doc)
+    doc.saveas(str(tmp_path / "edited.dxf"))
+    from popupwb.sheets.dxf_reader import read_dxf
+
+    def counts(drawing):
+        return [len(drawing.cut), len(drawing.folds), len(drawing.glue), len(drawing.labels)]
+
+    assert counts(read_dxf(str(tmp_path / "edited.dxf"))) == counts(read_dxf(str(box_sheets)))
+    proc = verify(BOX, tmp_path / "edited.dxf", "--json")
+    assert proc.returncode == 0, proc.stdout + proc.stderr
