@@ -1,8 +1,24 @@
 #include "fold_directions.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace popup::sheets {
+
+std::vector<double> sweep_angles(const Scaffold& s, int count)
+{
+    std::vector<double> angles;
+    for (int k = 0; k < count; ++k)
+        angles.push_back(s.design_angle * (1.0 - double(k) / (count - 1)));
+    for (double degrees : {150.0, 90.0, 30.0})
+        angles.push_back(degrees * M_PI / 180.0);
+    std::sort(angles.begin(), angles.end(), std::greater<double>());
+    angles.erase(std::unique(angles.begin(), angles.end(),
+                             [](double a, double b) { return std::abs(a - b) < 1e-9; }),
+                 angles.end());
+    return angles;
+}
 
 BendSamples sample_bends(const Scaffold& s, const std::vector<FoldState>& sweep)
 {
@@ -29,6 +45,25 @@ FoldDirection bend_direction(const Scaffold& s, const BendSamples& samples, int 
     }
     bent = std::abs(strongest) > 1e-6;
     return strongest < 0 ? FoldDirection::mountain : FoldDirection::valley;
+}
+
+FoldDirection drawn_direction(const Scaffold& s, const BendSamples& samples, const Hinge& h,
+                              const Vec3& printed_a, bool& unspecified)
+{
+    bool bent = false;
+    unspecified = false;
+    const FoldDirection bends = bend_direction(s, samples, h.patch_a, printed_a, h.patch_b, h.from,
+                                               bent);
+    if (bent)
+        return bends;
+    if (h.direction == FoldDirection::unspecified) {
+        unspecified = true;
+        return FoldDirection::valley;
+    }
+    const bool flipped = printed_a.dot(s.find_patch(h.patch_a)->normal) < 0;
+    if (!flipped)
+        return h.direction;
+    return h.direction == FoldDirection::valley ? FoldDirection::mountain : FoldDirection::valley;
 }
 
 } // namespace popup::sheets

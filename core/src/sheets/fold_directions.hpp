@@ -7,6 +7,10 @@
 
 namespace popup::sheets {
 
+/// From the design angle to closed in `count` even steps, plus 150°, 90° and 30° where they fall
+/// between: every fold shows its bend in one of them.
+std::vector<double> sweep_angles(const Scaffold& s, int count);
+
 /// Patch poses (scaffold order) at the design state and at a few fold angles toward closed.
 struct BendSamples {
     std::vector<std::vector<Pose>> states;
@@ -20,5 +24,12 @@ BendSamples sample_bends(const Scaffold& s, const std::vector<FoldState>& sweep)
 /// when the two stay flat in every sample (then the result is a valley).
 FoldDirection bend_direction(const Scaffold& s, const BendSamples& samples, int a,
                              const Vec3& normal_a, int b, const Vec3& on_hinge, bool& bent);
+
+/// The direction a fold line of hinge h is drawn with on a's piece, seen from `printed_a` (a's
+/// printed side): how b bends away from a on the way closed or, for a fold that never bends, the
+/// design's own word turned to the printed side. `unspecified` is set when neither says (then a
+/// valley).
+FoldDirection drawn_direction(const Scaffold& s, const BendSamples& samples, const Hinge& h,
+                              const Vec3& printed_a, bool& unspecified);
 
 } // namespace popup::sheets

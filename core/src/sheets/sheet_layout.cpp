@@ -13,8 +13,8 @@
 #include "local_piece.hpp"
 #include "piece_outline.hpp"
 #include "popup/sheets/pieces.hpp"
+#include "popup/sheets/verify_sheets.hpp"
 #include "popup/simulation/simulate_fold.hpp"
-#include "round_trip.hpp"
 #include "sheet_labels.hpp"
 #include "stack_height.hpp"
 
@@ -92,45 +92,18 @@ void classify_folds(const Scaffold& s, LocalPiece& piece, const BendSamples& ben
     for (size_t i = 0; i < piece.flat.folds.size(); ++i) {
         const Hinge& h = *std::find_if(s.hinges.begin(), s.hinges.end(),
                                        [&](const Hinge& x) { return x.id == piece.flat.folds[i]; });
-        const Vec3 printed = piece.printed_normal(s, h.patch_a);
-        bool bent = false;
-        FoldDirection direction =
-            bend_direction(s, bends, h.patch_a, printed, h.patch_b, h.from, bent);
-        if (!bent) {
-            // Flat all the way: the design's own word, turned to the printed side.
-            direction = h.direction;
-            const bool flipped = printed.dot(s.find_patch(h.patch_a)->normal) < 0;
-            if (direction == FoldDirection::unspecified) {
-                direction = FoldDirection::valley;
-                diagnostics.push_back(
-                    Diagnostic::warning(DiagnosticCode::flat_fold,
-                                        "hinge " + std::to_string(h.id) +
-                                            " never bends and has no direction: drawn as a valley",
-                                        about_patches({h.patch_a, h.patch_b})));
-            } else if (flipped) {
-                direction = direction == FoldDirection::valley ? FoldDirection::mountain
-                                                               : FoldDirection::valley;
-            }
-        }
+        bool unspecified = false;
+        const FoldDirection direction =
+            drawn_direction(s, bends, h, piece.printed_normal(s, h.patch_a), unspecified);
+        if (unspecified)
+            diagnostics.push_back(
+                Diagnostic::warning(DiagnosticCode::flat_fold,
+                                    "hinge " + std::to_string(h.id) +
+                                        " never bends and has no direction: drawn as a valley",
+                                    about_patches({h.patch_a, h.patch_b})));
         const auto& line = piece.flat.fold_lines[i];
         piece.folds.push_back({h.id, line[0], line[1], direction, JointKind::fold});
     }
-}
-
-// From the design angle to closed in `count` even steps, plus the fold-direction samples
-// (150°, 90°, 30°) where they fall between: every fold shows its bend in one of them.
-std::vector<double> sweep_angles(const Scaffold& s, int count)
-{
-    std::vector<double> angles;
-    for (int k = 0; k < count; ++k)
-        angles.push_back(s.design_angle * (1.0 - double(k) / (count - 1)));
-    for (double degrees : {150.0, 90.0, 30.0})
-        angles.push_back(degrees * M_PI / 180.0);
-    std::sort(angles.begin(), angles.end(), std::greater<double>());
-    angles.erase(std::unique(angles.begin(), angles.end(),
-                             [](double a, double b) { return std::abs(a - b) < 1e-9; }),
-                 angles.end());
-    return angles;
 }
 
 // Paper cannot overlap itself on the sheet: such a piece must be split at a tab joint.
@@ -355,7 +328,17 @@ Result<SheetSet> layout_sheets(const Scaffold& input, const SheetOptions& option
         step.text = assembly_text(set, set.pieces[k], step.joins);
         set.assembly.push_back(std::move(step));
     }
-    set.round_trip = round_trip(s, set, to_sheet, designed, angles, notes);
+    // The round trip reads the sheets as a cutting file holds them, the way `popup verify` does.
+    VerifyOptions check;
+    check.printed_sides = options.printed_sides;
+    check.angles = options.round_trip_angles;
+    Result<RoundTrip> trip = verify_sheets(s, draw_sheets(set), check);
+    set.round_trip = trip.value;
+    set.round_trip.ok = trip.ok && trip.value.ok;
+    for (const Diagnostic& d : trip.diagnostics)
+        if (d.severity == Severity::error)
+            notes.push_back(Diagnostic::error(d.code, "round trip: " + d.message,
+                                              {d.patches, d.parameter, d.angle_deg}));
     const auto& states = designed.value.states;
     if (designed.ok && !states.empty() && states.back().angle == 0.0)
         set.stack_height = stack_height(s, set, to_sheet, states.back().poses);

@@ -223,7 +223,9 @@ TEST(SheetLayout, DemoCardFitsOneA3Sheet)
     EXPECT_EQ(r.value.pieces.size(), 17u);
     EXPECT_EQ(r.value.sheet_count, 1);
     EXPECT_EQ(r.value.shelf_sheet_count, 2);
-    EXPECT_LT(r.value.round_trip.max_error, 1e-8);
+    // Re-read from the drawing (loops on Clipper's 1 nm grid, the kerf offset undone): within a
+    // few nanometres, far inside the 1e-6 x card size tolerance.
+    EXPECT_LT(r.value.round_trip.max_error, 1e-5);
 }
 
 TEST(SheetLayout, CentralFoldIsAValleyOnThePrintedInside)
