@@ -11,7 +11,9 @@ and a v-box beside the box, all made with popupwb.make, and check it (card_valid
 demo_card.png and card_180.png, card_90.png, card_30.png with the FreeCAD GUI under Xvfb (one
 run), (f) lay card.FCStd out for cutting with `popup sheet` on A3 paper into sheets/ (DXF, SVG,
 PDF, instructions, report.json, sheets.json) and render sheets/sheet_1.png, (g) list the outputs
-and the verdicts. (c) and (d) run headless FreeCAD in subprocesses.
+and the verdicts, (h) prove the cutting file with `popup verify card.FCStd sheets/` (it reads only
+sheets.dxf, re-folds the pieces and compares them with the card) and print its verdict last.
+(c) and (d) run headless FreeCAD in subprocesses.
 FreeCAD runs with a sandboxed user home (<build>/sandbox/home) whose Mod/PopUp links to the
 workbench, so nothing is read from or written to the user's own FreeCAD setup.
 """
@@ -417,6 +419,27 @@ def make_sheets(build, card_fcstd, out, env):
     return [*files[:1], *report["files"]["svg"], *files[1:], png], report
 
 
+def verify_sheets(build, card_fcstd, sheets_folder, env):
+    """(h) `popup verify` of the cutting file just written against the card: (ok, verdict line,
+    the error findings)."""
+    command = [os.path.join(build, "bin", "popup"), "verify", card_fcstd, sheets_folder]
+    proc = subprocess.run(
+        command + ["--json"], env=env, capture_output=True, text=True, timeout=GUI_TIMEOUT
+    )
+    if proc.returncode not in (0, 1):
+        raise DemoError(f"(h) verify: exit {proc.returncode}: {proc.stderr.strip()}")
+    result = json.loads(proc.stdout)
+    errors = [d for d in result["diagnostics"] if d["severity"] == "error"]
+    if result["ok"]:
+        verdict = (
+            f"sheets match the design: every patch within {result['max_error']:.3g} mm "
+            f"(tolerance {result['tolerance']:.3g} mm) over {result['angles']} fold angles"
+        )
+    else:
+        verdict = f"sheets do NOT match the design: {len(errors)} error(s)"
+    return result["ok"] and proc.returncode == 0, verdict, errors
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--build", default="build", help="CMake build folder (default: build)")
@@ -475,8 +498,24 @@ def main(argv=None):
     if sheets["errors"] or not sheets["round_trip"]["ok"]:
         print(f"Sheets: {len(sheets['errors'])} error(s); see {sheet_files[-3]}")
         failed = True
+    try:
+        verified, verdict, findings = verify_sheets(
+            build, card_files[0], os.path.dirname(sheet_files[0]), env
+        )
+    except (DemoError, subprocess.TimeoutExpired, ValueError) as e:
+        print(f"run_demo: FAILED (h) verify: {e}", file=sys.stderr)
+        return 1
+    for d in findings:
+        print(f"  error: {d['code']}: {d['message']}")
+    print(f"Verify {os.path.basename(sheet_files[0])} against card.FCStd: {verdict}")
     if failed:
         print("run_demo: FAILED the demo cards must be valid; see the reports", file=sys.stderr)
+        return 1
+    if not verified:
+        print(
+            "run_demo: FAILED popup verify: the cutting file does not make the card",
+            file=sys.stderr,
+        )
         return 1
     return 0
 

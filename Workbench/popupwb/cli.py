@@ -3,11 +3,13 @@
     popup check design.json [--json] [--samples N] [--clearance MM]
     popup check card.FCStd [--card NAME]    # every PopUpCard and Scaffold, or the one named
     popup sheet card.FCStd --out DIR [--card NAME] [--paper A4] [--kerf 0.1] [--force] [--json]
+    popup verify card.FCStd DIR|sheets.dxf [--card NAME] [--printed-side P1=back] [--kerf MM]
     popup --version
 
-Exit status: 0 the design is valid (check; for a document every card checked) or its sheets are
-usable (sheet), 1 it is not (the report says why; sheet refuses a design the validity check
-rejects unless --force, and still writes every file when only the layout reports errors), 2 the
+Exit status: 0 the design is valid (check; for a document every card checked), its sheets are
+usable (sheet) or the cutting file makes the design (verify), 1 it is not or does not (the report
+says why; sheet refuses a design the validity check rejects unless --force, and still writes every
+file when only the layout reports errors; verify prints each finding), 2 the
 input could not be used (missing file, bad JSON, bad design, no scaffold, unknown --card, bad
 option, a piece larger than the paper), 3 an internal error. Errors are one line on stderr naming
 the file and what is wrong.
@@ -33,9 +35,10 @@ FREECAD_LIB = "/usr/lib/freecad-python3/lib"
 VERSION = "0.1.0"
 
 
-# A design to check or lay out, and what the reports say about where it came from (object Name,
-# Label, design file); empty for a .json design.
-Design = collections.namedtuple("Design", "scaffold fields")
+# A design to check, lay out or verify, and what the reports say about where it came from (object
+# Name, Label, design file; empty for a .json design). `printed_sides` is what the card's
+# CuttingSheet features say ({CuttingSheet Name: {piece: side}}), empty for anything else.
+Design = collections.namedtuple("Design", "scaffold fields printed_sides", defaults=({},))
 
 
 class InputError(Exception):
@@ -155,7 +158,24 @@ def _card_design(path, card, several):
         where = f"{path}: card {card.Label}" if several else path
         hint = " (--card checks another card alone)" if several else ""
         raise InputError(f"{where}: {problems[0]}{hint}")
-    return Design(built.scaffold.copy(), {"object": card.Name, "label": card.Label})
+    return Design(
+        built.scaffold.copy(), {"object": card.Name, "label": card.Label}, _cutting_sides(card)
+    )
+
+
+def _cutting_sides(card):
+    """{CuttingSheet Name: {piece: side}} of the CuttingSheets laying out `card`."""
+    from popupwb.features.cutting_sheet import is_cutting_sheet
+    from popupwb.sheets.sheet_options import parse_sides
+
+    sides = {}
+    for obj in card.Document.Objects:
+        if is_cutting_sheet(obj) and obj.Card is not None and obj.Card.Name == card.Name:
+            try:
+                sides[obj.Name] = parse_sides(list(getattr(obj, "PrintedSides", [])))
+            except ValueError as e:
+                raise InputError(f"{card.Document.FileName}: {obj.Label}.PrintedSides: {e}")
+    return sides
 
 
 def _scaffold_design(popupcore, path, obj):
@@ -398,6 +418,125 @@ def cmd_sheet(args):
     return EXIT_INVALID if report["errors"] or not_valid is not None else EXIT_VALID
 
 
+VERIFY_ANGLES = 13  # fold angles verify_sheets samples by default
+MAX_VERIFY_ANGLES = 1000
+
+
+def _verify_sides(args, design):
+    """The printed sides the sheets were written with: the card's CuttingSheet's PrintedSides
+    (for an .FCStd card), each piece --printed-side names overriding it."""
+    from popupwb.sheets.sheet_options import parse_sides
+
+    try:
+        given = parse_sides(args.printed_side or [])
+    except ValueError as e:
+        raise InputError(f"--printed-side: {e}")
+    for piece, side in given.items():
+        if side not in ("front", "back"):
+            raise InputError(f"--printed-side {piece}={side}: the side must be front or back")
+    features = design.printed_sides
+    distinct = []
+    for sides in features.values():
+        if sides not in distinct:
+            distinct.append(sides)
+    if len(distinct) > 1 and not given:
+        described = "; ".join(
+            f"{name}: {', '.join(f'{k}={v}' for k, v in sorted(sides.items())) or 'all front'}"
+            for name, sides in features.items()
+        )
+        raise InputError(
+            f"{args.design}: the card's CuttingSheets print different sides ({described}): say "
+            "which the sheets were written with, e.g. --printed-side P1=front"
+        )
+    base = distinct[0] if len(distinct) == 1 else {}
+    for piece, side in base.items():
+        if side not in ("front", "back"):
+            names = ", ".join(features)
+            raise InputError(
+                f"{args.design}: {names}.PrintedSides: {piece}={side}, the side must be front or "
+                "back"
+            )
+    return {**base, **given}
+
+
+def _verify_failure(args, error):
+    """A DesignError of verify_sheets as one line, led by the flag at fault when there is one."""
+    findings = [d for d in getattr(error, "diagnostics", None) or [] if d["severity"] == "error"]
+    flags = {"printed_sides": "--printed-side", "angles": "--angles", "kerf": "--kerf"}
+    if findings and all(d["parameter"] in flags for d in findings):
+        return "; ".join(f"{flags[d['parameter']]}: {d['message']}" for d in findings)
+    text = "; ".join(d["message"] for d in findings) or _one_line(error)
+    return f"{args.design}: cannot verify against this design: {text}"
+
+
+def _finite_or_none(value):
+    return value if isinstance(value, (int, float)) and math.isfinite(value) else None
+
+
+def cmd_verify(args):
+    from popupwb.sheets.dxf_reader import DxfReadError, read_dxf, sheets_path
+
+    if args.kerf is not None and (not math.isfinite(args.kerf) or args.kerf < 0):
+        raise InputError(f"--kerf {args.kerf:g}: must be a finite length >= 0 mm")
+    if not 2 <= args.angles <= MAX_VERIFY_ANGLES:
+        raise InputError(f"--angles {args.angles}: must be 2 to {MAX_VERIFY_ANGLES}")
+    # The sheets first: reading them is quick, and a wrong path should not wait for FreeCAD.
+    try:
+        dxf = sheets_path(args.sheets)
+        drawing = read_dxf(dxf, kerf=args.kerf)
+    except DxfReadError as e:
+        raise InputError(str(e))
+    popupcore, (design,) = load_designs(args.design, args.card, one=True)
+    sides = _verify_sides(args, design)
+    with _stdout_to_stderr():
+        try:
+            result = popupcore.verify_sheets(
+                design.scaffold,
+                [drawing.to_sheet_drawing(popupcore)],
+                printed_sides=sides,
+                angles=args.angles,
+            )
+        except popupcore.DesignError as e:
+            raise InputError(_verify_failure(args, e))
+    diagnostics = list(result["diagnostics"])
+    errors = [d for d in diagnostics if d["severity"] == "error"]
+    ok = bool(result["ok"]) and not errors
+    if args.json:
+        report = {
+            "design": os.path.abspath(args.design),
+            "sheets": os.path.abspath(dxf),
+            **design.fields,
+            "ok": ok,
+            "max_error": _finite_or_none(result["max_error"]),
+            "tolerance": _finite_or_none(result["tolerance"]),
+            "angles": result["angles"],
+            "kerf": drawing.kerf,
+            "printed_sides": sides,
+            "diagnostics": diagnostics,
+        }
+        print(json.dumps(report, indent=2))
+        return EXIT_VALID if ok else EXIT_INVALID
+    for d in errors + [d for d in diagnostics if d["severity"] != "error"]:
+        print(printable(f"{d['severity']}: {d['code']}: {d['message']}"))
+    error, tolerance = result["max_error"], result["tolerance"]
+    if ok:
+        print(
+            f"sheets match the design: every patch within {error:.3g} mm (tolerance "
+            f"{tolerance:.3g} mm) over {result['angles']} fold angles"
+        )
+        return EXIT_VALID
+    measured = (
+        f"largest patch error {error:.3g} mm"
+        if math.isfinite(error)
+        else "the re-folded card could not be compared"
+    )
+    print(
+        f"sheets do NOT match the design: {len(errors)} error(s); {measured} (tolerance "
+        f"{tolerance:.3g} mm) over {result['angles']} fold angles"
+    )
+    return EXIT_INVALID
+
+
 def _version():
     try:
         import popupwb
@@ -480,6 +619,51 @@ def build_parser():
     )
     sheet.add_argument("--json", action="store_true", help="print the report as one JSON object")
     sheet.set_defaults(run=cmd_sheet)
+
+    verify = sub.add_parser(
+        "verify",
+        help="prove that cutting files (DXF) make the design, reading only what the maker gets",
+        description="Read the CUT, MOUNTAIN, VALLEY, GLUE and LABEL layers and the PopUpKerf "
+        "header of a DXF cutting file, rebuild the pieces from them, fold them with the "
+        "simulator and compare every patch with the design. Exit 0 when they match, 1 when they "
+        "do not (each finding printed), 2 for unusable input.",
+    )
+    verify.add_argument(
+        "design", help="design file (.json) or FreeCAD document with a Scaffold or a PopUpCard"
+    )
+    verify.add_argument(
+        "sheets",
+        help="the folder popup sheet --out wrote (its sheets.dxf is read) or a DXF cutting file",
+    )
+    verify.add_argument(
+        "--card",
+        metavar="NAME",
+        help="the PopUpCard or Scaffold (object Name or Label) the sheets are of, when an .FCStd "
+        "has several",
+    )
+    verify.add_argument(
+        "--printed-side",
+        dest="printed_side",
+        action="append",
+        metavar="PIECE=SIDE",
+        help="a piece the sheets print on its back, as popup sheet was given it (P1=back); "
+        "repeat for several pieces; overrides the card's CuttingSheet PrintedSides",
+    )
+    verify.add_argument(
+        "--kerf",
+        type=float,
+        metavar="MM",
+        help="the kerf the CUT lines were written with (default: the DXF header's PopUpKerf)",
+    )
+    verify.add_argument(
+        "--angles",
+        type=int,
+        default=VERIFY_ANGLES,
+        metavar="N",
+        help=f"fold angles compared, from the design angle to closed (default {VERIFY_ANGLES})",
+    )
+    verify.add_argument("--json", action="store_true", help="print the result as one JSON object")
+    verify.set_defaults(run=cmd_verify)
     return parser
 
 
