@@ -162,7 +162,8 @@ def tab_codes(sheet_set):
 
 
 def swap_tab_codes(doc, sheet_set):
-    """Swaps the texts of two tab codes, two tabs going to different patches when there are."""
+    """Swaps the texts of two tab codes on two different pieces, going to different patches when
+    there are."""
     tabs = tab_codes(sheet_set)
     if len(tabs) < 2:
         raise Unavailable(f"{len(tabs)} glue tab(s): nothing to swap")
@@ -170,7 +171,19 @@ def swap_tab_codes(doc, sheet_set):
     for piece in sheet_set["pieces"]:
         for tab in piece["tabs"]:
             target[tab["code"]] = (tab["target_piece"], tab["target_patch"])
-    pairs = [(a, b) for i, a in enumerate(tabs) for b in tabs[i + 1 :]]
+    # Two tabs of one piece carry codes that a symmetric piece may be turned round to satisfy
+    # (a tent's two slopes: swapped, they make the same card, and verify rightly passes it):
+    # tabs of two different pieces are always a real mistake.
+    pairs = [
+        (a, b)
+        for i, a in enumerate(tabs)
+        for b in tabs[i + 1 :]
+        if a[0]["id"] != b[0]["id"]
+    ]
+    if not pairs:
+        raise Unavailable(
+            "every glue tab is on one piece: swapping its codes may only turn the piece round"
+        )
     pairs.sort(key=lambda pair: target[pair[0][1]["text"]] == target[pair[1][1]["text"]])
     (piece_a, label_a), (piece_b, label_b) = pairs[0]
     text_a = _label_text(doc, sheet_set, piece_a, label_a)

@@ -118,7 +118,12 @@ def _named_flip_fold(d, mutation, report):
 
 
 def _named_swap_tab_codes(d, mutation, report):
-    return any(mentions(d["message"], code) for code in mutation.codes)
+    # A piece that can be turned round may take the blame for its partner's code: either tab,
+    # or either piece, is named.
+    pieces = mutation.note.split(" and ")
+    return any(mentions(d["message"], code) for code in mutation.codes) or any(
+        mentions(d["message"], piece) for piece in pieces
+    )
 
 
 def _named_cut_off_tab(d, mutation, report):
