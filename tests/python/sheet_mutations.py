@@ -174,12 +174,7 @@ def swap_tab_codes(doc, sheet_set):
     # Two tabs of one piece carry codes that a symmetric piece may be turned round to satisfy
     # (a tent's two slopes: swapped, they make the same card, and verify rightly passes it):
     # tabs of two different pieces are always a real mistake.
-    pairs = [
-        (a, b)
-        for i, a in enumerate(tabs)
-        for b in tabs[i + 1 :]
-        if a[0]["id"] != b[0]["id"]
-    ]
+    pairs = [(a, b) for i, a in enumerate(tabs) for b in tabs[i + 1 :] if a[0]["id"] != b[0]["id"]]
     if not pairs:
         raise Unavailable(
             "every glue tab is on one piece: swapping its codes may only turn the piece round"

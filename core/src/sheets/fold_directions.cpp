@@ -52,8 +52,8 @@ FoldDirection drawn_direction(const Scaffold& s, const BendSamples& samples, con
 {
     bool bent = false;
     unspecified = false;
-    const FoldDirection bends = bend_direction(s, samples, h.patch_a, printed_a, h.patch_b, h.from,
-                                               bent);
+    const FoldDirection bends =
+        bend_direction(s, samples, h.patch_a, printed_a, h.patch_b, h.from, bent);
     if (bent)
         return bends;
     if (h.direction == FoldDirection::unspecified) {

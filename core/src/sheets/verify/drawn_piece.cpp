@@ -16,10 +16,10 @@ namespace {
 
 using ClipperLib::Paths;
 
-constexpr double miter_limit = 8.0;   // as the writer's kerf offset, so the offset undoes it
-constexpr double slit_half = 1e-5;    // mm: half the width of the cut that splits faces at a fold
-constexpr double snap_to_end = 1e-3;  // mm: a face corner this near a fold's end is that end
-constexpr double max_reach = 1.0;     // mm: a fold ending this short of the cut is carried to it
+constexpr double miter_limit = 8.0;  // as the writer's kerf offset, so the offset undoes it
+constexpr double slit_half = 1e-5;   // mm: half the width of the cut that splits faces at a fold
+constexpr double snap_to_end = 1e-3; // mm: a face corner this near a fold's end is that end
+constexpr double max_reach = 1.0;    // mm: a fold ending this short of the cut is carried to it
 const std::regex piece_label("P[1-9][0-9]*");
 
 std::string where(const Vec2& p)
@@ -110,8 +110,7 @@ std::vector<Region> split_faces(const Region& outline, const std::vector<DrawnFo
     clipper.AddPaths(region_paths(outline), ClipperLib::ptSubject, true);
     clipper.AddPaths(cuts, ClipperLib::ptClip, true);
     ClipperLib::PolyTree tree;
-    clipper.Execute(ClipperLib::ctDifference, tree, ClipperLib::pftEvenOdd,
-                    ClipperLib::pftNonZero);
+    clipper.Execute(ClipperLib::ctDifference, tree, ClipperLib::pftEvenOdd, ClipperLib::pftNonZero);
     std::vector<Region> faces;
     collect(tree, faces);
     auto snap = [&](Vec2& p) {
@@ -277,8 +276,9 @@ Result<std::vector<DrawnPiece>> read_drawn_pieces(const std::vector<SheetDrawing
             const Vec2 at = interior_point(region);
             const int self = int(index);
             const bool bare =
-                std::none_of(d.folds.begin(), d.folds.end(),
-                             [&](const DrawnFold& f) { return owner(0.5 * (f.from + f.to)) == self; }) &&
+                std::none_of(
+                    d.folds.begin(), d.folds.end(),
+                    [&](const DrawnFold& f) { return owner(0.5 * (f.from + f.to)) == self; }) &&
                 std::none_of(d.labels.begin(), d.labels.end(),
                              [&](const DrawnText& t) { return owner(t.position) == self; });
             if (ids.empty() && bare) { // a scrap that carries nothing a maker needs
@@ -298,10 +298,10 @@ Result<std::vector<DrawnPiece>> read_drawn_pieces(const std::vector<SheetDrawing
                 continue;
             }
             if (seen.count(ids[0])) {
-                findings.push_back(Diagnostic::error(
-                    DiagnosticCode::unlabelled_piece,
-                    file + ": piece label " + ids[0] + " is on two cut pieces (" + seen[ids[0]] +
-                        " and " + where(at) + ")"));
+                findings.push_back(Diagnostic::error(DiagnosticCode::unlabelled_piece,
+                                                     file + ": piece label " + ids[0] +
+                                                         " is on two cut pieces (" + seen[ids[0]] +
+                                                         " and " + where(at) + ")"));
                 continue;
             }
             seen[ids[0]] = file + " " + where(at);
@@ -326,9 +326,9 @@ Result<std::vector<DrawnPiece>> read_drawn_pieces(const std::vector<SheetDrawing
                 int nearest = -1;
                 for (size_t i = 0; i < texts.size(); ++i)
                     if (!taken[i] && point_in_polygon(g.polygon, texts[i]->position) &&
-                        (nearest < 0 || (texts[i]->position - mean(g.polygon)).norm() <
-                                            (texts[size_t(nearest)]->position - mean(g.polygon))
-                                                .norm()))
+                        (nearest < 0 ||
+                         (texts[i]->position - mean(g.polygon)).norm() <
+                             (texts[size_t(nearest)]->position - mean(g.polygon)).norm()))
                         nearest = int(i);
                 if (nearest < 0)
                     continue;

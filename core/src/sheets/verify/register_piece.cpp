@@ -190,9 +190,8 @@ std::vector<Registration> register_piece(const std::vector<Loop2>& patches,
     std::vector<const Region*> faces;
     for (const Region& f : drawn.faces)
         faces.push_back(&f);
-    std::sort(faces.begin(), faces.end(), [&](const Region* x, const Region* y) {
-        return area(x->outer) > area(y->outer);
-    });
+    std::sort(faces.begin(), faces.end(),
+              [&](const Region* x, const Region* y) { return area(x->outer) > area(y->outer); });
     if (faces.size() > size_t(faces_tried))
         faces.resize(faces_tried);
     std::vector<std::pair<Edge, Edge>> pairs; // (design edge, drawn edge)
@@ -212,30 +211,30 @@ std::vector<Registration> register_piece(const std::vector<Loop2>& patches,
     // Every distinct motion with its score; a symmetric piece fits equally well more than one way.
     std::vector<std::pair<double, Registration>> found;
     for (const auto& [e, d] : pairs) {
-            Motion2 m = turn_onto(e.a, e.b, d.a, d.b);
-            Fit f = measure(m, design, folds, joints, drawn);
-            for (int k = 0; k < refinements && !f.from.empty(); ++k) {
-                // Pairs are in the design frame: fit the design onto its own nearest points,
-                // then compose with the motion that found them.
-                const Motion2 step = fit(f.from, f.onto);
-                Motion2 next;
-                next.rotation = m.rotation * step.rotation;
-                next.translation = m.rotation * step.translation + m.translation;
-                Fit g = measure(next, design, folds, joints, drawn);
-                if (score_of(g) > score_of(f))
-                    break;
-                m = next;
-                f = std::move(g);
-            }
-            const double score = score_of(f);
-            const bool known = std::any_of(found.begin(), found.end(), [&](const auto& x) {
-                const Motion2& o = x.second.motion;
-                return (o.rotation - m.rotation).norm() < 1e-6 &&
-                       (o.translation - m.translation).norm() < 1e-4;
-            });
-            if (!known)
-                found.push_back({score, {m, f.outline, f.worst}});
+        Motion2 m = turn_onto(e.a, e.b, d.a, d.b);
+        Fit f = measure(m, design, folds, joints, drawn);
+        for (int k = 0; k < refinements && !f.from.empty(); ++k) {
+            // Pairs are in the design frame: fit the design onto its own nearest points,
+            // then compose with the motion that found them.
+            const Motion2 step = fit(f.from, f.onto);
+            Motion2 next;
+            next.rotation = m.rotation * step.rotation;
+            next.translation = m.rotation * step.translation + m.translation;
+            Fit g = measure(next, design, folds, joints, drawn);
+            if (score_of(g) > score_of(f))
+                break;
+            m = next;
+            f = std::move(g);
         }
+        const double score = score_of(f);
+        const bool known = std::any_of(found.begin(), found.end(), [&](const auto& x) {
+            const Motion2& o = x.second.motion;
+            return (o.rotation - m.rotation).norm() < 1e-6 &&
+                   (o.translation - m.translation).norm() < 1e-4;
+        });
+        if (!known)
+            found.push_back({score, {m, f.outline, f.worst}});
+    }
     std::sort(found.begin(), found.end(),
               [](const auto& x, const auto& y) { return x.first < y.first; });
     std::vector<Registration> best;

@@ -16,17 +16,17 @@ struct Motion2 {
 };
 
 struct Registration {
-    Motion2 motion;             ///< design flat frame → drawing
-    double outline_error = 0.0; ///< farthest design outline corner from the drawn cut (mm)
+    Motion2 motion;                    ///< design flat frame → drawing
+    double outline_error = 0.0;        ///< farthest design outline corner from the drawn cut (mm)
     Vec2 outline_worst = Vec2::Zero(); ///< that corner, on the drawing
 };
 
 /// Lays the design piece (its patches' outlines, its outline regions, fold lines and the lines of
 /// its joints with other pieces, in its flat frame, already turned over when printed on its back)
 /// onto the drawn piece: every pairing of an edge of a large drawn face with an edge of about its
-/// length of a design patch of about its area proposes a motion, each is refined by least squares on nearest points, and the one whose
-/// outline and lines fit best wins, with every other that fits within `tie` mm as well (a
-/// symmetric piece: its codes decide). Empty when no edge pairs up.
+/// length of a design patch of about its area proposes a motion, each is refined by least squares
+/// on nearest points, and the one whose outline and lines fit best wins, with every other that fits
+/// within `tie` mm as well (a symmetric piece: its codes decide). Empty when no edge pairs up.
 std::vector<Registration> register_piece(const std::vector<Loop2>& patch_outlines,
                                          const std::vector<Region>& design_outline,
                                          const std::vector<std::array<Vec2, 2>>& design_folds,

@@ -106,11 +106,11 @@ struct PieceCheck {
     const DrawnPiece* drawn = nullptr;
     std::vector<Registration> candidates; // the ways it fits the drawing equally well
     Registration placed;                  // the one chosen
-    std::map<int, int> face_of;      // patch id → drawn face
-    std::map<int, Pose> sheet_pose;  // patch id → design state onto the drawing (z = 0)
-    std::map<int, int> fold_of;      // fold hinge id → drawn fold
-    std::map<int, bool> fold_turned; // fold hinge id → drawn the other way than designed
-    std::set<int> folds_used;        // drawn folds that are a fold or a tab crease
+    std::map<int, int> face_of;           // patch id → drawn face
+    std::map<int, Pose> sheet_pose;       // patch id → design state onto the drawing (z = 0)
+    std::map<int, int> fold_of;           // fold hinge id → drawn fold
+    std::map<int, bool> fold_turned;      // fold hinge id → drawn the other way than designed
+    std::set<int> folds_used;             // drawn folds that are a fold or a tab crease
 
     int patch_of_face(int face) const
     {
@@ -161,8 +161,7 @@ std::vector<Region> union_of(const LocalPiece& local)
         holes.insert(holes.end(), h.begin(), h.end());
     clipper.AddPaths(counter_clockwise_paths(holes), ClipperLib::ptClip, true);
     ClipperLib::PolyTree tree;
-    clipper.Execute(ClipperLib::ctDifference, tree, ClipperLib::pftNonZero,
-                    ClipperLib::pftNonZero);
+    clipper.Execute(ClipperLib::ctDifference, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
     std::vector<Region> regions;
     for (const ClipperLib::PolyNode* outer : tree.Childs) {
         Region r{to_loop(outer->Contour), {}};
@@ -217,7 +216,7 @@ private:
     const VerifyOptions& options_;
     Diagnostics& findings_;
     double tol_;
-    double tie_ = 1e-3; // mm: registrations this close in fit are the same fit
+    double tie_ = 1e-3;          // mm: registrations this close in fit are the same fit
     std::vector<double> angles_; // the angles asked for and the fold-direction samples
     std::vector<double> asked_;
     Result<FoldSweep> designed_;
@@ -235,7 +234,8 @@ bool Verifier::prepare(Result<RoundTrip>& r)
     for (const auto& [id, side] : options_.printed_sides) {
         const bool known = id.size() > 1 && id[0] == 'P' &&
                            id.find_first_not_of("0123456789", 1) == std::string::npos &&
-                           std::stoul(id.substr(1)) >= 1 && std::stoul(id.substr(1)) <= order.size();
+                           std::stoul(id.substr(1)) >= 1 &&
+                           std::stoul(id.substr(1)) <= order.size();
         if (!known)
             r.fail(DiagnosticCode::bad_option,
                    "printed side of " + id + ": there is no such piece; the pieces are P1 to P" +
@@ -298,8 +298,8 @@ void Verifier::match(const std::vector<DrawnPiece>& drawn)
                 if (h.kind == JointKind::tab && local.has(patch))
                     joints.push_back(
                         {local.flat_point(s_, patch, h.from), local.flat_point(s_, patch, h.to)});
-        piece.candidates = register_piece(local.flat.outlines, union_of(local), local.flat.fold_lines, joints,
-                                          *piece.drawn, tol_ + tie_);
+        piece.candidates = register_piece(local.flat.outlines, union_of(local),
+                                          local.flat.fold_lines, joints, *piece.drawn, tol_ + tie_);
         if (piece.candidates.empty()) {
             error(DiagnosticCode::outline_mismatch,
                   piece.id + ": none of its faces has the shape of a patch of the design",
@@ -334,8 +334,8 @@ void Verifier::match(const std::vector<DrawnPiece>& drawn)
         for (size_t i = 0; i < local.flat.patches.size(); ++i) {
             const int id = local.flat.patches[i];
             piece.sheet_pose[id] = local.flat.unfold[i].then(frame).then(onto);
-            const Vec2 inside = piece.placed.motion(
-                interior_point({local.flat.outlines[i], local.flat.holes[i]}));
+            const Vec2 inside =
+                piece.placed.motion(interior_point({local.flat.outlines[i], local.flat.holes[i]}));
             const int face = d.face_at(inside);
             if (face < 0) {
                 error(DiagnosticCode::outline_mismatch,
@@ -427,9 +427,9 @@ void Verifier::check_tabs()
             const int face = piece.drawn->face_at(interior_point({g.polygon, {}}));
             DrawnArea area{k, face >= 0 ? piece.patch_of_face(face) : -1, &g};
             if (g.code.empty()) {
-                error(DiagnosticCode::tab_unmatched,
-                      piece.id + ": the glue area at " + at(g.polygon.front()) +
-                          " carries no code");
+                error(DiagnosticCode::tab_unmatched, piece.id + ": the glue area at " +
+                                                         at(g.polygon.front()) +
+                                                         " carries no code");
                 continue;
             }
             if (area.patch < 0) {
@@ -578,9 +578,8 @@ void Verifier::check_tabs()
             if (patch != h.patch_a && patch != h.patch_b)
                 return false;
             const PieceCheck& on = pieces_[size_t(piece_of(patch))];
-            const std::array<Vec2, 2> line{
-                on.placed.motion(on.local.flat_point(s_, patch, h.from)),
-                on.placed.motion(on.local.flat_point(s_, patch, h.to))};
+            const std::array<Vec2, 2> line{on.placed.motion(on.local.flat_point(s_, patch, h.from)),
+                                           on.placed.motion(on.local.flat_point(s_, patch, h.to))};
             return segment_gap({from, to}, line[0], line[1]) <= tol_ + tie_;
         };
         const bool held =
@@ -627,8 +626,8 @@ void Verifier::choose_registrations()
             std::string code;
         };
         std::vector<Tab> tabs;
-        int folds_turned = 0; // design folds whose drawn line has the other direction
-        std::map<std::string, int> areas;               // code → patch it lies on
+        int folds_turned = 0;             // design folds whose drawn line has the other direction
+        std::map<std::string, int> areas; // code → patch it lies on
     };
     std::vector<std::vector<Way>> ways(pieces_.size());
     size_t combinations = 1;
@@ -659,10 +658,9 @@ void Verifier::choose_registrations()
                 std::map<int, FoldDirection> partners;
                 for (const Hinge& h : s_.hinges)
                     if (h.kind == JointKind::tab && (h.patch_a == patch || h.patch_b == patch) &&
-                        segment_gap({f.from, f.to},
-                                    r.motion(piece.local.flat_point(s_, patch, h.from)),
-                                    r.motion(piece.local.flat_point(s_, patch, h.to))) <=
-                            tol_ + tie_) {
+                        segment_gap(
+                            {f.from, f.to}, r.motion(piece.local.flat_point(s_, patch, h.from)),
+                            r.motion(piece.local.flat_point(s_, patch, h.to))) <= tol_ + tie_) {
                         Hinge seen = h;
                         seen.patch_a = patch;
                         seen.patch_b = h.patch_a == patch ? h.patch_b : h.patch_a;
@@ -688,10 +686,10 @@ void Verifier::choose_registrations()
                         nearest = &f;
                     }
                 bool unspecified = false;
-                if (nearest && nearest->direction !=
-                                   drawn_direction(s_, bends_, h,
-                                                   piece.local.printed_normal(s_, h.patch_a),
-                                                   unspecified))
+                if (nearest &&
+                    nearest->direction != drawn_direction(s_, bends_, h,
+                                                          piece.local.printed_normal(s_, h.patch_a),
+                                                          unspecified))
                     ++way.folds_turned;
             }
             ways[k].push_back(std::move(way));
