@@ -384,6 +384,10 @@ def cmd_sheet(args):
     if not_valid is not None and not args.force:
         return _refuse_invalid(args, design, validity, not_valid)
     options = sheet_options.from_cli(args)
+    if "printed_sides" not in options:  # the card's CuttingSheet says, as in the feature
+        card_sides = _card_printed_sides(args, design)
+        if card_sides:
+            options["printed_sides"] = sheet_options.sides_text(card_sides)
     choice = None
     with _stdout_to_stderr():
         try:
@@ -434,19 +438,25 @@ def _verify_sides(args, design):
     for piece, side in given.items():
         if side not in ("front", "back"):
             raise InputError(f"--printed-side {piece}={side}: the side must be front or back")
+    return {**_card_printed_sides(args, design, flag_given=bool(given)), **given}
+
+
+def _card_printed_sides(args, design, flag_given=False):
+    """The printed sides the card's CuttingSheets give ({} for a .json design or a card without
+    one); CuttingSheets that disagree need --printed-side."""
     features = design.printed_sides
     distinct = []
     for sides in features.values():
         if sides not in distinct:
             distinct.append(sides)
-    if len(distinct) > 1 and not given:
+    if len(distinct) > 1 and not flag_given:
         described = "; ".join(
             f"{name}: {', '.join(f'{k}={v}' for k, v in sorted(sides.items())) or 'all front'}"
             for name, sides in features.items()
         )
         raise InputError(
             f"{args.design}: the card's CuttingSheets print different sides ({described}): say "
-            "which the sheets were written with, e.g. --printed-side P1=front"
+            "which to use, e.g. --printed-side P1=front"
         )
     base = distinct[0] if len(distinct) == 1 else {}
     for piece, side in base.items():
@@ -456,7 +466,7 @@ def _verify_sides(args, design):
                 f"{args.design}: {names}.PrintedSides: {piece}={side}, the side must be front or "
                 "back"
             )
-    return {**base, **given}
+    return base
 
 
 def _verify_failure(args, error):

@@ -201,7 +201,8 @@ def documents(tmp_path_factory, home):
     build_cards(str(folder), home)
     printed = str(folder / "printed.FCStd")
     sheet(printed, folder / "back", "--printed-side", "P1=back", home=home)
-    sheet(printed, folder / "front", home=home)
+    sheet(printed, folder / "front", "--printed-side", "P1=front", home=home)
+    sheet(printed, folder / "from_card", home=home)  # the CuttingSheet's P1=back
     sheet(str(folder / "two_cards.FCStd"), folder / "good", "--card", "Good", home=home)
     return folder
 
@@ -216,6 +217,12 @@ def test_a_card_is_verified_with_its_cutting_sheets_printed_sides(documents, hom
     # --printed-side overrides the CuttingSheet's, piece by piece.
     proc = verify(printed, documents / "front", "--printed-side", "P1=front", home=home)
     assert proc.returncode == 0, proc.stdout + proc.stderr
+    # `popup sheet` of the card without the flag prints the sides its CuttingSheet says, as the
+    # feature does: the same sheets as with --printed-side P1=back.
+    layout = json.loads((documents / "from_card" / "sheets.json").read_text())
+    sides = {piece["id"]: piece["printed_side"] for piece in layout["pieces"]}
+    assert sides["P1"] == "back" and set(sides.values()) <= {"front", "back"}
+    assert verify(printed, documents / "from_card", home=home).returncode == 0
 
 
 def test_cutting_sheets_that_disagree_need_printed_side(documents, home):

@@ -133,7 +133,8 @@ def _open(path):
     try:
         return ezdxf.readfile(path)
     except Exception as e:  # ezdxf raises structure, encoding and value errors of every kind
-        reason = " ".join(str(e).split()) or type(e).__name__
+        # A file cut short leaves ezdxf's tag reader with no message (StopIteration).
+        reason = " ".join(str(e).split()) or f"it ends early or is damaged: {type(e).__name__}"
         raise DxfReadError(f"{path}: not a readable DXF file ({reason})") from None
 
 
@@ -242,7 +243,8 @@ class _Reader:
                 try:
                     parts = [list(single.virtual_entities()) for single in entity.multi_insert()]
                 except Exception as e:  # ezdxf refuses a missing block or a bad transformation
-                    reason = " ".join(str(e).split()) or type(e).__name__
+                    # A file cut short leaves ezdxf's tag reader with no message (StopIteration).
+        reason = " ".join(str(e).split()) or f"it ends early or is damaged: {type(e).__name__}"
                     raise DxfReadError(
                         f"{self.path}: {where} (block '{name}') cannot be expanded ({reason})"
                     ) from None
@@ -285,7 +287,8 @@ class _Reader:
         except DxfReadError:
             raise
         except Exception as e:  # ezdxf's geometry raises on degenerate curves
-            reason = " ".join(str(e).split()) or type(e).__name__
+            # A file cut short leaves ezdxf's tag reader with no message (StopIteration).
+        reason = " ".join(str(e).split()) or f"it ends early or is damaged: {type(e).__name__}"
             self.fail(role, where, f"cannot be flattened ({reason})")
         return self._points(role, where, vectors)
 

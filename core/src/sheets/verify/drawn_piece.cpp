@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "../../geometry/clipper_paths.hpp"
+#include "../../geometry/loop_crossings.hpp"
 #include "../../geometry/polygon_2d.hpp"
 #include "../clipper_ops.hpp"
 
@@ -157,9 +158,13 @@ Vec2 mean(const Loop2& loop)
     return sum / double(std::max<size_t>(loop.size(), 1));
 }
 
+constexpr double far_coordinate = 1e6; // mm: a kilometre; nothing on paper lies beyond
+
 bool finite_loop(const Loop2& loop)
 {
-    return std::all_of(loop.begin(), loop.end(), [](const Vec2& p) { return p.allFinite(); });
+    return std::all_of(loop.begin(), loop.end(), [](const Vec2& p) {
+        return p.allFinite() && p.cwiseAbs().maxCoeff() <= far_coordinate;
+    });
 }
 
 } // namespace
@@ -233,20 +238,27 @@ Result<std::vector<DrawnPiece>> read_drawn_pieces(const std::vector<SheetDrawing
                 r.fail(DiagnosticCode::drawing_unusable,
                        file + ": a CUT loop has " + std::to_string(l.size()) +
                            (finite_loop(l) ? " points, needs three or more"
-                                           : " points and a coordinate that is not finite"));
+                                           : " points and a coordinate that is not finite or "
+                                             "lies beyond ±1e6 mm"));
+            else if (const auto at = first_loop_crossing({l}))
+                r.fail(DiagnosticCode::drawing_unusable,
+                       file + ": a CUT loop crosses itself at " + where(*at) +
+                           ": the paper it encloses is not defined");
         for (const Loop2& l : d.glue)
             if (l.size() < 3 || !finite_loop(l))
                 r.fail(DiagnosticCode::drawing_unusable,
-                       file + ": a GLUE area needs three or more finite points");
+                       file + ": a GLUE area needs three or more points within ±1e6 mm");
         for (const DrawnFold& f : d.folds)
-            if (!f.from.allFinite() || !f.to.allFinite() || (f.to - f.from).norm() < 1e-6)
+            if (!finite_loop({f.from, f.to}) || (f.to - f.from).norm() < 1e-6)
                 r.fail(DiagnosticCode::drawing_unusable,
                        file + ": a fold line at " + where(f.from) +
-                           " has no length or a coordinate that is not finite");
+                           " has no length, or a coordinate that is not finite or lies beyond "
+                           "±1e6 mm");
         for (const DrawnText& t : d.labels)
-            if (!t.position.allFinite())
+            if (!finite_loop({t.position}))
                 r.fail(DiagnosticCode::drawing_unusable,
-                       file + ": label '" + t.text + "' has a position that is not finite");
+                       file + ": label '" + t.text +
+                           "' has a position that is not finite or lies beyond ±1e6 mm");
     }
     if (!r.ok)
         return r;
