@@ -661,7 +661,7 @@ def build_parser():
         default=VERIFY_ANGLES,
         metavar="N",
         help=f"fold angles compared, evenly from the design angle to closed (default "
-        f"{VERIFY_ANGLES}; the core adds 150, 90 and 30 deg when they are missing)",
+        f"{VERIFY_ANGLES})",
     )
     verify.add_argument("--json", action="store_true", help="print the result as one JSON object")
     verify.set_defaults(run=cmd_verify)

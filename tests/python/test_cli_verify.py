@@ -67,8 +67,7 @@ def test_json_report(box_sheets):
     assert REPORT_KEYS <= set(report)
     assert report["design"] == os.path.abspath(BOX)
     assert report["sheets"] == os.path.abspath(box_sheets / "sheets.dxf")
-    # 5 angles from the design angle to closed; the core adds 150, 90 and 30 degrees when missing.
-    assert report["ok"] is True and report["angles"] >= 5
+    assert report["ok"] is True and report["angles"] == 5
     assert 0 <= report["max_error"] <= report["tolerance"]
     assert report["kerf"] == 0.1 and report["printed_sides"] == {}
     assert all(d["severity"] != "error" for d in report["diagnostics"])

@@ -19,6 +19,7 @@ using ClipperLib::Paths;
 constexpr double miter_limit = 8.0;   // as the writer's kerf offset, so the offset undoes it
 constexpr double slit_half = 1e-5;    // mm: half the width of the cut that splits faces at a fold
 constexpr double snap_to_end = 1e-3;  // mm: a face corner this near a fold's end is that end
+constexpr double max_reach = 1.0;     // mm: a fold ending this short of the cut is carried to it
 const std::regex piece_label("P[1-9][0-9]*");
 
 std::string where(const Vec2& p)
@@ -71,11 +72,38 @@ std::vector<Region> nominal_regions(const std::vector<Loop2>& cut, double kerf)
 // The region cut along every fold line by a hairline, the faces' corners put back on the lines.
 std::vector<Region> split_faces(const Region& outline, const std::vector<DrawnFold>& folds)
 {
+    // How far past an end the line must go to reach the cut: a fold drawn a little short of
+    // the outline (a file rounded by another program, a kerf undone) still splits the paper.
+    // Ends on another fold (a junction) stay where they are.
+    auto reach = [&](const Vec2& end, const Vec2& out, const DrawnFold& self) {
+        for (const DrawnFold& g : folds)
+            if (&g != &self && distance_to_segment(end, g.from, g.to) < 1e-4)
+                return 2 * slit_half;
+        double nearest = 1e300;
+        auto hit = [&](const Loop2& loop) {
+            for (size_t i = 0; i < loop.size(); ++i) {
+                const Vec2 &p = loop[i], e = loop[(i + 1) % loop.size()] - loop[i];
+                const double den = out.x() * e.y() - out.y() * e.x();
+                if (std::abs(den) < 1e-12)
+                    continue;
+                const Vec2 w = p - end;
+                const double t = (w.x() * e.y() - w.y() * e.x()) / den;
+                const double u = (w.x() * out.y() - w.y() * out.x()) / den;
+                if (t >= -slit_half && u >= 0.0 && u <= 1.0)
+                    nearest = std::min(nearest, t);
+            }
+        };
+        hit(outline.outer);
+        for (const Loop2& h : outline.holes)
+            hit(h);
+        return nearest <= max_reach ? std::max(nearest, 0.0) + 2 * slit_half : 2 * slit_half;
+    };
     Paths cuts;
     for (const DrawnFold& f : folds) {
         const Vec2 along = (f.to - f.from).normalized();
         const Vec2 side(-along.y() * slit_half, along.x() * slit_half);
-        const Vec2 a = f.from - along * (2 * slit_half), b = f.to + along * (2 * slit_half);
+        const Vec2 a = f.from - along * reach(f.from, -along, f);
+        const Vec2 b = f.to + along * reach(f.to, along, f);
         cuts.push_back(to_path({a - side, b - side, b + side, a + side}));
     }
     ClipperLib::Clipper clipper;
