@@ -73,19 +73,19 @@ namespace popup {
     X(sharp_corner)                                                                                \
     X(round_trip_unplaced)                                                                         \
     X(round_trip_failed)                                                                           \
-    X(round_trip_mismatch) \
-    X(drawing_unusable)\
-    X(unlabelled_piece)\
-    X(missing_piece)\
-    X(outline_mismatch)\
-    X(fold_missing)\
-    X(fold_misplaced)\
-    X(fold_extra)\
-    X(fold_direction_wrong)\
-    X(fold_not_separating)\
-    X(tab_unmatched)\
-    X(tab_wrong_target)\
-    X(joint_without_tab)                                                                         \
+    X(round_trip_mismatch)                                                                         \
+    X(drawing_unusable)                                                                            \
+    X(unlabelled_piece)                                                                            \
+    X(missing_piece)                                                                               \
+    X(outline_mismatch)                                                                            \
+    X(fold_missing)                                                                                \
+    X(fold_misplaced)                                                                              \
+    X(fold_extra)                                                                                  \
+    X(fold_direction_wrong)                                                                        \
+    X(fold_not_separating)                                                                         \
+    X(tab_unmatched)                                                                               \
+    X(tab_wrong_target)                                                                            \
+    X(joint_without_tab)                                                                           \
     X(bad_paper)                                                                                   \
     X(bad_margin)                                                                                  \
     X(bad_spacing)                                                                                 \
