@@ -423,7 +423,7 @@ def cmd_sheet(args):
 
 
 VERIFY_ANGLES = 13  # fold angles verify_sheets samples by default
-MAX_VERIFY_ANGLES = 1000
+MAX_VERIFY_ANGLES = 361  # the core's limit
 
 
 def _verify_sides(args, design):
@@ -670,7 +670,8 @@ def build_parser():
         type=int,
         default=VERIFY_ANGLES,
         metavar="N",
-        help=f"fold angles compared, from the design angle to closed (default {VERIFY_ANGLES})",
+        help=f"fold angles compared, evenly from the design angle to closed (default "
+        f"{VERIFY_ANGLES})",
     )
     verify.add_argument("--json", action="store_true", help="print the result as one JSON object")
     verify.set_defaults(run=cmd_verify)

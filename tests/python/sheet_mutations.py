@@ -162,25 +162,32 @@ def tab_codes(sheet_set):
 
 
 def swap_tab_codes(doc, sheet_set):
-    """Swaps the texts of two tab codes on two different pieces, going to different patches when
-    there are."""
+    """Swaps the texts of two tab codes: of two tabs on different pieces going to different
+    pieces when there are such, else on one piece going to different patches. Swapping the two
+    codes of a piece that its turning half round maps onto itself (a symmetric tent) makes the
+    same card, so such a pair is never taken."""
     tabs = tab_codes(sheet_set)
     if len(tabs) < 2:
         raise Unavailable(f"{len(tabs)} glue tab(s): nothing to swap")
     target = {}
     for piece in sheet_set["pieces"]:
         for tab in piece["tabs"]:
-            target[tab["code"]] = (tab["target_piece"], tab["target_patch"])
-    # Two tabs of one piece carry codes that a symmetric piece may be turned round to satisfy
-    # (a tent's two slopes: swapped, they make the same card, and verify rightly passes it):
-    # tabs of two different pieces are always a real mistake.
-    pairs = [(a, b) for i, a in enumerate(tabs) for b in tabs[i + 1 :] if a[0]["id"] != b[0]["id"]]
+            target[tab["code"]] = (tab["target_piece"], tab["target_patch"], piece, tab)
+
+    def sameness(pair):
+        (piece_a, label_a), (piece_b, label_b) = pair
+        (to_a, patch_a, *_), (to_b, patch_b, *_) = target[label_a["text"]], target[label_b["text"]]
+        return (piece_a["id"] == piece_b["id"], to_a == to_b, patch_a == patch_b)
+
+    pairs = [(a, b) for i, a in enumerate(tabs) for b in tabs[i + 1 :]]
+    pairs = [pair for pair in pairs if not all(sameness(pair)[1:])]
+    pairs = [pair for pair in pairs if not _swap_is_a_symmetry(sheet_set, target, pair)]
     if not pairs:
         raise Unavailable(
-            "every glue tab is on one piece: swapping its codes may only turn the piece round"
+            f"the {len(tabs)} tabs either go to one patch or sit on a piece that turning half "
+            "round maps onto itself, swapping their codes: swapped, they make the same card"
         )
-    pairs.sort(key=lambda pair: target[pair[0][1]["text"]] == target[pair[1][1]["text"]])
-    (piece_a, label_a), (piece_b, label_b) = pairs[0]
+    (piece_a, label_a), (piece_b, label_b) = min(pairs, key=sameness)
     text_a = _label_text(doc, sheet_set, piece_a, label_a)
     text_b = _label_text(doc, sheet_set, piece_b, label_b)
     text_a.dxf.text, text_b.dxf.text = label_b["text"], label_a["text"]
@@ -190,6 +197,52 @@ def swap_tab_codes(doc, sheet_set):
         codes=[label_a["text"], label_b["text"]],
         note=f"{piece_a['id']} and {piece_b['id']}",
     )
+
+
+def _swap_is_a_symmetry(sheet_set, target, pair):
+    """True when both tabs are on one piece and a rigid motion of the sheet (no turning over)
+    takes the piece's outline and folds (with their directions) onto themselves and one tab's
+    crease onto the other's: the swapped codes then make the same card."""
+    (piece_a, label_a), (piece_b, label_b) = pair
+    if piece_a["id"] != piece_b["id"]:
+        return False
+    piece = piece_a
+    crease_a = target[label_a["text"]][3]["polygon"][:2]
+    crease_b = target[label_b["text"]][3]["polygon"][:2]
+    outline = [tuple(p) for r in piece["cut_nominal"] for p in r["outer"]]
+    folds = [(tuple(f["from"]), tuple(f["to"]), f["direction"]) for f in piece["folds"]]
+    for onto in (crease_b, crease_b[::-1]):
+        motion = _motion(crease_a, onto)
+        if motion is None:
+            continue
+        moved = [motion(p) for p in outline]
+        if not all(any(_same(m, p) for p in outline) for m in moved):
+            continue
+        if all(
+            any(
+                d == direction and {_key(motion(s)), _key(motion(e))} == {_key(s2), _key(e2)}
+                for s2, e2, d in folds
+            )
+            for s, e, direction in folds
+        ):
+            return True
+    return False
+
+
+def _motion(source, target):
+    """The rotation and translation taking segment `source` onto `target`; None if their lengths
+    differ."""
+    (a, b), (c, d) = source, target
+    if abs(math.dist(a, b) - math.dist(c, d)) > MATCH:
+        return None
+    turn = math.atan2(d[1] - c[1], d[0] - c[0]) - math.atan2(b[1] - a[1], b[0] - a[0])
+    cos, sin = math.cos(turn), math.sin(turn)
+
+    def moved(p):
+        x, y = p[0] - a[0], p[1] - a[1]
+        return (c[0] + cos * x - sin * y, c[1] + sin * x + cos * y)
+
+    return moved
 
 
 # --- d. a tab cut off -----------------------------------------------------------------------------

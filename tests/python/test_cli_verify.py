@@ -298,3 +298,36 @@ def test_edits_that_keep_the_geometry_still_verify(box_sheets, tmp_path, edit):
     assert counts(read_dxf(str(tmp_path / "edited.dxf"))) == counts(read_dxf(str(box_sheets)))
     proc = verify(BOX, tmp_path / "edited.dxf", "--json")
     assert proc.returncode == 0, proc.stdout + proc.stderr
+
+
+def test_a_piece_moved_and_turned_elsewhere_still_verifies(box_sheets, tmp_path):
+    """A maker re-nesting: the box's strip P3 turned 37 degrees and moved 600 mm to the right,
+    clear of the other pieces (a rigid motion on the sheet, not a turn-over)."""
+    import math
+
+    with open(box_sheets / "sheets.json") as f:
+        sheet_set = json.load(f)
+    doc = ezdxf.readfile(str(box_sheets / "sheets.dxf"))
+    (piece,) = [p for p in sheet_set["pieces"] if p["id"] == "P3"]
+    cx, cy = sheet_mutations.centroid(piece["cut"][0]["outer"])
+    turn = math.radians(37.0)
+
+    def moved(p):
+        x, y = p[0] - cx, p[1] - cy
+        return (
+            cx + 600 + x * math.cos(turn) - y * math.sin(turn),
+            cy + x * math.sin(turn) + y * math.cos(turn),
+        )
+
+    for entity in sheet_mutations.piece_entities(doc, sheet_set, piece):
+        if entity.dxftype() == "LWPOLYLINE":
+            entity.set_points([moved(p) for p in entity.get_points("xy")], format="xy")
+        elif entity.dxftype() == "LINE":
+            entity.dxf.start, entity.dxf.end = moved(entity.dxf.start), moved(entity.dxf.end)
+        else:
+            entity.dxf.align_point = moved(entity.dxf.align_point)
+            entity.dxf.insert = moved(entity.dxf.insert)
+            entity.dxf.rotation += 37.0
+    doc.saveas(str(tmp_path / "renested.dxf"))
+    proc = verify(BOX, tmp_path / "renested.dxf")
+    assert proc.returncode == 0, proc.stdout + proc.stderr

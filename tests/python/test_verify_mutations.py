@@ -41,6 +41,18 @@ EXPECTED = {
 }
 NUMBER = re.compile(r"(?<![\w.])-?\d+(?:\.\d+)?(?:e-?\d+)?")
 
+# Where the core's verify_sheets is wrong today (reported with the branch that added these
+# tests). Strict: once the core is fixed the test passes, fails as XPASS, and the mark goes.
+CORE_DEFECTS = {
+    "swap_tab_codes": (
+        ["demo_card", "floating_layer"],
+        "core: a piece whose shape is symmetric is registered turned round although its drawn "
+        "codes fit the other way better, so the tab coded wrongly is named by a code it does not "
+        "carry and a tab coded rightly is blamed (demo card: P4's tab now coded A is called "
+        "'tab E'; floating layer: P2's tab now coded E is called 'tab D')",
+    ),
+}
+
 
 @pytest.fixture(scope="module")
 def home(tmp_path_factory):
@@ -88,8 +100,11 @@ def test_the_written_sheets_verify(written, home):
 
 
 @pytest.mark.parametrize("name", list(EXPECTED))
-def test_an_edit_is_found_and_named(written, home, tmp_path, name):
+def test_an_edit_is_found_and_named(written, home, tmp_path, name, request):
     design, out, sheet_set = written
+    cases, reason = CORE_DEFECTS.get(name, ((), ""))
+    if request.node.callspec.params["written"] in cases:
+        request.applymarker(pytest.mark.xfail(strict=True, reason=reason))
     try:
         mutation = sheet_mutations.mutated_copy(
             out / "sheets.dxf", tmp_path / "sheets.dxf", sheet_set, name
@@ -104,36 +119,46 @@ def test_an_edit_is_found_and_named(written, home, tmp_path, name):
     named = [d for d in errors if d["code"] in EXPECTED[name]]
     assert named, f"{mutation}: none of {EXPECTED[name]} in\n{shown}"
     check = globals()[f"_named_{name}"]
-    assert any(check(d, mutation, report) for d in named), f"{mutation}: not named in\n{shown}"
+    assert check(named, mutation, report), f"{mutation}: not named in\n{shown}"
 
 
-def _named_shift_fold(d, mutation, report):
-    """The piece, and the 0.5 mm shift as a number between 0.4 and 0.6."""
-    shifts = [float(n) for n in NUMBER.findall(d["message"]) if 0.4 <= float(n) <= 0.6]
-    return mentions(d["message"], mutation.piece) and bool(shifts) and len(d["patches"]) == 2
-
-
-def _named_flip_fold(d, mutation, report):
-    return mentions(d["message"], mutation.piece) and len(d["patches"]) == 2
-
-
-def _named_swap_tab_codes(d, mutation, report):
-    # A piece that can be turned round may take the blame for its partner's code: either tab,
-    # or either piece, is named.
-    pieces = mutation.note.split(" and ")
-    return any(mentions(d["message"], code) for code in mutation.codes) or any(
-        mentions(d["message"], piece) for piece in pieces
+def _named_shift_fold(named, mutation, report):
+    """The one fold moved, of the piece, with the 0.5 mm shift as a number between 0.4 and 0.6
+    (the folds and tab creases left where they were are not blamed)."""
+    return len(named) == 1 and any(
+        mentions(d["message"], mutation.piece)
+        and len(d["patches"]) == 2
+        and any(0.4 <= float(n) <= 0.6 for n in NUMBER.findall(d["message"]))
+        for d in named
     )
 
 
-def _named_cut_off_tab(d, mutation, report):
+def _named_flip_fold(named, mutation, report):
+    return any(mentions(d["message"], mutation.piece) and len(d["patches"]) == 2 for d in named)
+
+
+def _named_swap_tab_codes(named, mutation, report):
+    """Each of the two tabs, by the code now printed on it."""
+    return all(any(mentions(d["message"], code) for d in named) for code in mutation.codes)
+
+
+def _named_cut_off_tab(named, mutation, report):
+    """The tab's code (its glue area is left without a tab) or the piece that lost it."""
     (code,) = mutation.codes
-    return mentions(d["message"], code) or mentions(d["message"], mutation.piece)
-
-
-def _named_scale_piece(d, mutation, report):
-    """The piece, and a deviation: the message's numbers or max_error above the tolerance."""
-    quantified = (report["max_error"] or 0) > report["tolerance"] or any(
-        float(n) > report["tolerance"] for n in NUMBER.findall(d["message"])
+    return any(
+        mentions(d["message"], code) or mentions(d["message"], mutation.piece) for d in named
     )
-    return mentions(d["message"], mutation.piece) and quantified and d["patches"] != []
+
+
+def _named_scale_piece(named, mutation, report):
+    """The piece, and the deviation: a number in the message or max_error above the
+    tolerance."""
+    return any(
+        mentions(d["message"], mutation.piece)
+        and d["patches"] != []
+        and (
+            (report["max_error"] or 0) > report["tolerance"]
+            or any(float(n) > report["tolerance"] for n in NUMBER.findall(d["message"]))
+        )
+        for d in named
+    )
