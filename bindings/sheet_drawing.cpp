@@ -128,7 +128,10 @@ void bind_sheet_drawing(py::module_& m)
             }
             if (!r.ok)
                 throw bindings::DesignFailure(r.diagnostics);
-            return py::dict(py::arg("ok") = r.value.ok, py::arg("max_error") = r.value.max_error,
+            // Nothing compared (the pieces could not be re-made): no error to report, not 0.
+            const py::object max_error =
+                r.value.angles > 0 ? py::object(py::float_(r.value.max_error)) : py::none();
+            return py::dict(py::arg("ok") = r.value.ok, py::arg("max_error") = max_error,
                             py::arg("tolerance") = r.value.tolerance,
                             py::arg("angles") = r.value.angles,
                             py::arg("diagnostics") = bindings::diagnostic_list(r.diagnostics));
@@ -136,6 +139,7 @@ void bind_sheet_drawing(py::module_& m)
         py::arg("design"), py::arg("drawings"), py::arg("printed_sides") = py::dict(),
         py::arg("angles") = 13,
         "Re-builds the pieces from the drawings, folds them with the simulator and compares them "
-        "with the design: {'ok', 'max_error', 'tolerance', 'angles', 'diagnostics'}. Raises "
+        "with the design: {'ok', 'max_error' (None when nothing could be compared), 'tolerance', "
+        "'angles', 'diagnostics'}. Raises "
         "DesignError when the design or the options cannot be used at all.");
 }

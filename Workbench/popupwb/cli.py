@@ -537,7 +537,7 @@ def cmd_verify(args):
         return EXIT_VALID
     measured = (
         f"largest patch error {error:.3g} mm"
-        if math.isfinite(error)
+        if error is not None and math.isfinite(error)
         else "the re-folded card could not be compared"
     )
     print(

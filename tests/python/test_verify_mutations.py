@@ -41,15 +41,18 @@ EXPECTED = {
 }
 NUMBER = re.compile(r"(?<![\w.])-?\d+(?:\.\d+)?(?:e-?\d+)?")
 
-# Where the core's verify_sheets is wrong today (reported with the branch that added these
-# tests). Strict: once the core is fixed the test passes, fails as XPASS, and the mark goes.
+# Where the drawing alone cannot say which tab carries the wrong code: the swap puts a code on a
+# piece whose half turn maps it onto itself (the demo's step: riser and tread alike, one tab
+# each), and both ways round leave one tab of it coded wrongly. verify_sheets fails the sheets
+# and names the piece, but may blame the other tab of it. Strict: a core that breaks the tie the
+# maker's way passes, fails as XPASS, and the mark goes.
 CORE_DEFECTS = {
     "swap_tab_codes": (
         ["demo_card", "floating_layer"],
-        "core: a piece whose shape is symmetric is registered turned round although its drawn "
-        "codes fit the other way better, so the tab coded wrongly is named by a code it does not "
-        "carry and a tab coded rightly is blamed (demo card: P4's tab now coded A is called "
-        "'tab E'; floating layer: P2's tab now coded E is called 'tab D')",
+        "a symmetric piece with one wrongly coded tab fits its drawing equally badly both ways "
+        "round; verify fails the sheets and names the piece but may blame its other tab (demo "
+        "card: P4's tab now coded A is called 'tab E'; floating layer: P2's tab coded E is "
+        "called 'tab D')",
     ),
 }
 

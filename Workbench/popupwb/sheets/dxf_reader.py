@@ -243,8 +243,7 @@ class _Reader:
                 try:
                     parts = [list(single.virtual_entities()) for single in entity.multi_insert()]
                 except Exception as e:  # ezdxf refuses a missing block or a bad transformation
-                    # A file cut short leaves ezdxf's tag reader with no message (StopIteration).
-        reason = " ".join(str(e).split()) or f"it ends early or is damaged: {type(e).__name__}"
+                    reason = " ".join(str(e).split()) or type(e).__name__
                     raise DxfReadError(
                         f"{self.path}: {where} (block '{name}') cannot be expanded ({reason})"
                     ) from None
@@ -287,8 +286,7 @@ class _Reader:
         except DxfReadError:
             raise
         except Exception as e:  # ezdxf's geometry raises on degenerate curves
-            # A file cut short leaves ezdxf's tag reader with no message (StopIteration).
-        reason = " ".join(str(e).split()) or f"it ends early or is damaged: {type(e).__name__}"
+            reason = " ".join(str(e).split()) or type(e).__name__
             self.fail(role, where, f"cannot be flattened ({reason})")
         return self._points(role, where, vectors)
 

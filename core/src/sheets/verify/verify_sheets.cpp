@@ -694,7 +694,8 @@ void Verifier::choose_registrations()
             }
             ways[k].push_back(std::move(way));
         }
-        combinations *= std::max<size_t>(ways[k].size(), 1);
+        combinations =
+            std::min<size_t>(combinations * std::max<size_t>(ways[k].size(), 1), size_t(1) << 20);
     }
     auto misfits = [&](const std::vector<size_t>& choice) {
         int count = 0;
@@ -731,16 +732,20 @@ void Verifier::choose_registrations()
                 best = choice;
             }
         }
-    } else { // one piece at a time, in assembly order
-        for (size_t k = 0; k < ways.size(); ++k)
-            for (size_t w = 1; w < ways[k].size(); ++w) {
-                choice = best;
-                choice[k] = w;
-                if (const int m = misfits(choice); m < fewest) {
-                    fewest = m;
-                    best = choice;
+    } else { // one piece at a time, in assembly order, until no piece turned round helps
+        for (bool better = true; better && fewest > 0;) {
+            better = false;
+            for (size_t k = 0; k < ways.size(); ++k)
+                for (size_t w = 0; w < ways[k].size(); ++w) {
+                    choice = best;
+                    choice[k] = w;
+                    if (const int m = misfits(choice); m < fewest) {
+                        fewest = m;
+                        best = choice;
+                        better = true;
+                    }
                 }
-            }
+        }
     }
     for (size_t k = 0; k < pieces_.size(); ++k)
         if (pieces_[k].drawn)
@@ -935,10 +940,16 @@ RoundTrip Verifier::compare(const std::map<int, Pose>& from_sheet)
     const Result<FoldSweep> refolded = simulate_fold(remade, angles_);
     if (!refolded.ok) {
         const Diagnostics& why = refolded.diagnostics;
-        error(DiagnosticCode::round_trip_failed,
-              "the card re-made from the sheets does not simulate: " +
-                  (why.empty() ? std::string("no reason given") : why.front().message),
-              why.empty() ? std::vector<int>{} : why.front().patches);
+        const std::string message =
+            "the card re-made from the sheets does not simulate: " +
+            (why.empty() ? std::string("no reason given") : why.front().message);
+        const std::vector<int> patches = why.empty() ? std::vector<int>{} : why.front().patches;
+        if (has_errors(findings_)) // a consequence of what is named above, not a finding of its own
+            findings_.push_back(Diagnostic::warning(DiagnosticCode::round_trip_failed,
+                                                    message + " (it follows from the errors above)",
+                                                    about_patches(patches)));
+        else
+            error(DiagnosticCode::round_trip_failed, message, patches);
         return out;
     }
     const auto& a = designed_.value.states;
