@@ -8,6 +8,8 @@
 
 #include "generated_scaffolds.hpp"
 #include "popup/io/brep_export.hpp"
+#include "popup/mechanisms/box_fold.hpp"
+#include "popup/model/card.hpp"
 #include "popup/simulation/check_validity.hpp"
 #include "popup/simulation/simulate_fold.hpp"
 
@@ -81,6 +83,44 @@ void BM_CheckValidity(benchmark::State& state)
     state.counters["valid"] = valid ? 1.0 : 0.0;
 }
 
+/// A box whose ends are made of `panel_pairs` stacked strips (issue 10: 10 pairs took 17.7 s):
+/// how the validity check grows with the panels of one mechanism.
+void BM_CheckValidityBoxPanelPairs(benchmark::State& state)
+{
+    popup::CardParams card;
+    popup::Scaffold scaffold = popup::make_card(card).value;
+    popup::BoxFoldParams box;
+    box.offset = 60.0;
+    box.width = 80.0;
+    box.panel_pairs = static_cast<int>(state.range(0));
+    popup::add_box_fold(scaffold, popup::central_fold(scaffold), box, "B");
+    for (auto _ : state) {
+        popup::ValidityReport report = popup::check_validity(scaffold);
+        benchmark::DoNotOptimize(report);
+    }
+    set_counters(state, scaffold);
+}
+
+/// `depth` boxes each standing on the top of the one below (issue 10: 10 took 28.8 s): how the
+/// check grows with the bodies of one connected mechanism (dense normal equations: their cube).
+void BM_CheckValidityNestedBoxes(benchmark::State& state)
+{
+    popup::Scaffold scaffold = popup::make_card(popup::CardParams{}).value;
+    popup::BasePatchPair host = popup::central_fold(scaffold);
+    for (int k = 0; k < state.range(0); ++k) {
+        popup::BoxFoldParams box;
+        box.offset = k == 0 ? 40.0 : 2.0;
+        box.width = 76.0 - 4.0 * k;
+        box.height = box.depth_ground = box.depth_backdrop = 10.0;
+        host = popup::add_box_fold(scaffold, host, box, "B" + std::to_string(k)).value.offered[0];
+    }
+    for (auto _ : state) {
+        popup::ValidityReport report = popup::check_validity(scaffold);
+        benchmark::DoNotOptimize(report);
+    }
+    set_counters(state, scaffold);
+}
+
 /// The tent card with its ground outline split into `vertices` points along its four edges, as
 /// outlines from models are: the validity check must stay near-linear in the vertex count.
 void BM_CheckValidityLongOutline(benchmark::State& state)
@@ -130,6 +170,8 @@ void BM_PatchesToBrep(benchmark::State& state)
 BENCHMARK(BM_SimulateSweep)->Unit(benchmark::kMillisecond)->Arg(10)->Arg(50)->Arg(100)->Arg(200);
 BENCHMARK(BM_SweepNaiveSteps)->Unit(benchmark::kMillisecond)->Arg(10)->Arg(50)->Arg(100)->Arg(200);
 BENCHMARK(BM_CheckValidity)->Unit(benchmark::kMillisecond)->Arg(10)->Arg(50)->Arg(100)->Arg(200);
+BENCHMARK(BM_CheckValidityBoxPanelPairs)->Unit(benchmark::kMillisecond)->Arg(1)->Arg(4)->Arg(10);
+BENCHMARK(BM_CheckValidityNestedBoxes)->Unit(benchmark::kMillisecond)->Arg(2)->Arg(5)->Arg(10);
 BENCHMARK(BM_CheckValidityLongOutline)
     ->Unit(benchmark::kMillisecond)
     ->Arg(1000)

@@ -318,10 +318,16 @@ bool FoldSolver::least_squares_sized(int c, Configuration& q, const std::vector<
     using Vector = Eigen::Matrix<double, N, 1>;
     const auto& bodies = graph_.components[c];
     const int n = int(6 * bodies.size());
-    // Buffers reused across iterations: a sweep runs this thousands of times.
-    Matrix A(n, n), M(n, n);
-    Vector g(n), d(n);
-    Eigen::LLT<Matrix> llt(n);
+    // Buffers reused across iterations and, per thread, across calls: a sweep runs this
+    // thousands of times, and a large component's normal matrix (270 x 270 for 45 bodies, half a
+    // megabyte) allocated afresh each time cost more in page faults than the factorisation.
+    thread_local Matrix A, M;
+    thread_local Vector g, d;
+    thread_local Eigen::LLT<Matrix> llt;
+    A.resize(n, n);
+    M.resize(n, n);
+    g.resize(n);
+    d.resize(n);
     std::vector<BodyPose> saved(bodies.size());
     double worst = 0.0;
     double current = cost(c, q, hints, &worst);
