@@ -551,7 +551,14 @@ void Verifier::check_tabs()
                       name + " is glued by its code onto patch " + patch_name(s_, area.patch) +
                           " of " + pieces_[area.piece].id + "; the design joins it to patch " +
                           patch_name(s_, partner) + " of " +
-                          (piece_of(partner) >= 0 ? pieces_[size_t(piece_of(partner))].id : "?"),
+                          (piece_of(partner) >= 0 ? pieces_[size_t(piece_of(partner))].id : "?") +
+                          // A piece that fits its drawing turned round as well cannot tell
+                          // which of its tabs carries the wrong code.
+                          (piece.candidates.size() > 1
+                               ? " (" + piece.id +
+                                     " fits its outline turned round too: the wrong code may be "
+                                     "on another of its tabs)"
+                               : std::string()),
                       {patch, partner, area.patch});
             tabs_.push_back(tab);
         }
