@@ -162,4 +162,6 @@ def test_every_bad_file_has_a_row_and_matches_its_maker():
     assert files == made, "tests/data/bad/ and make_bad_designs.py disagree"
     for name in sorted(made):
         with open(os.path.join(BAD_DIR, name), "rb") as f:
-            assert f.read() == maker.contents(name[: -len(".json")]), f"{name}: run make_bad_designs.py"
+            assert f.read() == maker.contents(
+                name[: -len(".json")]
+            ), f"{name}: run make_bad_designs.py"
