@@ -90,6 +90,10 @@ def _check_sheet_options(options):
     """The layout options' range errors, before the design is loaded and checked: a bad value
     should not wait for them (the layout checks the same again)."""
     ranged = {name: value for name, value in options.items() if name != "printed_sides"}
+    try:
+        sheet_options.parse_sides(options.get("printed_sides", []))
+    except ValueError as e:
+        raise InputError(f"--printed-side: {e}")
     _import_core()
     findings = sheet_options.core_options(**ranged).check()
     if findings:
@@ -406,6 +410,8 @@ def cmd_sheet(args):
         except ValueError as e:
             raise InputError(f"--paper {args.paper}: {_one_line(e)}")
     _check_sheet_options(sheet_options.from_cli(args))
+    if os.path.exists(args.out) and not os.path.isdir(args.out):
+        raise InputError(f"--out {args.out}: is a file, not a folder")
     from popupwb.sheets.export import export_sheets, layout
     from popupwb.sheets.not_valid_stamp import not_valid_of
     from popupwb.sheets.paper_choice import layout_on_smallest_paper

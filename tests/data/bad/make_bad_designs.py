@@ -139,6 +139,7 @@ DESIGNS = {
 
 # Files that are not JSON designs at all: name -> bytes
 RAW = {
+    "not_an_object": lambda: b"[]\n",
     # U1: UTF-16 (with its byte-order mark) and invalid UTF-8 (an empty message)
     "utf16": lambda: b"\xff\xfe" + json.dumps(base("tent_fold.json")).encode("utf-16-le"),
     "invalid_utf8": lambda: json.dumps(base("tent_fold.json"))
