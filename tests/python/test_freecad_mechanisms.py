@@ -288,6 +288,21 @@ def test_card_errors_name_the_card_and_the_property(doc, popup, card):
     )
     card["Card"].FoldAngle = 30.0
     recompute_ok(doc, *card.values())
+    # Negative and infinite lengths are kept as typed and refused with their range, not stored
+    # as 0 (FreeCAD's unsigned PropertyLength did that).
+    for name, value, fragment in (
+        ("Width", -1.0, "Greeting: Width = -1 mm, must be > 0 and <= 2000 mm"),
+        ("PaperThickness", -1.0, "Greeting: PaperThickness = -1 mm"),
+        ("PaperThickness", float("-inf"), "Greeting: PaperThickness = -inf mm"),
+    ):
+        kept = getattr(card["Card"], name).Value
+        setattr(card["Card"], name, value)
+        doc.recompute()
+        assert getattr(card["Card"], name).Value == value
+        assert in_error(card["Card"])
+        assert card["Card"].getStatusString().startswith(fragment), card["Card"].getStatusString()
+        setattr(card["Card"], name, kept)
+    recompute_ok(doc, *card.values())
 
 
 def test_host_pairs_come_from_the_host_and_follow_its_label(doc, popup, card):

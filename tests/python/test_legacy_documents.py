@@ -27,6 +27,13 @@ out["slope_backdrop"] = tent.SlopeBackdrop.Value
 out["card_height"] = card.Shape.BoundBox.ZLength
 out["pieces"] = sheet.PieceCount
 out["round_trip"] = sheet.RoundTripOk
+# Lengths saved as unsigned PropertyLength come back signed, their values kept, so that a wrong
+# value is reported with its range instead of being stored as 0.
+out["types"] = {n: card.getTypeIdOfProperty(n) for n in ("Width", "Depth", "PaperThickness")}
+out["sizes"] = [card.Width.Value, card.Depth.Value, card.PaperThickness.Value]
+card.PaperThickness = -1.0
+doc.recompute()
+out["thickness_error"] = [card.PaperThickness.Value, card.getStatusString()]
 print(json.dumps(out))
 """
 
@@ -69,3 +76,8 @@ def test_legacy_card_reopens_and_recomputes(run_fresh_freecad, data_dir, name):
     # At 90° each 105 mm page rises 45° out of the plane it lay in at 180°.
     assert out["card_height"] == pytest.approx(105.0 * math.sin(math.radians(45.0)), abs=1e-6)
     assert out["pieces"] == 2 and out["round_trip"] is True
+    assert set(out["types"].values()) == {"App::PropertyDistance"}
+    assert out["sizes"] == pytest.approx([148.0, 105.0, 0.2])
+    value, status = out["thickness_error"]
+    assert value == -1.0
+    assert "PaperThickness" in status and "-1" in status and "5" in status, status

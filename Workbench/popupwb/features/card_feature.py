@@ -11,6 +11,7 @@ import FreeCAD
 
 from popupwb import card_scaffold
 from popupwb.features.property_adder import add_validity_outputs, property_adder
+from popupwb.features.signed_lengths import SIGNED, make_signed
 from popupwb.stateless_proxy import StatelessProxy
 from popupwb.view_provider_by_name import attach_view_provider
 
@@ -69,10 +70,11 @@ class PopUpCard(StatelessProxy):
             )
             obj.Preset = PRESET_NAMES
             obj.Preset = "A5"
-        add("App::PropertyLength", "Width", "Length of the central fold", PRESETS["A5"][0])
-        add("App::PropertyLength", "Depth", "Depth of each page, from the fold", PRESETS["A5"][1])
+        make_signed(obj, ("Width", "Depth", "PaperThickness"))
+        add(SIGNED, "Width", "Length of the central fold", PRESETS["A5"][0])
+        add(SIGNED, "Depth", "Depth of each page, from the fold", PRESETS["A5"][1])
         add("App::PropertyAngle", "FoldAngle", "Opening angle of the card, 0° to 180°", 180.0)
-        add("App::PropertyLength", "PaperThickness", "Paper thickness", 0.2)
+        add(SIGNED, "PaperThickness", "Paper thickness", 0.2)
         add("App::PropertyBool", "Thickened", "Show the patches as solids of PaperThickness", False)
         add_validity_outputs(
             add, "True when the last validity check passed; reset when the design changes"

@@ -15,6 +15,7 @@ import Part
 
 from popupwb.core import popupcore
 from popupwb.features.property_adder import add_validity_outputs, property_adder
+from popupwb.features.signed_lengths import SIGNED, make_signed
 from popupwb.stateless_proxy import StatelessProxy
 from popupwb.view_provider_by_name import attach_view_provider
 
@@ -99,8 +100,9 @@ class ScaffoldFeature(StatelessProxy):
             "Pop-up design file (JSON, docs/DESIGN_FORMAT.md), stored inside the document",
         )
         add("App::PropertyAngle", "FoldAngle", "Opening angle of the card, 0° to 180°", 180.0)
+        make_signed(obj, ("PaperThickness",))
         add(
-            "App::PropertyLength",
+            SIGNED,
             "PaperThickness",
             "Paper thickness, used when Thickened (the design file's value by default)",
             0.2,
@@ -128,7 +130,10 @@ class ScaffoldFeature(StatelessProxy):
         angle = obj.FoldAngle.Value
         if not 0.0 <= angle <= 180.0:
             raise ValueError(f"{obj.Label}: FoldAngle = {angle:g}°, must be within 0° and 180°")
-        thickness = obj.PaperThickness.Value if obj.Thickened else 0.0
+        paper = obj.PaperThickness.Value
+        if not 0.0 <= paper <= 5.0:  # the core's range for paper (popup::make_card)
+            raise ValueError(f"{obj.Label}: PaperThickness = {paper:g} mm, must be 0 to 5 mm")
+        thickness = paper if obj.Thickened else 0.0
         if obj.Thickened and thickness <= 0.0:
             raise ValueError(
                 f"{obj.Label}: PaperThickness = {thickness:g} mm, must be > 0 when Thickened"

@@ -104,6 +104,14 @@ std::vector<const Loop3*> loops_of(const Patch& p)
     return loops;
 }
 
+std::string millimetres(double value)
+{
+    std::ostringstream s;
+    s.precision(4);
+    s << value << " mm";
+    return s.str();
+}
+
 // "(x, y, z)" of a point in the patch's own frame, in world coordinates.
 std::string where(const Patch& p, const Vec2& q)
 {
@@ -136,6 +144,18 @@ template <class Report> void check_loops(const Patch& p, Report&& report)
         else if (!point_in_polygon(outer, holes[h].front()))
             report(DiagnosticCode::hole_outside_outline, p,
                    hole + " lies outside the outline, at " + where(p, holes[h].front()));
+        else
+            for (size_t g = 0; g < h; ++g) {
+                const std::string other = "hole " + std::to_string(g + 1);
+                if (const auto at = first_loop_crossing({holes[g], holes[h]}))
+                    report(DiagnosticCode::holes_overlap, p,
+                           other + " and " + hole + " cross or touch at " + where(p, *at));
+                else if (point_in_polygon(holes[g], holes[h].front()) ||
+                         point_in_polygon(holes[h], holes[g].front()))
+                    report(DiagnosticCode::holes_overlap, p,
+                           other + " and " + hole + " lie one inside the other, at " +
+                               where(p, holes[h].front()));
+            }
     }
 }
 
@@ -226,6 +246,16 @@ Result<Scaffold> validate_scaffold(Scaffold s)
             patch_error(DiagnosticCode::non_planar_patch, p, m.str());
             continue;
         }
+        // Holes run clockwise seen from the normal side; files from other tools may not care.
+        for (Loop3& h : p.holes) {
+            double twice_area = 0.0;
+            for (size_t i = 0; i < h.size(); ++i) {
+                const Vec2 a = p.to_local(h[i]), b = p.to_local(h[(i + 1) % h.size()]);
+                twice_area += a.x() * b.y() - b.x() * a.y();
+            }
+            if (twice_area > 0.0)
+                std::reverse(h.begin(), h.end());
+        }
         check_loops(p, patch_error);
     }
     auto check_base = [&](int id, const char* which) {
@@ -244,6 +274,34 @@ Result<Scaffold> validate_scaffold(Scaffold s)
                "design angle " + std::to_string(s.design_angle * 180.0 / M_PI) +
                    "° must be > 0° and <= 180°",
                about_parameter("design_angle"));
+    // The base patches must lie where the design angle puts them: opened flat (180°) the ground
+    // lies on the page plane on the x > 0 side of the central fold, the backdrop on the other.
+    if (r.ok) {
+        auto check_on_page = [&](int id, const Pose& to_open, double side, const char* which) {
+            const Patch& p = *s.find_patch(id);
+            for (const Vec3& x : p.outer) {
+                const Vec3 open = to_open.apply(x);
+                const bool off_page = std::abs(open.z()) > 10 * tol;
+                if (!off_page && side * open.x() >= -10 * tol)
+                    continue;
+                std::ostringstream m;
+                m << which
+                  << " does not lie where design_angle_deg = " << s.design_angle * 180.0 / M_PI
+                  << "° puts it: its vertex (" << x.x() << ", " << x.y() << ", " << x.z() << ") "
+                  << (off_page
+                          ? "would stand " + millimetres(std::abs(open.z())) +
+                                " off the page opened flat"
+                          : std::string("lies on the ") + (side > 0 ? "backdrop's" : "ground's") +
+                                " side of the central fold")
+                  << " (the ground lies on the x > 0 side)";
+                r.fail(DiagnosticCode::base_patch_misplaced, patch_subject(p) + ": " + m.str(),
+                       {{id}, std::string("design_angle"), std::nullopt});
+                return;
+            }
+        };
+        check_on_page(s.ground, ground_pose(s, M_PI), 1.0, "the ground");
+        check_on_page(s.backdrop, backdrop_pose(s, M_PI), -1.0, "the backdrop");
+    }
     if (!(s.paper_thickness >= 0.0 && s.paper_thickness < 0.05 * std::max(size, 1.0)))
         r.fail(DiagnosticCode::bad_paper_thickness,
                "paper thickness " + std::to_string(s.paper_thickness) +

@@ -118,7 +118,12 @@ struct Checker {
             const Vec3 hit = x_lo + (x_hi - x_lo) * (dlo / (dlo - dhi));
             const Pose& pj = lo.poses[j];
             const Vec2 q = s.patches[j].to_local(pj.rotation.transpose() * (hit - pj.translation));
-            if (point_in_polygon_or_near(s.patches[j].outer_local(), q, -tolerance))
+            // On the paper: inside the outline and out of every hole (a window it goes through).
+            const std::vector<Loop2> holes = s.patches[j].holes_local();
+            const bool in_window = std::any_of(holes.begin(), holes.end(), [&](const Loop2& h) {
+                return point_in_polygon_or_near(h, q, tolerance);
+            });
+            if (!in_window && point_in_polygon_or_near(s.patches[j].outer_local(), q, -tolerance))
                 return std::max(std::abs(da), std::abs(db));
         }
         return 0.0;

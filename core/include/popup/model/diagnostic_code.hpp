@@ -22,6 +22,8 @@ namespace popup {
     X(self_crossing_outline)                                                                       \
     X(hole_crosses_outline)                                                                        \
     X(hole_outside_outline)                                                                        \
+    X(holes_overlap)                                                                               \
+    X(base_patch_misplaced)                                                                        \
     X(missing_base_patch)                                                                          \
     X(bad_design_angle)                                                                            \
     X(bad_paper_thickness)                                                                         \
