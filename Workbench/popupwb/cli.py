@@ -21,6 +21,7 @@ import contextlib
 import json
 import math
 import os
+import re
 import sys
 
 from popupwb.printable import printable, printable_lines
@@ -45,7 +46,21 @@ class InputError(Exception):
     """Input the command cannot use; the message is the whole explanation (one line)."""
 
 
+# What argparse takes for a negative number, hence an option's value rather than an option: its own
+# pattern (-1, -.5) misses -1e-3, -inf and -nan, so `--kerf -inf` got "expected one argument"
+# instead of the option's range check.
+_NEGATIVE_NUMBER = re.compile(
+    r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^-(inf|infinity|nan)$", re.IGNORECASE
+)
+
+
 class _Parser(argparse.ArgumentParser):
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        # A private attribute of argparse (the same from Python 3.2 to 3.13); test_cli checks
+        # that negative values reach every float option.
+        self._negative_number_matcher = _NEGATIVE_NUMBER
+
     # argparse prints the usage and exits on a bad option; we want one line and our exit code.
     def error(self, message):
         raise InputError(f"{message} (see '{self.prog} --help')")
@@ -55,13 +70,34 @@ def _one_line(text):
     return "; ".join(line.strip() for line in str(text).splitlines() if line.strip())
 
 
-def _option_message(design, error):
-    """A layout error as one line, each finding led by the flag at fault (--tab-angle: ...)."""
-    findings = getattr(error, "diagnostics", None) or []
+def _flag_findings(findings):
+    """Option findings as one line, each led by the flag at fault (--tab-angle: ...); None when a
+    finding is not about a flag."""
     flags = {option.name: sheet_options.cli_flag(option) for option in sheet_options.SHEET_OPTIONS}
     if findings and all(d["parameter"] in flags for d in findings):
         return "; ".join(f"{flags[d['parameter']]}: {d['message']}" for d in findings)
-    return f"{design}: {_one_line(error)}"
+    return None
+
+
+def _option_message(design, error):
+    """A layout error as one line, each finding led by the flag at fault (--tab-angle: ...)."""
+    return _flag_findings(getattr(error, "diagnostics", None) or []) or (
+        f"{design}: {_one_line(error)}"
+    )
+
+
+def _check_sheet_options(options):
+    """The layout options' range errors, before the design is loaded and checked: a bad value
+    should not wait for them (the layout checks the same again)."""
+    ranged = {name: value for name, value in options.items() if name != "printed_sides"}
+    try:
+        sheet_options.parse_sides(options.get("printed_sides", []))
+    except ValueError as e:
+        raise InputError(f"--printed-side: {e}")
+    _import_core()
+    findings = sheet_options.core_options(**ranged).check()
+    if findings:
+        raise InputError(_flag_findings(findings) or "; ".join(d["message"] for d in findings))
 
 
 @contextlib.contextmanager
@@ -368,15 +404,18 @@ def _print_sheet_summary(report, paths, choice, not_valid):
 
 
 def cmd_sheet(args):
-    from popupwb.sheets.export import export_sheets, layout
-    from popupwb.sheets.not_valid_stamp import not_valid_of
-    from popupwb.sheets.paper_choice import layout_on_smallest_paper
-
     if args.paper is not None:  # before the slower steps: a typo should not wait for them
         try:
             _import_core().paper_size(args.paper)
         except ValueError as e:
             raise InputError(f"--paper {args.paper}: {_one_line(e)}")
+    _check_sheet_options(sheet_options.from_cli(args))
+    if os.path.exists(args.out) and not os.path.isdir(args.out):
+        raise InputError(f"--out {args.out}: is a file, not a folder")
+    from popupwb.sheets.export import export_sheets, layout
+    from popupwb.sheets.not_valid_stamp import not_valid_of
+    from popupwb.sheets.paper_choice import layout_on_smallest_paper
+
     popupcore, (design,) = load_designs(args.design, args.card, one=True)
     # Sheets are for valid designs: the check with `popup check`'s defaults comes first.
     validity = _check(popupcore, design, samples=181, clearance=0.0)
@@ -484,12 +523,12 @@ def _finite_or_none(value):
 
 
 def cmd_verify(args):
-    from popupwb.sheets.dxf_reader import DxfReadError, read_dxf, sheets_path
-
     if args.kerf is not None and (not math.isfinite(args.kerf) or args.kerf < 0):
         raise InputError(f"--kerf {args.kerf:g}: must be a finite length >= 0 mm")
     if not 2 <= args.angles <= MAX_VERIFY_ANGLES:
         raise InputError(f"--angles {args.angles}: must be 2 to {MAX_VERIFY_ANGLES}")
+    from popupwb.sheets.dxf_reader import DxfReadError, read_dxf, sheets_path
+
     # The sheets first: reading them is quick, and a wrong path should not wait for FreeCAD.
     try:
         dxf = sheets_path(args.sheets)

@@ -535,3 +535,38 @@ def test_a_utf16_design_is_named_as_such(tmp_path):
     path = tmp_path / "utf16.json"
     path.write_bytes(b"\xff\xfe" + text.encode("utf-16-le"))
     assert_clean_error(popup("check", str(path)), "utf16.json", "UTF-8 text", "\\xff")
+
+
+def float_options():
+    """(command, flag) of every float option of every popup command, read off the parser."""
+    import argparse
+
+    from popupwb import cli
+
+    parser = cli.build_parser()
+    (commands,) = [a for a in parser._actions if isinstance(a, argparse._SubParsersAction)]
+    return [
+        (name, action.option_strings[-1])
+        for name, sub in commands.choices.items()
+        for action in sub._actions
+        if action.type is float
+    ]
+
+
+def test_every_float_option_takes_negative_values():
+    """`--kerf -inf` got argparse's 'expected one argument': -inf, -nan and -1e-3 are values of
+    every float option, so the option's own range check names it."""
+    from popupwb import cli
+
+    options = float_options()
+    assert ("sheet", "--kerf") in options and ("check", "--clearance") in options
+    assert ("verify", "--kerf") in options and len(options) >= 11
+    positional = {"check": ["d"], "sheet": ["d", "--out", "o"], "verify": ["d", "s"]}
+    for command, flag in options:
+        for text in ("-inf", "-Infinity", "-nan", "-1e-3", "-2.5E+1", "-.5", "-7"):
+            args = cli.build_parser().parse_args([command, *positional[command], flag, text])
+            value = getattr(args, flag[2:].replace("-", "_"))
+            expected = float(text)
+            assert value == expected or (math.isnan(value) and math.isnan(expected)), (flag, text)
+    with pytest.raises(cli.InputError, match="expected one argument"):
+        cli.build_parser().parse_args(["sheet", "d", "--out", "o", "--kerf", "-x"])

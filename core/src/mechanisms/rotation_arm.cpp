@@ -26,11 +26,16 @@ Result<MechanismParts> add_rotation_arm(Scaffold& scaffold, const BasePatchPair&
     Result<MechanismParts> r;
     Diagnostics& e = r.diagnostics;
     check_flat_host(name, host, "a rotation arm", e);
-    if (!(p.spine > 0 && p.offset >= 0 && p.offset + p.spine <= host.length)) {
+    if (!(p.spine > 0 && p.spine <= host.length)) {
         std::ostringstream m;
-        m << "> 0 mm with Offset + Spine <= " << host.length << " mm (the length of " << host.name
-          << ")";
+        m << "> 0 and <= " << host.length << " mm (the length of " << host.name << ")";
         range_error(e, name, "Spine", p.spine, "mm", m.str());
+    } else if (!(p.offset >= 0 && p.offset + p.spine <= host.length)) {
+        // The spine fits: only Offset can be at fault, and its range exists.
+        std::ostringstream m;
+        m << ">= 0 and <= " << host.length - p.spine << " mm (" << host.name << " is "
+          << host.length << " mm long, the spine " << p.spine << " mm)";
+        range_error(e, name, "Offset", p.offset, "mm", m.str());
     }
     check_run(e, name, "Run", p.run, std::min(host.ground_depth, host.backdrop_depth),
               "ground and backdrop");

@@ -47,10 +47,12 @@ Result<MechanismParts> add_tent_fold(Scaffold& scaffold, const BasePatchPair& ho
         // The slopes meet above the feet when |s1 − s2| < |AD| < s1 + s2, s2 = a1 + s1 − a2.
         const double lowest =
             std::max((gap - p.foot + p.foot_backdrop) / 2, p.foot_backdrop - p.foot);
-        if (!(p.slope > lowest && std::isfinite(p.slope))) {
+        if (!(p.slope > lowest && p.slope <= 2000)) {
+            // 2000 mm: the bound of every mechanism's height (a 1e300 mm slope passed and made
+            // the slopes degenerate, an error that could not name Slope).
             std::ostringstream m;
             m << "> " << lowest << " mm so both slopes reach the apex (the backdrop slope is "
-              << "Foot + Slope − FootBackdrop)";
+              << "Foot + Slope − FootBackdrop) and <= 2000 mm";
             range_error(e, name, "Slope", p.slope, "mm", m.str());
         } else if (!(std::abs(p.foot - p.foot_backdrop) < gap)) {
             range_error(e, name, "FootBackdrop", p.foot_backdrop, "mm",

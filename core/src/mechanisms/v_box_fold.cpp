@@ -27,6 +27,10 @@ Result<MechanismParts> add_vertical_translation(Scaffold& scaffold, const BasePa
     return add_v_box_fold(scaffold, host, params, name);
 }
 
+namespace {
+constexpr double min_crease = 1.0; // mm: the shortest crease of the top paper can fold along
+} // namespace
+
 Result<MechanismParts> add_v_box_fold(Scaffold& scaffold, const BasePatchPair& host,
                                       const VBoxFoldParams& p, const std::string& name)
 {
@@ -35,14 +39,33 @@ Result<MechanismParts> add_v_box_fold(Scaffold& scaffold, const BasePatchPair& h
     check_flat_host(name, host, "a v-box", e);
     if (!(p.wall_angle > 0 && p.wall_angle < M_PI / 2))
         range_error(e, name, "WallAngle", p.wall_angle * 180 / M_PI, "°", "> 0° and < 90°");
+    else if (2 * p.side > min_crease && !(2 * p.side * std::cos(p.wall_angle) >= min_crease)) {
+        // Near 90° the top's crease (2·Side·cos WallAngle) vanishes: name WallAngle and its
+        // bound, not a fold "shorter than" a tolerance.
+        std::ostringstream m;
+        m << "> 0° and <= " << std::acos(min_crease / (2 * p.side)) * 180 / M_PI << "° at Side "
+          << p.side << " mm (the top's crease, 2·Side·cos(WallAngle), at least " << min_crease
+          << " mm)";
+        range_error(e, name, "WallAngle", p.wall_angle * 180 / M_PI, "°", m.str());
+    }
     if (!(p.height > 0 && p.height <= 2000))
         range_error(e, name, "Height", p.height, "mm", "> 0 and <= 2000 mm");
     if (e.empty()) {
+        // The walls reach Side·sin(WallAngle) into the host's depth and the v-box runs
+        // 2·Side·cos(WallAngle) along its hinge: both bound Side, so a Side too long for the
+        // hinge is named as Side, never as an Offset range that does not exist.
         const double reach = p.side * std::sin(p.wall_angle);
+        const double length = 2 * p.side * std::cos(p.wall_angle);
         const double depth = std::min(host.ground_depth, host.backdrop_depth);
-        if (!(p.side > 0 && reach < depth)) {
+        if (!(p.side > 0 && reach < depth && length <= host.length)) {
+            const double by_depth = depth / std::sin(p.wall_angle);
+            const double by_length = host.length / (2 * std::cos(p.wall_angle));
             std::ostringstream m;
-            m << "> 0 mm with Side·sin(WallAngle) < " << depth << " mm (the host's depth)";
+            m << "> 0 and " << (by_length < by_depth ? "<= " : "< ")
+              << std::min(by_depth, by_length) << " mm at WallAngle " << p.wall_angle * 180 / M_PI
+              << "° (Side·sin(WallAngle) < " << depth << " mm, the host's depth, and "
+              << "2·Side·cos(WallAngle) <= " << host.length << " mm, the length of " << host.name
+              << ")";
             range_error(e, name, "Side", p.side, "mm", m.str());
         }
     }

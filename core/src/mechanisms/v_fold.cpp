@@ -87,10 +87,27 @@ Result<MechanismParts> add_v_fold(Scaffold& scaffold, const BasePatchPair& host,
         const double hi =
             std::max({0.0, p.run * std::cos(p.hinge_angle), p.spine * std::cos(p.spine_angle)});
         std::ostringstream m;
-        m << ">= " << -lo << " mm and <= " << host.length - hi << " mm (the v-fold spans "
-          << hi - lo << " mm of " << host.name << ")";
-        if (!(p.offset + lo >= 0 && p.offset + hi <= host.length))
+        if (hi - lo > host.length) {
+            // No Offset can help: name the part that makes the v-fold too long, with its bound
+            // (Run·cos HingeAngle and Spine·cos SpineAngle add up when they point opposite ways).
+            const double rc = p.run * std::cos(p.hinge_angle);
+            const double sc = p.spine * std::cos(p.spine_angle);
+            const bool run = std::abs(rc) >= std::abs(sc); // the longer part along the hinge
+            const double part_cos = std::abs(std::cos(run ? p.hinge_angle : p.spine_angle));
+            const double other = rc * sc < 0 ? std::abs(run ? sc : rc) : 0.0;
+            const bool alone = host.length - other <= 0; // the other part must shrink too
+            m << "> 0 and <= " << (alone ? host.length : host.length - other) / part_cos
+              << " mm at " << (run ? "HingeAngle " : "SpineAngle ")
+              << (run ? p.hinge_angle : p.spine_angle) * deg << "°"
+              << (alone ? (run ? ", with Spine shorter too" : ", with Run shorter too") : "")
+              << " (the v-fold would span " << hi - lo << " mm along " << host.name << ", which is "
+              << host.length << " mm long)";
+            range_error(e, name, run ? "Run" : "Spine", run ? p.run : p.spine, "mm", m.str());
+        } else if (!(p.offset + lo >= 0 && p.offset + hi <= host.length)) {
+            m << ">= " << -lo << " mm and <= " << host.length - hi << " mm (the v-fold spans "
+              << hi - lo << " mm of " << host.name << ")";
             range_error(e, name, "Offset", p.offset, "mm", m.str());
+        }
     }
     if (!e.empty()) {
         r.ok = false;

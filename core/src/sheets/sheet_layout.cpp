@@ -147,15 +147,26 @@ const char* to_string(PrintedSide side)
 Diagnostics check_sheet_options(const SheetOptions& o)
 {
     Diagnostics e;
+    // A range that depends on another option is stated with that option's value only when the
+    // value is itself in range: "at most tab_width = -inf mm" names a range that does not exist.
     check_range(e, "kerf", o.kerf, 0.0, 2.0, "0 to 2 mm");
     check_range(e, "min_gap", o.min_gap, 0.0, 50.0, "0 to 50 mm");
-    check_range(e, "spacing", o.nest.spacing, o.kerf + o.min_gap, 100.0,
-                "at least kerf + min_gap = " + number(o.kerf + o.min_gap) + " mm, at most 100 mm");
+    if (e.empty())
+        check_range(e, "spacing", o.nest.spacing, o.kerf + o.min_gap, 100.0,
+                    "at least kerf + min_gap = " + number(o.kerf + o.min_gap) +
+                        " mm, at most 100 mm");
+    else
+        check_range(e, "spacing", o.nest.spacing, 0.0, 100.0,
+                    "at least kerf + min_gap, at most 100 mm");
     check_range(e, "margin", o.nest.margin, 0.0, 100.0, "0 to 100 mm");
     check_range(e, "tab_width", o.tab_width, 0.0, 50.0, "more than 0, at most 50 mm", true);
     check_range(e, "tab_angle", o.tab_angle, 0.0, 90.0, "more than 0, at most 90°", true);
-    check_range(e, "min_tab_width", o.min_tab_width, 0.0, o.tab_width,
-                "more than 0, at most tab_width = " + number(o.tab_width) + " mm", true);
+    if (o.tab_width > 0 && o.tab_width <= 50.0)
+        check_range(e, "min_tab_width", o.min_tab_width, 0.0, o.tab_width,
+                    "more than 0, at most tab_width = " + number(o.tab_width) + " mm", true);
+    else
+        check_range(e, "min_tab_width", o.min_tab_width, 0.0, 50.0,
+                    "more than 0, at most tab_width", true);
     check_range(e, "min_feature", o.min_feature, 0.0, 50.0, "0 to 50 mm");
     check_range(e, "min_corner_angle", o.min_corner_angle, 0.0, 90.0, "0 to 90°");
     check_range(e, "round_trip_angles", o.round_trip_angles, 2, 361, "2 to 361");

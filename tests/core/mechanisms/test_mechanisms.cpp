@@ -389,15 +389,35 @@ TEST(Generators, ParametersThatMakeAPartVanishAreTheMechanismsError)
     const Result<MechanismParts> huge = add_tent_fold(s, central_fold(s), tent, "Tent");
     ASSERT_FALSE(huge.ok);
     EXPECT_EQ(huge.diagnostics.front().code, DiagnosticCode::bad_parameter);
-    EXPECT_EQ(huge.diagnostics.front().message.rfind("Tent: ", 0), 0u);
+    EXPECT_EQ(huge.diagnostics.front().message.rfind("Tent: Slope = 1e+300 mm, must be > ", 0), 0u)
+        << huge.diagnostics.front().message;
     VBoxFoldParams vbox;
     vbox.offset = 60;
     vbox.wall_angle = (90.0 - 1e-3) * M_PI / 180.0;
     const Result<MechanismParts> thin = add_v_box_fold(s, central_fold(s), vbox, "VBox");
     ASSERT_FALSE(thin.ok);
-    EXPECT_NE(thin.diagnostics.front().message.find("VBox: these parameters make fold"),
-              std::string::npos)
+    // Both name their property and a range that exists.
+    EXPECT_EQ(thin.diagnostics.front().message.rfind(
+                  "VBox: WallAngle = 89.999 °, must be > 0° and <= 89.28", 0),
+              0u)
         << thin.diagnostics.front().message;
     EXPECT_EQ(s.patches.size(), patches);
     EXPECT_EQ(s.hinges.size(), hinges);
+}
+
+TEST(Generators, APartTooLongForItsHostIsNamedNotAnOffsetRangeThatDoesNotExist)
+{
+    // A v-box 2·Side·cos(WallAngle) long on a shorter fold: no Offset fits, so Side is at fault.
+    Scaffold s = fixtures::generator_card(200, 300);
+    const BasePatchPair fold = central_fold(s);
+    VBoxFoldParams v;
+    v.offset = 20;
+    v.wall_angle = M_PI / 4;
+    v.side = 200; // reaches 141 mm into the 300 mm pages, but runs 283 mm along the 200 mm fold
+    const Result<MechanismParts> mover = add_vertical_translation(s, fold, v, "Mover");
+    ASSERT_FALSE(mover.ok);
+    const std::string& message = mover.diagnostics.front().message;
+    EXPECT_EQ(message.rfind("Mover: Side = ", 0), 0u) << message;
+    EXPECT_EQ(message.find("Offset"), std::string::npos) << message;
+    EXPECT_EQ(mover.diagnostics.front().parameter, "Side");
 }
