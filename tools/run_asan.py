@@ -18,6 +18,9 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SANITIZE = "-fsanitize=address,undefined -fno-omit-frame-pointer"
+# GCC's -Wmaybe-uninitialized misfires in CGAL's headers once ASan instruments them
+# (CGAL/Epic_converter.h): a warning here, an error in the normal build.
+NO_ERROR = "-Wno-error=maybe-uninitialized"
 REPORT = re.compile(
     r"ERROR: (?:AddressSanitizer|LeakSanitizer)[^\n]*|^[^\n]*runtime error:[^\n]*", re.M
 )
@@ -29,25 +32,24 @@ def run(command, **kwargs):
 
 
 def build(build_dir, jobs):
-    if not os.path.exists(os.path.join(build_dir, "CMakeCache.txt")):
-        status = run(
-            [
-                "cmake",
-                "-S",
-                ROOT,
-                "-B",
-                build_dir,
-                "-DCMAKE_BUILD_TYPE=None",
-                f"-DCMAKE_CXX_FLAGS=-O1 -g {SANITIZE}",
-                f"-DCMAKE_EXE_LINKER_FLAGS={SANITIZE}",
-                f"-DCMAKE_SHARED_LINKER_FLAGS={SANITIZE}",
-                f"-DCMAKE_MODULE_LINKER_FLAGS={SANITIZE}",
-                "-DPython3_EXECUTABLE=/usr/bin/python3",
-                "-DPOPUP_FUZZERS=OFF",
-            ]
-        )
-        if status:
-            sys.exit("run_asan: configure failed")
+    status = run(
+        [
+            "cmake",
+            "-S",
+            ROOT,
+            "-B",
+            build_dir,
+            "-DCMAKE_BUILD_TYPE=None",
+            f"-DCMAKE_CXX_FLAGS=-O1 -g {SANITIZE} {NO_ERROR}",
+            f"-DCMAKE_EXE_LINKER_FLAGS={SANITIZE}",
+            f"-DCMAKE_SHARED_LINKER_FLAGS={SANITIZE}",
+            f"-DCMAKE_MODULE_LINKER_FLAGS={SANITIZE}",
+            "-DPython3_EXECUTABLE=/usr/bin/python3",
+            "-DPOPUP_FUZZERS=OFF",
+        ]
+    )
+    if status:
+        sys.exit("run_asan: configure failed")
     targets = ["popup_core_tests", "popupcore", "popup_write_samples"]
     if run(["cmake", "--build", build_dir, "-j", str(jobs), "--target"] + targets):
         sys.exit("run_asan: build failed")
