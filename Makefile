@@ -1,5 +1,7 @@
 # Thin driver: Debian packages, CMake build, ctest, demo, benchmarks, formatting.
 BUILD   ?= build
+ASAN_BUILD ?= build-asan
+FUZZ_SECONDS ?= 60
 PYTHON  := /usr/bin/python3
 JOBS    ?= $(shell nproc)
 SUDO    := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
@@ -10,9 +12,9 @@ DEBS := cmake make g++ pkg-config freecad \
 	libcgal-dev libboost-dev libeigen3-dev pybind11-dev python3-dev nlohmann-json3-dev libassimp-dev \
 	python3-ezdxf python3-pytest python3-numpy libgtest-dev libbenchmark-dev \
 	libpolyclipping-dev python3-svgwrite python3-reportlab python3-matplotlib python3-pypdf librecad \
-	xvfb xauth clang-format black patch
+	xvfb xauth clang-format black patch clang-14 libclang-rt-14-dev llvm-14
 
-.PHONY: all deps build test demo bench lint format install install-dev clean
+.PHONY: all deps build test demo bench lint format install install-dev clean fuzz asan
 
 all: build
 
@@ -45,6 +47,17 @@ bench: build
 	  $(PYTHON) bench/freecad_recompute_bench.py
 	POPUP_BUILD_DIR=$(CURDIR)/$(BUILD) $(PYTHON) bench/sheets_bench.py
 
+# libFuzzer targets (fuzz/, docs/RELIABILITY.md): FUZZ_SECONDS per target, corpora kept in
+# $(BUILD)/fuzz-work between runs.
+fuzz: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS) --target popup_fuzzers
+	$(PYTHON) fuzz/run_fuzzers.py --build-dir $(BUILD)/fuzz --work $(BUILD)/fuzz-work \
+	  --seconds $(FUZZ_SECONDS)
+
+# The core, the bindings and the C++ and Python suites under ASan + UBSan (docs/RELIABILITY.md).
+asan: deps
+	$(PYTHON) tools/run_asan.py --build $(ASAN_BUILD) --jobs $(JOBS)
+
 lint: deps
 	clang-format --dry-run --Werror $$(git ls-files '*.cpp' '*.hpp')
 	black --check -l 100 -q $$(git ls-files '*.py')
@@ -62,4 +75,4 @@ install: build install-dev
 	ln -sfn $(CURDIR)/$(BUILD)/bin/popup $(HOME)/.local/bin/popup
 
 clean:
-	rm -rf $(BUILD) out
+	rm -rf $(BUILD) $(ASAN_BUILD) out
