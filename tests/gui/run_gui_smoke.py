@@ -362,7 +362,7 @@ def legacy_documents():
             "view_providers": [type(o.ViewObject.Proxy).__name__ for o in objects],
             "icons": [os.path.basename(o.ViewObject.Proxy.getIcon()) for o in objects],
             "coloured": coloured,
-            "states": sorted(set(s for o in objects for s in o.State)),
+            "states": sorted(set(s for o in objects for s in o.State if s != "Expanded")),
         }
         FreeCAD.closeDocument(doc.Name)
 
@@ -551,9 +551,12 @@ def check_mechanisms(check, m):
     for command in ["PopUp_VFold", "PopUp_VBoxFold"]:
         check(f"{command} built on the selected card", m.get(command) is True)
     states = m.get("states") or {}
+    # "Expanded" is the tree item's state (the tree opens a card's children when a mechanism is
+    # added under a busy event loop), not a recompute state.
+    recomputed = {name: [s for s in state if s != "Expanded"] for name, state in states.items()}
     check(
         "every feature recomputed",
-        len(states) == 7 and all(s == ["Up-to-date"] for s in states.values()),
+        len(states) == 7 and all(s == ["Up-to-date"] for s in recomputed.values()),
         states,
     )
     faces = m.get("faces") or {}
