@@ -51,7 +51,7 @@ bench: build
 # $(BUILD)/fuzz-work between runs.
 fuzz: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS) --target popup_fuzzers
-	$(PYTHON) fuzz/run_fuzzers.py --build-dir $(BUILD)/fuzz --work $(BUILD)/fuzz-work \
+	$(PYTHON) fuzz/run_fuzzers.py --build-dir $(BUILD)/fuzzers --work $(BUILD)/fuzz-work \
 	  --seconds $(FUZZ_SECONDS)
 
 # The core, the bindings and the C++ and Python suites under ASan + UBSan (docs/RELIABILITY.md).
