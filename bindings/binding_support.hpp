@@ -1,5 +1,6 @@
 #pragma once
 // Shared by the binding files: how core results with diagnostics become Python errors.
+#include <map>
 #include <sstream>
 #include <stdexcept>
 
@@ -7,6 +8,7 @@
 #include <pybind11/stl.h>
 
 #include "popup/model/result.hpp"
+#include "popup/sheets/sheet_layout.hpp"
 
 namespace popup::bindings {
 
@@ -52,6 +54,22 @@ template <class T> T unwrap(Result<T> r)
     if (!r.ok)
         throw DesignFailure(std::move(r.diagnostics));
     return std::move(r.value);
+}
+
+/// {piece id: "front" or "back"} as the core's printed sides; anything else is a named error.
+inline std::map<std::string, PrintedSide>
+printed_sides_from(const std::map<std::string, std::string>& sides)
+{
+    std::map<std::string, PrintedSide> chosen;
+    for (const auto& [id, side] : sides) {
+        if (side != "front" && side != "back")
+            throw DesignFailure({Diagnostic::error(DiagnosticCode::bad_option,
+                                                   "printed side of " + id + " = '" + side +
+                                                       "', must be front or back",
+                                                   about_parameter("printed_sides"))});
+        chosen[id] = side == "back" ? PrintedSide::back : PrintedSide::front;
+    }
+    return chosen;
 }
 
 } // namespace popup::bindings

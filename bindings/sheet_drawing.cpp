@@ -113,14 +113,7 @@ void bind_sheet_drawing(py::module_& m)
            const std::map<std::string, std::string>& printed_sides, int angles) {
             VerifyOptions options;
             options.angles = angles;
-            for (const auto& [id, side] : printed_sides) {
-                if (side != "front" && side != "back")
-                    throw bindings::DesignFailure({Diagnostic::error(
-                        DiagnosticCode::bad_option,
-                        "printed side of " + id + " = '" + side + "', must be front or back",
-                        about_parameter("printed_sides"))});
-                options.printed_sides[id] = side == "back" ? PrintedSide::back : PrintedSide::front;
-            }
+            options.printed_sides = bindings::printed_sides_from(printed_sides);
             Result<RoundTrip> r;
             {
                 py::gil_scoped_release release;

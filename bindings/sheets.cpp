@@ -62,16 +62,7 @@ void bind_sheets(py::module_& m)
                 return sides;
             },
             [](SheetOptions& o, const std::map<std::string, std::string>& sides) {
-                std::map<std::string, PrintedSide> chosen;
-                for (const auto& [id, side] : sides) {
-                    if (side != "front" && side != "back")
-                        throw bindings::DesignFailure({Diagnostic::error(
-                            DiagnosticCode::bad_option,
-                            "printed side of " + id + " = '" + side + "', must be front or back",
-                            about_parameter("printed_sides"))});
-                    chosen[id] = side == "back" ? PrintedSide::back : PrintedSide::front;
-                }
-                o.printed_sides = chosen;
+                o.printed_sides = bindings::printed_sides_from(sides);
             },
             "{piece id: 'front' or 'back'}: the side each piece's artwork is printed on")
         .def(

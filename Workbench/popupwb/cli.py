@@ -25,6 +25,7 @@ import re
 import sys
 
 from popupwb.printable import printable, printable_lines
+from popupwb.readable_file import unreadable
 from popupwb.sheets import sheet_options
 
 EXIT_VALID = 0
@@ -288,12 +289,9 @@ def is_document(path):
 def load_designs(path, card=None, one=False):
     """(popupcore, [Design]) for a .json path (one design) or an .FCStd path (each Scaffold and
     PopUpCard, or the one named `card`; with `one`, several are an InputError)."""
-    if not os.path.exists(path):
-        raise InputError(f"{path}: no such file")
-    if not os.path.isfile(path):
-        raise InputError(f"{path}: not a file")
-    if not os.access(path, os.R_OK):
-        raise InputError(f"{path}: not readable (permission denied)")
+    why = unreadable(path)
+    if why:
+        raise InputError(why)
     if card is not None and not is_document(path):
         raise InputError(f"--card {card}: only for FreeCAD documents (.FCStd), not {path}")
     popupcore = _import_core()

@@ -36,6 +36,8 @@ from typing import List, Optional, Tuple
 import ezdxf
 from ezdxf.math import Vec3
 
+from popupwb.readable_file import unreadable
+
 from .dxf_writer import KERF_PROPERTY
 from .layer_style import SheetStyle
 
@@ -124,12 +126,9 @@ def read_dxf(path, kerf=None, style=None):
 
 
 def _open(path):
-    if not os.path.exists(path):
-        raise DxfReadError(f"{path}: no such file")
-    if not os.path.isfile(path):
-        raise DxfReadError(f"{path}: not a file")
-    if not os.access(path, os.R_OK):
-        raise DxfReadError(f"{path}: not readable (permission denied)")
+    why = unreadable(path)
+    if why:
+        raise DxfReadError(why)
     try:
         return ezdxf.readfile(path)
     except Exception as e:  # ezdxf raises structure, encoding and value errors of every kind

@@ -10,6 +10,7 @@
 
 #include "../geometry/loop_crossings.hpp"
 #include "../geometry/polygon_2d.hpp"
+#include "millimetres.hpp"
 
 namespace popup {
 
@@ -102,14 +103,6 @@ std::vector<const Loop3*> loops_of(const Patch& p)
     for (const Loop3& h : p.holes)
         loops.push_back(&h);
     return loops;
-}
-
-std::string millimetres(double value)
-{
-    std::ostringstream s;
-    s.precision(4);
-    s << value << " mm";
-    return s.str();
 }
 
 // "(x, y, z)" of a point in the patch's own frame, in world coordinates.

@@ -54,4 +54,16 @@ double loop_area(const Loop2& loop)
     return 0.5 * twice;
 }
 
+void collect_regions(const ClipperLib::PolyNode& node, std::vector<Region>& regions)
+{
+    for (const ClipperLib::PolyNode* outer : node.Childs) {
+        Region region{to_loop(outer->Contour), {}};
+        for (const ClipperLib::PolyNode* hole : outer->Childs) {
+            region.holes.push_back(to_loop(hole->Contour));
+            collect_regions(*hole, regions);
+        }
+        regions.push_back(std::move(region));
+    }
+}
+
 } // namespace popup::sheets

@@ -2,7 +2,9 @@
 // The few polygon set operations the layout needs, on millimetre loops through Clipper.
 #include <vector>
 
-#include "popup/model/patch.hpp"
+#include <polyclipping/clipper.hpp>
+
+#include "popup/sheets/sheet_layout.hpp"
 
 namespace popup::sheets {
 
@@ -14,5 +16,9 @@ double overlap_area(const std::vector<Loop2>& a, const std::vector<Loop2>& b);
 double area_outside(const Loop2& a, const Loop2& outer, const std::vector<Loop2>& holes);
 
 double loop_area(const Loop2& loop); ///< signed, counter-clockwise positive
+
+/// Every outline of a Clipper result with its holes; islands inside holes are regions of their
+/// own. Appended to `regions`.
+void collect_regions(const ClipperLib::PolyNode& node, std::vector<Region>& regions);
 
 } // namespace popup::sheets

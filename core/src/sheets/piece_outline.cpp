@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "../geometry/clipper_paths.hpp"
+#include "clipper_ops.hpp"
 
 namespace popup::sheets {
 
@@ -14,18 +15,6 @@ using ClipperLib::Paths;
 
 constexpr double miter_limit = 8.0; // keeps tab and card corners sharp under the kerf offset
 constexpr double hairline = 1e-4;   // mm: gaps this narrow between a piece's parts are rounding
-
-void collect(const ClipperLib::PolyNode& node, std::vector<Region>& regions)
-{
-    for (const ClipperLib::PolyNode* outer : node.Childs) {
-        Region region{to_loop(outer->Contour), {}};
-        for (const ClipperLib::PolyNode* hole : outer->Childs) {
-            region.holes.push_back(to_loop(hole->Contour));
-            collect(*hole, regions); // islands inside holes are regions of their own
-        }
-        regions.push_back(std::move(region));
-    }
-}
 
 Paths region_paths(const std::vector<Region>& regions)
 {
@@ -54,7 +43,7 @@ std::vector<Region> offset(const Paths& paths, double distance)
     ClipperLib::PolyTree tree;
     offsetter.Execute(tree, distance * clipper_scale);
     std::vector<Region> regions;
-    collect(tree, regions);
+    collect_regions(tree, regions);
     return regions;
 }
 
@@ -139,7 +128,7 @@ void cut_outline(LocalPiece& piece, double kerf)
     ClipperLib::PolyTree tree;
     clipper.Execute(ClipperLib::ctDifference, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
     piece.cut_nominal.clear();
-    collect(tree, piece.cut_nominal);
+    collect_regions(tree, piece.cut_nominal);
     piece.cut = kerf > 0 ? offset(region_paths(piece.cut_nominal), 0.5 * kerf) : piece.cut_nominal;
 }
 

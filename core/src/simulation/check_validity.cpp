@@ -7,6 +7,7 @@
 
 #include "../geometry/indexed_loops.hpp"
 #include "../geometry/polygon_2d.hpp"
+#include "../model/millimetres.hpp"
 #include "body_graph.hpp"
 #include "crossing_test.hpp"
 #include "fold_solver.hpp"
@@ -22,14 +23,6 @@ std::string deg(double radians)
     s.setf(std::ios::fixed);
     s.precision(2);
     s << radians * 180.0 / M_PI << "°";
-    return s.str();
-}
-
-std::string mm(double value)
-{
-    std::ostringstream s;
-    s.precision(4);
-    s << value << " mm";
     return s.str();
 }
 
@@ -244,9 +237,9 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
                 }
         if (report.flatness_at_zero > flat_tolerance)
             add(DiagnosticCode::not_flat_when_closed,
-                describe(s.patches[worst]) + " stands " + mm(report.flatness_at_zero) +
-                    " off the page plane when the card is closed (allowed " + mm(flat_tolerance) +
-                    ")",
+                describe(s.patches[worst]) + " stands " + millimetres(report.flatness_at_zero) +
+                    " off the page plane when the card is closed (allowed " +
+                    millimetres(flat_tolerance) + ")",
                 about_patches({s.patches[worst].id}, 0.0));
     }
     const bool branch_ok =
@@ -319,7 +312,7 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
         report.crossings.push_back({a.id, b.id, f.angle, f.depth});
         add(DiagnosticCode::intersection,
             describe(a) + " passes through " + describe(b) + " from " + deg(f.angle) +
-                " (deepest " + mm(f.depth) + ")",
+                " (deepest " + millimetres(f.depth) + ")",
             about_patches({a.id, b.id}, f.angle * 180.0 / M_PI));
     }
     report.intersection_free = findings.empty() && !sweep.states.empty();
@@ -354,8 +347,9 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
             if (worst > flat_tolerance) {
                 report.enclosed = false;
                 std::ostringstream m;
-                m << describe(s.patches[i]) << " sticks out of the closed card by " << mm(worst)
-                  << " at y = " << where.x() << " mm, z = " << where.y() << " mm";
+                m << describe(s.patches[i]) << " sticks out of the closed card by "
+                  << millimetres(worst) << " at y = " << where.x() << " mm, z = " << where.y()
+                  << " mm";
                 add(DiagnosticCode::not_enclosed, m.str(), about_patches({s.patches[i].id}, 0.0));
             }
         }

@@ -31,18 +31,6 @@ std::string where(const Vec2& p)
     return s.str();
 }
 
-void collect(const ClipperLib::PolyNode& node, std::vector<Region>& regions)
-{
-    for (const ClipperLib::PolyNode* outer : node.Childs) {
-        Region region{to_loop(outer->Contour), {}};
-        for (const ClipperLib::PolyNode* hole : outer->Childs) {
-            region.holes.push_back(to_loop(hole->Contour));
-            collect(*hole, regions);
-        }
-        regions.push_back(std::move(region));
-    }
-}
-
 Paths region_paths(const Region& r)
 {
     Paths paths{to_path(r.outer)};
@@ -66,7 +54,7 @@ std::vector<Region> nominal_regions(const std::vector<Loop2>& cut, double kerf)
     ClipperLib::PolyTree tree;
     offsetter.Execute(tree, -0.5 * kerf * clipper_scale);
     std::vector<Region> regions;
-    collect(tree, regions);
+    collect_regions(tree, regions);
     return regions;
 }
 
@@ -113,7 +101,7 @@ std::vector<Region> split_faces(const Region& outline, const std::vector<DrawnFo
     ClipperLib::PolyTree tree;
     clipper.Execute(ClipperLib::ctDifference, tree, ClipperLib::pftEvenOdd, ClipperLib::pftNonZero);
     std::vector<Region> faces;
-    collect(tree, faces);
+    collect_regions(tree, faces);
     auto snap = [&](Vec2& p) {
         for (const DrawnFold& f : folds) {
             if (distance_to_segment(p, f.from, f.to) > 3 * slit_half)

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "../../geometry/polygon_2d.hpp"
+#include "../clipper_ops.hpp"
 
 namespace popup::sheets {
 
@@ -162,11 +163,7 @@ std::vector<Registration> register_piece(const std::vector<Loop2>& patches,
     // Faces are whole patches (tabs are faces of their own), so a drawn face and the design
     // patch it is have edges of the same lengths once collinear corners (a tab's foot) go.
     auto straight = [](Loop2 loop) {
-        double twice_area = 0.0; // counter-clockwise, so that edges pair up in the same sense
-        for (size_t i = 0; i < loop.size(); ++i)
-            twice_area += loop[i].x() * loop[(i + 1) % loop.size()].y() -
-                          loop[i].y() * loop[(i + 1) % loop.size()].x();
-        if (twice_area < 0)
+        if (loop_area(loop) < 0) // counter-clockwise, so that edges pair up in the same sense
             std::reverse(loop.begin(), loop.end());
         Loop2 out;
         for (size_t i = 0; i < loop.size(); ++i) {
@@ -179,14 +176,7 @@ std::vector<Registration> register_piece(const std::vector<Loop2>& patches,
         }
         return out;
     };
-    auto area = [](const Loop2& loop) {
-        double a = 0.0;
-        for (size_t i = 0; i < loop.size(); ++i) {
-            const Vec2 &p = loop[i], &q = loop[(i + 1) % loop.size()];
-            a += p.x() * q.y() - p.y() * q.x();
-        }
-        return 0.5 * std::abs(a);
-    };
+    auto area = [](const Loop2& loop) { return std::abs(loop_area(loop)); };
     std::vector<const Region*> faces;
     for (const Region& f : drawn.faces)
         faces.push_back(&f);

@@ -9,7 +9,9 @@
 
 #include "../../geometry/clipper_paths.hpp"
 #include "../../geometry/polygon_2d.hpp"
+#include "../../model/millimetres.hpp"
 #include "../assembly_order.hpp"
+#include "../clipper_ops.hpp"
 #include "../fold_directions.hpp"
 #include "../local_piece.hpp"
 #include "drawn_piece.hpp"
@@ -24,14 +26,6 @@ using namespace sheets;
 namespace {
 
 constexpr double side_step = 1e-4; // mm beside a fold line: a point in the face on either side
-
-std::string mm(double value)
-{
-    std::ostringstream s;
-    s.precision(3);
-    s << value << " mm";
-    return s.str();
-}
 
 std::string at(const Vec2& p)
 {
@@ -152,6 +146,21 @@ std::pair<int, int> sides(const DrawnPiece& piece, const DrawnFold& f)
     return found;
 }
 
+// A drawn line with a patch's face on one side and a face that is no patch on the other is the
+// crease of a tab: that patch and the tab's face, or -1s. `patch_of` maps a face (or -1) to its
+// patch (or -1).
+template <class PatchOf>
+std::pair<int, int> tab_crease(const DrawnPiece& piece, const DrawnFold& f, PatchOf patch_of)
+{
+    const auto [left, right] = sides(piece, f);
+    const int pl = patch_of(left), pr = patch_of(right);
+    if (pl >= 0 && pr < 0)
+        return {pl, right};
+    if (pr >= 0 && pl < 0)
+        return {pr, left};
+    return {-1, -1};
+}
+
 std::vector<Region> union_of(const LocalPiece& local)
 {
     ClipperLib::Clipper clipper;
@@ -163,12 +172,7 @@ std::vector<Region> union_of(const LocalPiece& local)
     ClipperLib::PolyTree tree;
     clipper.Execute(ClipperLib::ctDifference, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
     std::vector<Region> regions;
-    for (const ClipperLib::PolyNode* outer : tree.Childs) {
-        Region r{to_loop(outer->Contour), {}};
-        for (const ClipperLib::PolyNode* hole : outer->Childs)
-            r.holes.push_back(to_loop(hole->Contour));
-        regions.push_back(std::move(r));
-    }
+    collect_regions(tree, regions);
     return regions;
 }
 
@@ -316,7 +320,7 @@ void Verifier::match(const std::vector<DrawnPiece>& drawn)
         const DrawnPiece& d = *piece.drawn;
         if (piece.placed.outline_error > tol_)
             error(DiagnosticCode::outline_mismatch,
-                  piece.id + ": its cut outline is " + mm(piece.placed.outline_error) +
+                  piece.id + ": its cut outline is " + millimetres(piece.placed.outline_error) +
                       " off the design's (farthest at " + at(piece.placed.outline_worst) + " on " +
                       d.drawing + ")",
                   local.flat.patches);
@@ -400,7 +404,7 @@ void Verifier::check_folds(PieceCheck& piece)
         piece.folds_used.insert(best);
         if (gap > tol_)
             error(DiagnosticCode::fold_misplaced,
-                  what + " is drawn " + mm(gap) + " off the design's crease",
+                  what + " is drawn " + millimetres(gap) + " off the design's crease",
                   {h.patch_a, h.patch_b});
         bool unspecified = false;
         const FoldDirection expected =
@@ -454,10 +458,9 @@ void Verifier::check_tabs()
         for (size_t f = 0; f < d.folds.size(); ++f) {
             if (piece.folds_used.count(int(f)))
                 continue;
-            const auto [left, right] = sides(d, d.folds[f]);
-            const int pl = left >= 0 ? piece.patch_of_face(left) : -1;
-            const int pr = right >= 0 ? piece.patch_of_face(right) : -1;
-            const int tab_face = pl >= 0 && pr < 0 ? right : pr >= 0 && pl < 0 ? left : -1;
+            const auto [patch, tab_face] = tab_crease(d, d.folds[f], [&](int face) {
+                return face >= 0 ? piece.patch_of_face(face) : -1;
+            });
             if (tab_face < 0) {
                 const DrawnFold& line = d.folds[f];
                 error(DiagnosticCode::fold_extra,
@@ -466,7 +469,6 @@ void Verifier::check_tabs()
                       piece.local.flat.patches);
                 continue;
             }
-            const int patch = pl >= 0 ? pl : pr;
             // Its code: a text on the tab that some glue area carries.
             std::string code;
             for (const DrawnText& t : d.texts)
@@ -515,7 +517,7 @@ void Verifier::check_tabs()
             if (gap > tol_)
                 error(DiagnosticCode::fold_misplaced,
                       piece.id + ": the tab crease on patch " + patch_name(s_, patch) + " (hinge " +
-                          std::to_string(h.id) + ") is drawn " + mm(gap) +
+                          std::to_string(h.id) + ") is drawn " + millimetres(gap) +
                           " off the design's joint",
                       {patch, partner});
             Hinge seen_from_tab = h;
@@ -655,13 +657,10 @@ void Verifier::choose_registrations()
             for (const DrawnGlue& g : d.glue)
                 way.areas[g.code] = patch_of(d.face_at(interior_point({g.polygon, {}})));
             for (const DrawnFold& f : d.folds) {
-                const auto [left, right] = sides(d, f);
-                const int pl = patch_of(left), pr = patch_of(right);
-                const int tab_face = pl >= 0 && pr < 0 ? right : pr >= 0 && pl < 0 ? left : -1;
+                const auto [patch, tab_face] = tab_crease(d, f, patch_of);
                 if (tab_face < 0)
                     continue;
                 // The patches the joints along this crease join its patch to.
-                const int patch = pl >= 0 ? pl : pr;
                 std::map<int, FoldDirection> partners;
                 for (const Hinge& h : s_.hinges)
                     if (h.kind == JointKind::tab && (h.patch_a == patch || h.patch_b == patch) &&
@@ -982,9 +981,9 @@ RoundTrip Verifier::compare(const std::map<int, Pose>& from_sheet)
     out.ok = out.max_error <= out.tolerance && out.angles == int(asked_.size());
     if (!out.ok) {
         std::ostringstream m;
-        m << "the card folded from the sheets misses the design by " << mm(out.max_error)
-          << " (tolerance " << mm(out.tolerance) << "), worst at " << worst_where << ", over "
-          << out.angles << " of " << asked_.size() << " fold angles";
+        m << "the card folded from the sheets misses the design by " << millimetres(out.max_error)
+          << " (tolerance " << millimetres(out.tolerance) << "), worst at " << worst_where
+          << ", over " << out.angles << " of " << asked_.size() << " fold angles";
         error(DiagnosticCode::round_trip_mismatch, m.str());
     }
     return out;
