@@ -9,6 +9,7 @@ and a billion-laughs DOCTYPE (test_cli)."""
 import json
 import math
 import os
+import re
 import subprocess
 import sys
 import textwrap
@@ -268,6 +269,12 @@ def test_twelve_nested_boxes_put_the_failing_box_in_error(doc, make):
     doc.recompute()
     found = errors(doc)
     assert "Card" not in found, found
+    # The first box too small to build names its own properties and their range, not a fold.
+    first = min(found, key=lambda name: int(name[1:]))
+    assert found[first].startswith(f"{first}: DepthGround = "), found[first]
+    depth = doc.getObject(first).DepthGround.getValueAs("mm").Value
+    assert f"DepthGround = {depth:.6g} mm, must be >= " in found[first], found[first]
+    assert not re.search(r"fold \d", found[first]), found[first]
 
 
 SCAFFOLD_SCRIPT = """

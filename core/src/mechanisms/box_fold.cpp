@@ -42,6 +42,13 @@ Result<MechanismParts> add_box_fold(Scaffold& scaffold, const BasePatchPair& hos
              "and the box cannot close (docs/MATH.md, Box fold)";
         range_error(e, name, "DepthBackdrop", p.depth_backdrop, "mm", m.str());
     }
+    if (e.empty())
+        check_part_sizes(scaffold, name,
+                         {{"Width", p.width},
+                          {"DepthGround", p.depth_ground},
+                          {"DepthBackdrop", p.depth_backdrop},
+                          {"Height", p.height}},
+                         e);
     if (!e.empty()) {
         r.ok = false;
         return r;

@@ -24,6 +24,13 @@ Result<MechanismParts> add_floating_layer(Scaffold& scaffold, const BasePatchPai
         range_error(e, name, "Height", p.height, "mm", "> 0 and <= 2000 mm");
     if (!(p.overhang >= 0 && p.overhang <= 2000))
         range_error(e, name, "Overhang", p.overhang, "mm", ">= 0 and <= 2000 mm");
+    if (e.empty())
+        check_part_sizes(scaffold, name,
+                         {{"Width", p.width},
+                          {"Support", p.support},
+                          {"Height", p.height},
+                          {"Overhang", p.overhang}},
+                         e);
     if (!e.empty()) {
         r.ok = false;
         return r;

@@ -43,6 +43,13 @@ Result<MechanismParts> add_horizontal_translation(Scaffold& scaffold, const Base
             range_error(e, name, "Reach", p.reach, "mm", m.str());
         }
     }
+    if (e.empty())
+        check_part_sizes(scaffold, name,
+                         {{"Width", p.width},
+                          {"RunGround", p.run_ground},
+                          {"RunBackdrop", p.run_backdrop},
+                          {"Reach", p.reach}},
+                         e);
     if (!e.empty()) {
         r.ok = false;
         return r;

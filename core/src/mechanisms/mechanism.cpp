@@ -1,5 +1,6 @@
 #include "popup/mechanisms/mechanism.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -13,6 +14,25 @@ void range_error(Diagnostics& errors, const std::string& mechanism, const std::s
       << ", must be " << range;
     errors.push_back(
         Diagnostic::error(DiagnosticCode::bad_parameter, m.str(), about_parameter(parameter)));
+}
+
+double shortest_fold(const Scaffold& scaffold)
+{
+    return 1e-5 * std::max(scaffold.size(), 1.0);
+}
+
+void check_part_sizes(const Scaffold& scaffold, const std::string& mechanism,
+                      std::initializer_list<std::pair<const char*, double>> lengths,
+                      Diagnostics& errors)
+{
+    const double shortest = shortest_fold(scaffold);
+    for (const auto& [parameter, value] : lengths) {
+        if (!(value > 0 && value < shortest))
+            continue;
+        std::ostringstream range;
+        range << ">= " << shortest << " mm (the shortest fold on this card: 1e-5 of its size)";
+        range_error(errors, mechanism, parameter, value, "mm", range.str());
+    }
 }
 
 void check_flat_host(const std::string& mechanism, const BasePatchPair& host,

@@ -84,9 +84,10 @@ Result<MechanismParts> MechanismBuilder::finish()
     }
     for (size_t k = first_hinge_; k < scaffold_.hinges.size() && r.ok; ++k) {
         const Hinge& h = scaffold_.hinges[k];
-        if (!h.from.allFinite() || !h.to.allFinite() || !((h.to - h.from).norm() > 10 * tol))
+        if (!h.from.allFinite() || !h.to.allFinite() ||
+            !((h.to - h.from).norm() > shortest_fold(scaffold_)))
             degenerate("fold " + std::to_string(h.id) + " shorter than " +
-                       std::to_string(10 * tol) + " mm");
+                       std::to_string(shortest_fold(scaffold_)) + " mm");
     }
     for (size_t k = first_hinge_; k < scaffold_.hinges.size() && r.ok; ++k) {
         const Hinge& h = scaffold_.hinges[k];

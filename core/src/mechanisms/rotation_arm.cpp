@@ -49,6 +49,8 @@ Result<MechanismParts> add_rotation_arm(Scaffold& scaffold, const BasePatchPair&
             range_error(e, name, "Arm", p.arm, "mm", m.str());
         }
     }
+    if (e.empty())
+        check_part_sizes(scaffold, name, {{"Spine", p.spine}, {"Run", p.run}, {"Arm", p.arm}}, e);
     if (!e.empty()) {
         r.ok = false;
         return r;

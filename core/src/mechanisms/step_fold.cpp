@@ -23,6 +23,10 @@ Result<MechanismParts> add_step_fold(Scaffold& scaffold, const BasePatchPair& ho
     check_placement(name, host, p, e);
     check_run(e, name, "RunGround", p.run_ground, host.ground_depth, "ground");
     check_run(e, name, "RunBackdrop", p.run_backdrop, host.backdrop_depth, "backdrop");
+    if (e.empty())
+        check_part_sizes(
+            scaffold, name,
+            {{"Width", p.width}, {"RunGround", p.run_ground}, {"RunBackdrop", p.run_backdrop}}, e);
     if (!e.empty()) {
         r.ok = false;
         return r;

@@ -59,6 +59,13 @@ Result<MechanismParts> add_tent_fold(Scaffold& scaffold, const BasePatchPair& ho
                         "closer to Foot: the slopes cannot meet at the design state");
         }
     }
+    if (e.empty())
+        check_part_sizes(scaffold, name,
+                         {{"Width", p.width},
+                          {"Foot", p.foot},
+                          {"FootBackdrop", p.foot_backdrop},
+                          {"Slope", p.slope}},
+                         e);
     if (!e.empty()) {
         r.ok = false;
         return r;

@@ -76,6 +76,8 @@ Result<MechanismParts> add_v_box_fold(Scaffold& scaffold, const BasePatchPair& h
           << " mm long on " << host.name << ")";
         range_error(e, name, "Offset", p.offset, "mm", m.str());
     }
+    if (e.empty())
+        check_part_sizes(scaffold, name, {{"Side", p.side}, {"Height", p.height}}, e);
     if (!e.empty()) {
         r.ok = false;
         return r;

@@ -109,6 +109,8 @@ Result<MechanismParts> add_v_fold(Scaffold& scaffold, const BasePatchPair& host,
             range_error(e, name, "Offset", p.offset, "mm", m.str());
         }
     }
+    if (e.empty())
+        check_part_sizes(scaffold, name, {{"Run", p.run}, {"Spine", p.spine}}, e);
     if (!e.empty()) {
         r.ok = false;
         return r;

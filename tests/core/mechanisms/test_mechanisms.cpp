@@ -405,6 +405,28 @@ TEST(Generators, ParametersThatMakeAPartVanishAreTheMechanismsError)
     EXPECT_EQ(s.hinges.size(), hinges);
 }
 
+TEST(Generators, APartShorterThanTheShortestFoldIsNamedWithItsRange)
+{
+    // Boxes nested with fitted defaults shrink with each host until a part is shorter than a
+    // fold can be; the part's own property carries the error, not a fold number.
+    Scaffold s = fixtures::generator_card(200);
+    const double shortest = shortest_fold(s);
+    EXPECT_NEAR(shortest, 1e-5 * s.size(), 1e-12);
+    const size_t patches = s.patches.size();
+    BoxFoldParams box = placed(BoxFoldParams{}, 40, 60);
+    box.height = 0.5 * shortest;
+    const Result<MechanismParts> r = add_box_fold(s, central_fold(s), box, "Box");
+    ASSERT_FALSE(r.ok);
+    ASSERT_EQ(r.diagnostics.size(), 1u);
+    EXPECT_EQ(r.diagnostics.front().parameter, "Height");
+    EXPECT_EQ(r.diagnostics.front().message.rfind("Box: Height = ", 0), 0u)
+        << r.diagnostics.front().message;
+    EXPECT_NE(r.diagnostics.front().message.find("must be >= "), std::string::npos);
+    EXPECT_EQ(s.patches.size(), patches);
+    box.height = 2 * shortest; // just long enough: built
+    EXPECT_TRUE(add_box_fold(s, central_fold(s), box, "Box").ok);
+}
+
 TEST(Generators, APartTooLongForItsHostIsNamedNotAnOffsetRangeThatDoesNotExist)
 {
     // A v-box 2·Side·cos(WallAngle) long on a shorter fold: no Offset fits, so Side is at fault.
