@@ -22,6 +22,7 @@ import json
 import FreeCAD
 
 from popupwb import card_scaffold
+from popupwb.features.one_line_errors import one_line_errors
 from popupwb.features.property_adder import property_adder
 from popupwb.sheets.sheet_options import SHEET_OPTIONS, defaults, sides_text
 from popupwb.stateless_proxy import StatelessProxy
@@ -170,6 +171,7 @@ class CuttingSheet(StatelessProxy):
         self.add_properties(obj)
         attach_view_provider(obj)  # saved headless: it has none yet
 
+    @one_line_errors
     def execute(self, obj):
         from popupwb.sheets import export
 

@@ -18,6 +18,7 @@ import math
 
 
 from popupwb import card_scaffold
+from popupwb.features.one_line_errors import one_line_errors
 from popupwb.stateless_proxy import StatelessProxy
 from popupwb.view_provider_by_name import attach_view_provider
 
@@ -210,6 +211,7 @@ class MechanismFeature(StatelessProxy):
                 with _quiet(other):
                     other.Card = card
 
+    @one_line_errors
     def execute(self, obj):
         card = card_scaffold.root_card(obj)  # ValueError names a bad Host
         if obj.Card is not card:

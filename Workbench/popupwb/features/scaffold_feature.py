@@ -14,6 +14,7 @@ import FreeCAD
 import Part
 
 from popupwb.core import popupcore
+from popupwb.features.one_line_errors import one_line_errors
 from popupwb.features.property_adder import add_validity_outputs, property_adder
 from popupwb.features.signed_lengths import SIGNED, make_signed
 from popupwb.stateless_proxy import StatelessProxy
@@ -125,6 +126,7 @@ class ScaffoldFeature(StatelessProxy):
         self.add_properties(obj)
         attach_view_provider(obj)  # saved headless: it has none yet
 
+    @one_line_errors
     def execute(self, obj):
         start = time.perf_counter()
         angle = obj.FoldAngle.Value
