@@ -67,12 +67,16 @@ def run_check(obj, samples=181, clearance=0.0):
     """
     import FreeCAD
 
-    from popupwb import card_scaffold
+    from popupwb import card_scaffold, progress
 
-    if card_scaffold.is_card(obj):
-        report = _check_card(obj, samples, clearance)
-    else:
-        report = _check_scaffold(obj, samples, clearance)
+    try:
+        if card_scaffold.is_card(obj):
+            report = _check_card(obj, samples, clearance)
+        else:
+            report = _check_scaffold(obj, samples, clearance)
+    except progress.Cancelled as cancelled:  # Valid and Diagnostics keep the last verdict
+        FreeCAD.Console.PrintWarning(f"{cancelled}\n")
+        return None
     report["object"] = obj.Name
     obj.Diagnostics = [format_diagnostic(d) for d in report["diagnostics"]]
     obj.Valid = bool(report["valid"])
@@ -97,12 +101,17 @@ def design_error(message, parameter=None):
 
 
 def _check_scaffold(obj, samples, clearance):
+    from popupwb import progress
     from popupwb.core import popupcore
     from popupwb.features.scaffold_feature import scaffold_of
 
     try:
-        return popupcore.check_validity(
-            scaffold_of(obj), samples=samples, clearance=clearance
+        return progress.run(
+            f"{obj.Label}: checking validity",
+            popupcore.check_validity,
+            scaffold_of(obj),
+            samples=samples,
+            clearance=clearance,
         ).to_dict()
     except popupcore.DesignError as error:
         return {"valid": False, "diagnostics": list(error.diagnostics)}
@@ -122,14 +131,18 @@ def _check_card(card, samples, clearance):
     """The card's whole scaffold; mechanisms that do not build are findings of their own."""
     import FreeCAD
 
-    from popupwb import card_scaffold
+    from popupwb import card_scaffold, progress
     from popupwb.core import popupcore
 
     built = card_scaffold.for_card(card)
     if built.card_error:
         return {"valid": False, "diagnostics": [design_error(built.card_error)]}
-    report = popupcore.check_validity(
-        built.scaffold, samples=samples, clearance=clearance
+    report = progress.run(
+        f"{card.Label}: checking validity",
+        popupcore.check_validity,
+        built.scaffold,
+        samples=samples,
+        clearance=clearance,
     ).to_dict()
     problems = list(built.errors.values()) + card_scaffold.stray_features(card.Document)
     for message in problems:

@@ -5,7 +5,7 @@ import FreeCAD
 import FreeCADGui
 
 import popupwb
-from popupwb import card_scaffold
+from popupwb import card_scaffold, progress
 from popupwb.features.cutting_sheet import is_cutting_sheet
 from popupwb.commands.echoed_python import object_expression, run_echoed
 from popupwb.commands.selection import SelectionError, selected_card
@@ -24,7 +24,12 @@ def first_paper(card):
     if built.card_error is None:
         for paper in FIRST_PAPERS:
             try:
-                export.layout(built.scaffold, paper=paper)
+                progress.run(
+                    f"{card.Label}: trying {paper} paper",
+                    export.layout,
+                    built.scaffold,
+                    paper=paper,
+                )
                 return paper
             except ValueError:
                 continue
@@ -49,7 +54,8 @@ class CreateCuttingSheetCommand:
 
 
 def create(card=None):
-    """What the command does; returns the new CuttingSheet (None, with a message, without card).
+    """What the command does; returns the new CuttingSheet (None, with a message, without card or
+    when the user cancelled it in its progress dialog).
     The console shows the `popupwb.make.make_cutting_sheet(...)` line it ran."""
     doc = FreeCAD.ActiveDocument
     try:
@@ -57,12 +63,21 @@ def create(card=None):
     except SelectionError as error:
         FreeCAD.Console.PrintError(f"{COMMAND_ID}: {error}\n")
         return None
+    try:
+        paper = first_paper(card)
+    except progress.Cancelled as cancelled:
+        FreeCAD.Console.PrintWarning(f"{cancelled}\n")
+        return None
     line = (
         f"sheet = popupwb.make.make_cutting_sheet({object_expression(card)}, "
-        f"paper={first_paper(card)!r}, name={card.Name + 'Sheets'!r})"
+        f"paper={paper!r}, name={card.Name + 'Sheets'!r})"
     )
     added = run_echoed(doc, "Add cutting sheets", [line])
     obj = next(o for o in added if is_cutting_sheet(o))
+    if progress.is_cancelled_message(obj.getStatusString()):
+        FreeCAD.Console.PrintWarning(f"{obj.getStatusString()}: no cutting sheets added\n")
+        doc.undo()  # the transaction that added it
+        return None
     if "Invalid" in obj.State:
         FreeCAD.Console.PrintError(f"{obj.getStatusString()}\n")
     FreeCADGui.Selection.clearSelection()

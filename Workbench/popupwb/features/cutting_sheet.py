@@ -21,7 +21,7 @@ import json
 
 import FreeCAD
 
-from popupwb import card_scaffold
+from popupwb import card_scaffold, progress
 from popupwb.features.one_line_errors import one_line_errors
 from popupwb.features.property_adder import property_adder
 from popupwb.sheets.sheet_options import SHEET_OPTIONS, defaults, sides_text
@@ -184,7 +184,9 @@ class CuttingSheet(StatelessProxy):
             return  # a new FoldAngle: same design, same sheets
         not_valid = self._not_valid(obj, built)
         try:
-            sheet_set = export.layout(built.scaffold, **options)
+            sheet_set = progress.run(
+                f"{obj.Label}: laying out the sheets", export.layout, built.scaffold, **options
+            )
         except ValueError as error:  # DesignError names the option and its range
             raise self._error(obj, property_message(error, obj)) from error
         errors = [d for d in sheet_set["diagnostics"] if d["severity"] == "error"]
@@ -220,7 +222,9 @@ class CuttingSheet(StatelessProxy):
         from popupwb.sheets.not_valid_stamp import not_valid_of
 
         try:
-            report = popupcore.check_validity(built.scaffold).to_dict()
+            report = progress.run(
+                f"{obj.Label}: checking validity", popupcore.check_validity, built.scaffold
+            ).to_dict()
         except ValueError as error:
             raise self._error(obj, f"the validity check cannot run: {error}") from error
         not_valid = not_valid_of(report)

@@ -17,6 +17,8 @@ exception type keeps its traceback.
 import functools
 import sys
 
+from popupwb.progress import Cancelled
+
 _UNSET = object()
 _live = 0  # InputError instances alive (the limit is 0 while there is one)
 _saved_limit = _UNSET
@@ -51,8 +53,9 @@ class InputError(ValueError, metaclass=_PrintsAsPopUp):
 
 
 def one_line_errors(execute):
-    """Decorates a proxy's execute(self, obj): a ValueError leaves it as InputError (one line,
-    object still marked Invalid with the message); other exceptions are untouched."""
+    """Decorates a proxy's execute(self, obj): a ValueError, or Cancel pressed in a progress
+    dialog, leaves it as InputError (one line, object still marked Invalid with the message);
+    other exceptions are untouched."""
 
     @functools.wraps(execute)
     def reporting_briefly(self, obj):
@@ -60,7 +63,7 @@ def one_line_errors(execute):
             return execute(self, obj)
         except InputError:
             raise
-        except ValueError as error:
+        except (ValueError, Cancelled) as error:
             message = str(error)
             del error  # no reference may outlive the raise (see InputError)
             raise InputError(message) from None

@@ -44,6 +44,30 @@ class CardViewProvider(StatelessProxy):
     def onChanged(self, vobj, prop):
         return None
 
+    def doubleClicked(self, vobj):
+        import FreeCADGui
+
+        FreeCADGui.ActiveDocument.setEdit(vobj.Object.Name, 0)
+        return True
+
+    def setEdit(self, vobj, mode=0):
+        if mode != 0:
+            return None  # transform and other modes: FreeCAD's own
+        import FreeCADGui
+
+        from popupwb.taskpanels.card_panel import CardPanel
+
+        FreeCADGui.Control.showDialog(CardPanel(vobj.Object))
+        return True
+
+    def unsetEdit(self, vobj, mode=0):
+        if mode != 0:
+            return None
+        import FreeCADGui
+
+        FreeCADGui.Control.closeDialog()
+        return True
+
     def claimChildren(self):
         obj = getattr(self, "Object", None)
         return hosted_on(obj) if obj is not None else []

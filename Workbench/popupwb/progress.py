@@ -1,0 +1,163 @@
+"""Progress with Cancel for anything that can take more than half a second.
+
+    from popupwb import progress
+
+    report = progress.run("Card: checking validity", popupcore.check_validity, scaffold)
+
+    with progress.Steps("Card: fitting", len(batches)) as steps:
+        for batch in batches:
+            results.append(steps.run(fit_batch, batch))  # Cancel stops between and within steps
+
+In the GUI each call runs in a worker thread while the main thread keeps the window alive; once
+the work has taken SHOW_AFTER_MS a modal progress dialog appears with Cancel. Cancel raises
+Cancelled in the caller at once, and the result of the abandoned call is dropped. The work must
+not touch FreeCAD documents or Qt (it runs off the main thread): pass it the core calls, which
+release the GIL (popupcore.check_validity, layout_sheets, simulate_fold, ...). The core cannot be
+interrupted inside one call: an abandoned call finishes in the background, using a core until then.
+
+Headless (no GUI, or called off the main thread) run() is a plain call and Steps never cancels.
+
+FreeCAD's own FreeCAD.Base.ProgressIndicator (start(text, steps), next(canAbort), stop()) is not
+used: it only advances when the main thread calls next(), which it cannot do while the main
+thread waits for one long core call, and it aborts with Esc, not with a Cancel button.
+"""
+
+import threading
+import time
+
+SHOW_AFTER_MS = 500
+POLL_SECONDS = 0.02
+DIALOG_NAME = "PopUpProgress"  # objectName of the dialog (scripts and the GUI tests find it)
+
+shown = []  # labels of the dialogs shown so far in this session (the GUI tests read it)
+
+
+class Cancelled(Exception):
+    """The user pressed Cancel; the message says what was cancelled."""
+
+
+def cancelled_message(label):
+    return f"{label}: cancelled by the user"
+
+
+def is_cancelled_message(text):
+    return str(text).endswith(": cancelled by the user")
+
+
+def _gui_thread():
+    """True in the GUI's main thread, where a dialog can be shown."""
+    try:
+        import FreeCAD
+
+        if not FreeCAD.GuiUp:
+            return False
+        from PySide import QtCore, QtGui
+    except ImportError:
+        return False
+    app = QtGui.QApplication.instance()
+    return app is not None and QtCore.QThread.currentThread() is app.thread()
+
+
+class _Worker(threading.Thread):
+    def __init__(self, function, args, kwargs):
+        super().__init__(name="PopUp progress worker", daemon=True)
+        self.function, self.args, self.kwargs = function, args, kwargs
+        self.result = self.error = None
+
+    def run(self):
+        try:
+            self.result = self.function(*self.args, **self.kwargs)
+        except BaseException as error:  # handed to the caller's thread
+            self.error = error
+        finally:
+            self.function = self.args = self.kwargs = None
+
+
+class Steps:
+    """A context manager for work in `count` steps (0: unknown); steps.run(function, ...) runs one
+    step with Cancel, steps.advance() counts a step done in the main thread and raises Cancelled
+    when Cancel was pressed."""
+
+    def __init__(self, label, count=0):
+        self.label = label
+        self.count = count
+        self.done = 0
+        self.started = None
+        self.dialog = None
+        self.gui = _gui_thread()
+
+    def __enter__(self):
+        self.started = time.monotonic()
+        return self
+
+    def __exit__(self, *exc):
+        if self.dialog is not None:
+            self.dialog.hide()
+            self.dialog.deleteLater()
+            self.dialog = None
+        return False
+
+    def run(self, function, *args, **kwargs):
+        if not self.gui:
+            return function(*args, **kwargs)
+        worker = _Worker(function, args, kwargs)
+        worker.start()
+        while worker.is_alive():
+            worker.join(POLL_SECONDS)  # waits with the GIL released
+            self._poll()
+        self.done += 1
+        self._update()
+        if worker.error is not None:
+            error, worker.error = worker.error, None
+            raise error
+        return worker.result
+
+    def advance(self):
+        self.done += 1
+        if self.gui:
+            self._update()
+            self._poll()
+
+    # --- the dialog -------------------------------------------------------------------------
+
+    def _poll(self):
+        from PySide import QtCore
+
+        if self.dialog is None:
+            if (time.monotonic() - self.started) * 1000.0 < SHOW_AFTER_MS:
+                return  # short work: no dialog, and no events (no input reaches the document)
+            self._show()
+        # The dialog is application modal: only its Cancel button takes input.
+        QtCore.QCoreApplication.processEvents(QtCore.QEventLoop.AllEvents, 50)
+        if self.dialog.wasCanceled():
+            raise Cancelled(cancelled_message(self.label))
+
+    def _show(self):
+        import FreeCADGui
+        from PySide import QtCore, QtGui
+
+        window = FreeCADGui.getMainWindow()
+        dialog = QtGui.QProgressDialog(self.label, "Cancel", 0, self.count, window)
+        dialog.setObjectName(DIALOG_NAME)
+        dialog.setWindowTitle("PopUp")
+        dialog.setWindowModality(QtCore.Qt.ApplicationModal)
+        dialog.setAutoClose(False)
+        dialog.setAutoReset(False)
+        dialog.setMinimumDuration(0)
+        dialog.setMinimumWidth(360)
+        dialog.setValue(min(self.done, self.count))
+        dialog.show()
+        self.dialog = dialog
+        shown.append(self.label)
+
+    def _update(self):
+        if self.dialog is not None and self.count:
+            self.dialog.setValue(min(self.done, self.count))
+
+
+def run(label, function, *args, **kwargs):
+    """function(*args, **kwargs) with a progress dialog and Cancel after SHOW_AFTER_MS (GUI);
+    raises Cancelled when cancelled. `label` names the object and the work ("Card: checking
+    validity")."""
+    with Steps(label) as steps:
+        return steps.run(function, *args, **kwargs)
