@@ -13,7 +13,8 @@ the work has taken SHOW_AFTER_MS a modal progress dialog appears with Cancel. Ca
 Cancelled in the caller at once, and the result of the abandoned call is dropped. The work must
 not touch FreeCAD documents or Qt (it runs off the main thread): pass it the core calls, which
 release the GIL (popupcore.check_validity, layout_sheets, simulate_fold, ...). The core cannot be
-interrupted inside one call: an abandoned call finishes in the background, using a core until then.
+interrupted inside one call: an abandoned call finishes in the background, using a core until then
+(and quitting FreeCAD waits for it).
 
 Headless (no GUI, or called off the main thread) run() is a plain call and Steps never cancels.
 
@@ -60,7 +61,9 @@ def _gui_thread():
 
 class _Worker(threading.Thread):
     def __init__(self, function, args, kwargs):
-        super().__init__(name="PopUp progress worker", daemon=True)
+        # Not a daemon: Python waits for an abandoned call before it exits (a daemon thread in
+        # the core when the interpreter goes away aborts FreeCAD: "terminate called ...").
+        super().__init__(name="PopUp progress worker", daemon=False)
         self.function, self.args, self.kwargs = function, args, kwargs
         self.result = self.error = None
 
@@ -92,8 +95,10 @@ class Steps:
 
     def __exit__(self, *exc):
         if self.dialog is not None:
+            # Deleted now: deleteLater would wait for the outermost event loop when this runs
+            # inside a recompute or another wait.
             self.dialog.hide()
-            self.dialog.deleteLater()
+            self.dialog.setParent(None)
             self.dialog = None
         return False
 

@@ -61,8 +61,9 @@ class CardPanel:
     # --- widgets ----------------------------------------------------------------------------
 
     def _fold_group(self):
-        group = QtGui.QGroupBox("Fold")
-        grid = QtGui.QGridLayout(group)
+        group = QtGui.QGroupBox("Fold angle")
+        box = QtGui.QVBoxLayout(group)
+        row = QtGui.QHBoxLayout()
         self.slider = QtGui.QSlider(QtCore.Qt.Horizontal)
         self.slider.setObjectName("FoldAngleSlider")
         self.slider.setRange(0, 180)
@@ -70,11 +71,13 @@ class CardPanel:
         self.slider.setToolTip("Opening angle of the card: 0° closed, 180° flat open")
         self.slider.valueChanged.connect(self.set_fold_angle)
         self.angle_label = QtGui.QLabel()
-        self.angle_label.setMinimumWidth(40)
-        grid.addWidget(QtGui.QLabel("Angle"), 0, 0)
-        grid.addWidget(self.slider, 0, 1)
-        grid.addWidget(self.angle_label, 0, 2)
+        self.angle_label.setMinimumWidth(36)
+        self.angle_label.setAlignment(QtCore.Qt.AlignRight | QtCore.Qt.AlignVCenter)
+        row.addWidget(self.slider, 1)
+        row.addWidget(self.angle_label)
+        box.addLayout(row)
 
+        row = QtGui.QHBoxLayout()
         self.play_button = QtGui.QPushButton("Play")
         self.play_button.setObjectName("PlayButton")
         self.play_button.setToolTip("Close the card and open it again (press again to stop)")
@@ -84,9 +87,11 @@ class CardPanel:
         self.speed.addItems([name for name, _ in SPEEDS])
         self.speed.setCurrentIndex([name for name, _ in SPEEDS].index(DEFAULT_SPEED))
         self.speed.setToolTip("Animation speed (takes effect at the next Play)")
-        grid.addWidget(self.play_button, 1, 0)
-        grid.addWidget(QtGui.QLabel("Speed"), 1, 1, QtCore.Qt.AlignRight)
-        grid.addWidget(self.speed, 1, 2)
+        row.addWidget(self.play_button)
+        row.addStretch(1)
+        row.addWidget(QtGui.QLabel("Speed"))
+        row.addWidget(self.speed)
+        box.addLayout(row)
         return group
 
     def _paper_group(self):
@@ -133,6 +138,7 @@ class CardPanel:
         self.findings_list.setObjectName("Findings")
         self.findings_list.setWordWrap(True)
         self.findings_list.setToolTip("Click a finding to select the patches it is about")
+        self.findings_list.setMinimumHeight(160)
         self.findings_list.currentRowChanged.connect(self.select_finding)
         box.addWidget(self.check_button)
         box.addWidget(self.verdict)
