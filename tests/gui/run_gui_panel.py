@@ -207,6 +207,21 @@ def run():
     result["angle_after_close"] = card.FoldAngle.Value
     result["panel_log"] = new_log(log_start)
 
+    # Undo: the session after Make sheets, the sheets, the session before them.
+    def sheet_count():
+        return len([o for o in doc.Objects if is_cutting_sheet(o)])
+
+    undo_steps = []
+    for _ in range(3):
+        doc.undo()
+        doc.recompute()
+        undo_steps.append([card.FoldAngle.Value, card.Preset, sheet_count()])
+    result["undo_steps"] = undo_steps
+    for _ in range(3):
+        doc.redo()
+    doc.recompute()
+    result["after_redo"] = [card.FoldAngle.Value, sheet_count()]
+
     # A bad value typed in the box's own panel: one line, no traceback.
     tree_double_click(box)
     mpanel = mechanism_panel.last_panel
@@ -363,6 +378,12 @@ def main():
         "Close leaves the fold angle where it was put",
         r.get("closed") is True and r.get("angle_after_close") == 100.0,
         r.get("angle_after_close"),
+    )
+    check(
+        "undo: the session after Make sheets, the sheets, the session before them",
+        r.get("undo_steps") == [[120.0, "A5", 1], [120.0, "A5", 0], [180.0, "A5", 0]]
+        and r.get("after_redo") == [100.0, 1],
+        f"{r.get('undo_steps')}, {r.get('after_redo')}",
     )
     check(
         "no traceback in the report view during the card panel session",
