@@ -47,16 +47,17 @@ def is_cancelled_message(text):
 
 def _gui_thread():
     """True in the GUI's main thread, where a dialog can be shown."""
+    if threading.current_thread() is not threading.main_thread():
+        return False
     try:
         import FreeCAD
 
         if not FreeCAD.GuiUp:
             return False
-        from PySide import QtCore, QtGui
+        from PySide import QtGui
     except ImportError:
         return False
-    app = QtGui.QApplication.instance()
-    return app is not None and QtCore.QThread.currentThread() is app.thread()
+    return QtGui.QApplication.instance() is not None
 
 
 class _Worker(threading.Thread):
@@ -104,7 +105,9 @@ class Steps:
 
     def run(self, function, *args, **kwargs):
         if not self.gui:
-            return function(*args, **kwargs)
+            result = function(*args, **kwargs)
+            self.done += 1
+            return result
         worker = _Worker(function, args, kwargs)
         worker.start()
         while worker.is_alive():
