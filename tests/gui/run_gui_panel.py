@@ -26,9 +26,15 @@ import time
 
 
 def tree_double_click(obj):
-    # A real double-click on the object's row in the model tree.
+    # A real double-click on the object's row in the model tree (the Model tab brought to the
+    # front first, as a maker does while a task panel shows).
     tree = next(t for t in Gui.getMainWindow().findChildren(QtGui.QTreeWidget)
-                if t.isVisible() and t.topLevelItemCount())
+                if t.topLevelItemCount() and t.window() is Gui.getMainWindow())
+    for tabs in Gui.getMainWindow().findChildren(QtGui.QTabWidget):
+        for index in range(tabs.count()):
+            if tabs.widget(index).isAncestorOf(tree):
+                tabs.setCurrentIndex(index)
+    Gui.updateGui()
     found = tree.findItems(obj.Label, QtCore.Qt.MatchExactly | QtCore.Qt.MatchRecursive, 0)
     item = found[0]
     tree.scrollToItem(item)
@@ -234,6 +240,18 @@ def run():
     mpanel.reject()
     Gui.updateGui()
 
+    # Double-clicking the card again while its panel is open: that session ends (committed), a
+    # new one starts.
+    tree_double_click(card)
+    first = card_panel.last_panel
+    first.slider.setValue(80)
+    tree_double_click(card)
+    second = card_panel.last_panel
+    result["reopen"] = [first.finished, second is not first, bool(Gui.Control.activeDialog()),
+                        card.FoldAngle.Value]
+    second.reject()
+    Gui.updateGui()
+
     # A slow card: a box of 10 panel pairs.
     box.PanelPairs = 10
     box.Width = 100
@@ -384,6 +402,11 @@ def main():
         r.get("undo_steps") == [[120.0, "A5", 1], [120.0, "A5", 0], [180.0, "A5", 0]]
         and r.get("after_redo") == [100.0, 1],
         f"{r.get('undo_steps')}, {r.get('after_redo')}",
+    )
+    check(
+        "double-click while open: the session ends committed, a new panel opens",
+        r.get("reopen") == [True, True, True, 80.0],
+        r.get("reopen"),
     )
     check(
         "no traceback in the report view during the card panel session",

@@ -27,6 +27,12 @@ STATUS_MS = 100  # how often the panel follows the animation and the card's stat
 last_panel = None  # the panel opened last (scripts and the GUI tests drive it)
 
 
+def finish_panel_of(card):
+    """Ends the session of the open panel of `card`, if any (the view provider's unsetEdit)."""
+    if last_panel is not None and last_panel.card is card:
+        last_panel.finish()
+
+
 def in_error(obj):
     return "Invalid" in obj.State or "Error" in obj.State
 
@@ -40,6 +46,7 @@ class CardPanel:
         self.card = card
         self.doc = card.Document
         self.player = None
+        self.finished = False
         self.findings = []  # [(diagnostic dict, [(object name, face index or None)])]
         self.doc.openTransaction(f"Edit {card.Label}")
 
@@ -338,10 +345,22 @@ class CardPanel:
     def reject(self):
         return self._close()
 
-    def _close(self):
-        self.stop_play()
+    def finish(self):
+        """Ends the session once: stops the animation and the timer, commits the transaction
+        (Close keeps the session's changes, fold angle included). Also run when FreeCAD ends the
+        edit itself (unsetEdit: another double-click, the document closing)."""
+        if self.finished:
+            return
+        self.finished = True
         self.timer.stop()
-        self.doc.commitTransaction()  # Close keeps the session's changes, fold angle included
+        try:
+            self.stop_play()
+            self.doc.commitTransaction()
+        except (ReferenceError, RuntimeError):  # the card or its document is gone
+            pass
+
+    def _close(self):
+        self.finish()
         gui_doc = FreeCADGui.getDocument(self.doc.Name)
         if gui_doc is not None and gui_doc.getInEdit() is not None:
             gui_doc.resetEdit()  # unsetEdit closes the dialog

@@ -65,6 +65,9 @@ class CardViewProvider(StatelessProxy):
             return None
         import FreeCADGui
 
+        from popupwb.taskpanels.card_panel import finish_panel_of
+
+        finish_panel_of(vobj.Object)  # its transaction committed, its animation stopped
         FreeCADGui.Control.closeDialog()
         return True
 
