@@ -21,7 +21,7 @@ def entries():
     found = []
     if any(card_scaffold.host_pair_names(o) for o in popup):
         found.append((c.ADD_MECHANISM_SUBMENU, c.add_mechanism_commands()))
-    tail = [c.SEPARATOR] + c.CHECK_COMMANDS
+    tail = ([c.SEPARATOR] if found else []) + c.CHECK_COMMANDS  # FreeCAD separates ours
     if any(card_scaffold.is_card(o) for o in popup):
         tail.append(c.SHEET_COMMANDS[0])  # the cutting sheet is made from a card
     found.append(("", tail))
