@@ -115,7 +115,8 @@ def _bracket(span, colour, posed, index):
     move.translation = tuple(middle)
     text = coin.SoText2()
     text.string = (
-        f"{span.label} {placement.millimetres(span.start)}–{placement.millimetres(span.end)} mm"
+        # ASCII: SoText2's bitmap font has no en dash.
+        f"{span.label} {placement.millimetres(span.start)}-{placement.millimetres(span.end)} mm"
     )
     group.addChild(move)
     group.addChild(text)
