@@ -13,7 +13,7 @@ A sheet's page (TechDraw::DrawPage) holds:
   layer_style.SheetStyle.
 Page coordinates are sheet coordinates (origin at the paper's lower-left corner). The production
 files are export.py's: TechDraw's own DXF puts every line on one layer, without linetypes or
-colours. View frames are hidden in the GUI (page_window.py also fits the page to its window).
+colours. When its window opens, page_window.py hides the view frames and fits the page.
 
 Generated templates are kept in <user data>/PopUp/templates/, named by a digest of their text; the
 document keeps its own copy of each (the template's PageResult), so a file opens anywhere.
@@ -100,11 +100,11 @@ def update_pages(owner, sheet_set, mountain_style=4, valley_style=2, not_valid=N
         page = by_index.get(index) or _new_page(owner, index, template)
         page.Label = f"{owner.Label} sheet {index + 1}"
         _draw_sheet(page, sheet_set, index, template, title, styles, not_valid)
-        hide_frames(page)
 
 
 def hide_frames(page):
-    """No frame or caption around the page's views (GUI only: a view provider property)."""
+    """No frame or caption around the page's views (GUI only: a view provider property; an open
+    window redraws only through TechDraw_ToggleFrame, page_window.py)."""
     if FreeCAD.GuiUp and page.ViewObject is not None:
         if getattr(page.ViewObject, "ShowFrames", False):
             page.ViewObject.ShowFrames = False
