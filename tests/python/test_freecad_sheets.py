@@ -426,12 +426,13 @@ def test_a_rejected_card_is_laid_out_only_when_forced(doc, popup, tmp_path):
     assert f"CuttingSheet: the card Card is {STAMP}: not_enclosed: " in status
     assert "sticks out of the closed card by 5 mm" in status and "set Force" in status
     assert sheet.SheetSetJson == "" and popup.pages.pages_of(sheet) == []
+    assert not popup.feature.has_layout(sheet)  # PopUp_ExportSheets is disabled
     with pytest.raises(ValueError, match="no layout to export"):
         popup.feature.export_cutting_sheet(sheet, str(tmp_path / "refused"))
 
     sheet.Force = True
     recompute_ok(doc, card, tent, sheet)
-    assert sheet.NotValid == STAMP
+    assert sheet.NotValid == STAMP and popup.feature.has_layout(sheet)
     assert sheet.Diagnostics[0] == f"warning: {STAMP} (laid out because Force is set)"
     assert any("by 5 mm" in finding for finding in sheet.ValidityFindings)
     pages = popup.pages.pages_of(sheet)
@@ -500,3 +501,34 @@ def test_survives_save_and_reopen(doc, popup, card, tmp_path, run_fresh_freecad)
         "sheets": 1,
         "ok": True,
     }
+
+
+def label_box(label):
+    """The axis-aligned box of a label's text (its cap height by its Helvetica width), turned."""
+    import math
+
+    from reportlab.pdfbase.pdfmetrics import stringWidth
+
+    width = stringWidth(label["text"], "Helvetica", label["height"] / 0.716)
+    turn = math.radians(label["angle"])
+    half_x = (abs(width * math.cos(turn)) + abs(label["height"] * math.sin(turn))) / 2.0
+    half_y = (abs(width * math.sin(turn)) + abs(label["height"] * math.cos(turn))) / 2.0
+    x, y = label["position"]
+    return (x - half_x, y - half_y, x + half_x, y + half_y)
+
+
+def test_page_labels_are_legible_and_apart(doc, popup):
+    """What the page's symbol draws: every label at least 1.5 mm high (legible on a laser print
+    at 1:1) and no two labels on a sheet overlapping."""
+    sheet = build_card(doc, popup, **TWO_SHEETS)["Sheet"]
+    sheet_set = sheet_set_of(sheet)
+    for index, page in enumerate(popup.pages.pages_of(sheet)):
+        labels = [label for piece in pieces_on(sheet_set, index) for label in piece["labels"]]
+        assert symbol_texts(page_parts(page)[1]) == [label["text"] for label in labels]
+        assert min(label["height"] for label in labels) >= 1.5
+        boxes = [label_box(label) for label in labels]
+        for a in range(len(boxes)):
+            for b in range(a + 1, len(boxes)):
+                (ax0, ay0, ax1, ay1), (bx0, by0, bx1, by1) = boxes[a], boxes[b]
+                apart = ax1 <= bx0 or bx1 <= ax0 or ay1 <= by0 or by1 <= ay0
+                assert apart, (labels[a], labels[b])
