@@ -14,7 +14,7 @@ in mm: one user unit is then exactly 1 mm on the page. No FreeCAD needed.
 from .layer_style import SheetStyle
 from .not_valid_stamp import stamp_label
 from .sheet_set import read_sheet_set
-from .svg_writer import _sheet_drawing
+from .svg_writer import sheet_svg_drawing
 
 TECHDRAW_PX_PER_MM = 3.78  # QGIViewSymbol's pxMm
 MARK_LAYERS = ("glue", "label")  # SheetStyle fields the symbol keeps; the view draws the rest
@@ -27,7 +27,7 @@ def marks_svg(sheet_set, index, not_valid=None, style=None):
     stamp = None
     if not_valid is not None:
         stamp = stamp_label(sheets.width, sheets.height, sheets.margin, not_valid)
-    drawing = _sheet_drawing(sheets, sheets.sheets[index], style, "", stamp)
+    drawing = sheet_svg_drawing(sheets, sheets.sheets[index], style, "", stamp)
     kept = {getattr(style, name).name for name in MARK_LAYERS}
     drawing.elements = [e for e in drawing.elements if getattr(e, "attribs", {}).get("id") in kept]
     drawing.attribs["width"] = f"{sheets.width * TECHDRAW_PX_PER_MM:.4f}"

@@ -26,7 +26,7 @@ def write_svg(sheet_set, path, style=None, not_valid=None):
     if not_valid is not None:
         stamp = stamp_label(sheets.width, sheets.height, sheets.margin, not_valid)
     for sheet, sheet_path in zip(sheets.sheets, paths):
-        _sheet_drawing(sheets, sheet, style, sheet_path, stamp).save(pretty=True)
+        sheet_svg_drawing(sheets, sheet, style, sheet_path, stamp).save(pretty=True)
     return paths
 
 
@@ -36,7 +36,7 @@ def _number(value):
     return "0" if text == "-0" else text
 
 
-def _sheet_drawing(sheets, sheet, style, path, stamp=None):
+def sheet_svg_drawing(sheets, sheet, style, path, stamp=None):
     width, height = sheets.width, sheets.height
     drawing = svgwrite.Drawing(
         path,
