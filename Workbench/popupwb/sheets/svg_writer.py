@@ -37,8 +37,9 @@ def _number(value):
 
 
 def sheet_svg_drawing(sheets, sheet, style, path, stamp=None):
-    """One sheet as an svgwrite.Drawing (layers CUT, MOUNTAIN, VALLEY, GLUE, LABEL, and the stamp
-    when given), in millimetres; the file writer and the TechDraw page marks share it."""
+    """One sheet as an svgwrite.Drawing in millimetres, a group per layer of `style` (glue,
+    mountain, valley, label, cut) and the stamp when given; the file writer and the TechDraw page
+    marks share it."""
     width, height = sheets.width, sheets.height
     drawing = svgwrite.Drawing(
         path,
