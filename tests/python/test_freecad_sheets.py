@@ -1,11 +1,13 @@
 """CuttingSheet in headless FreeCAD: an A4 card with a tent and a box fold laid out on paper, its
 exact flat faces against the core's patches, the TechDraw pages (one per sheet, folds as cosmetic
-lines, labels as annotations), errors that name the option and leave the document recomputable,
+lines, glue areas and labels in one symbol view, a template of the paper's size with legend and
+title block), errors that name the option and leave the document recomputable,
 no second layout when only FoldAngle changes, the export, and save and reopen in a fresh
 process."""
 
 import json
 import os
+import xml.etree.ElementTree as ElementTree
 
 import ezdxf
 import pytest
@@ -61,10 +63,24 @@ def sheet_set_of(sheet):
     return json.loads(sheet.SheetSetJson)
 
 
+SVG = "{http://www.w3.org/2000/svg}"
+
+
 def page_parts(page):
-    view = next(v for v in page.Views if v.TypeId == "TechDraw::DrawViewPart")
-    annotations = [v for v in page.Views if v.TypeId == "TechDraw::DrawViewAnnotation"]
-    return view, annotations
+    """The page's part view and its symbol view (glue areas and labels)."""
+    (view,) = [v for v in page.Views if v.TypeId == "TechDraw::DrawViewPart"]
+    (marks,) = [v for v in page.Views if v.TypeId == "TechDraw::DrawViewSymbol"]
+    return view, marks
+
+
+def layer_of(marks, name):
+    """The <g> of layer `name` in the symbol view's SVG."""
+    root = ElementTree.fromstring(marks.Symbol)
+    return next((g for g in root.iter(SVG + "g") if g.get("id") == name), None)
+
+
+def symbol_texts(marks):
+    return [t.text for t in layer_of(marks, "LABEL").iter(SVG + "text")]
 
 
 def pieces_on(sheet_set, index):
@@ -135,8 +151,16 @@ def test_pages_draw_every_sheet_at_full_size(doc, popup):
     for index, page in enumerate(pages):
         pieces = pieces_on(sheet_set, index)
         view, annotations = page_parts(page)
-        # 232 x 320 mm is custom: on the smallest template that holds it, Tabloid, at 1:1.
-        assert os.path.basename(page.Template.Template) == "Tabloid_Portrait_blank.svg"
+        view, marks = page_parts(page)
+        # The template is the paper (232 x 320 mm, custom), with the title block's texts.
+        template = ElementTree.parse(page.Template.PageResult).getroot()
+        assert (template.get("width"), template.get("height")) == ("232mm", "320mm")
+        assert dict(page.Template.EditableTexts) == {
+            "CardName": "Card",
+            "Paper": "232 x 320 mm",
+            "Sheet": f"{index + 1} of 2",
+            "Scale": "1:1",
+        }
         assert (view.ScaleType, view.Scale, view.CoarseView) == ("Custom", 1.0, True)
         assert tuple(view.Direction) == (0, 0, 1) and tuple(view.XDirection) == (1, 0, 0)
         # Page coordinates are sheet coordinates: the drawn outline spans the cut outline.
@@ -159,10 +183,23 @@ def test_pages_draw_every_sheet_at_full_size(doc, popup):
             # Cosmetic edges keep y up (TechDraw flips them when drawing) and 4 decimals.
             start = (view.X.Value + edge.Start.x, view.Y.Value + edge.Start.y)
             assert start == pytest.approx(tuple(fold["from"]), abs=1e-3)
-        labels = [label for piece in pieces for label in piece["labels"]]
-        assert [a.Text[0] for a in annotations] == [label["text"] for label in labels]
-        for annotation, label in zip(annotations, labels):
-            assert (annotation.X.Value, annotation.Y.Value) == pytest.approx(label["position"])
+        # Glue areas and labels: the symbol, 3.78 px per mm as TechDraw reads it, viewBox in mm.
+        root = ElementTree.fromstring(marks.Symbol)
+        assert (
+            float(root.get("width")) == pytest.approx(232 * 3.78)
+            and root.get("viewBox") == "0 0 232 320"
+        )
+        assert (marks.X.Value, marks.Y.Value, marks.Scale) == (116.0, 160.0, 1.0)
+        glue = [area for piece in pieces for area in piece["glue"]]
+        paths = list(layer_of(marks, "GLUE").iter(SVG + "path"))
+        assert len(paths) == len(glue) > 0
+        assert {p.get("fill") for p in paths} == {"rgb(217,217,217)"}
+        first = paths[0].get("d").split()[1].split(",")  # "M x,y ...": SVG y points down
+        x, y = glue[0]["polygon"][0]
+        assert (float(first[0]), 320.0 - float(first[1])) == pytest.approx((x, y), abs=1e-5)
+        labels = [label["text"] for piece in pieces for label in piece["labels"]]
+        assert symbol_texts(marks) == labels
+        assert [layer_of(marks, name) for name in ("CUT", "MOUNTAIN", "VALLEY")] == [None] * 3
     assert not any("Touched" in o.State or in_error(o) for o in doc.Objects)
 
 
@@ -174,17 +211,20 @@ def test_pages_follow_the_sheet_count_and_make_pages(doc, popup):
     recompute_ok(doc, *objects.values())
     assert sheet.SheetCount == 1 and len(popup.pages.pages_of(sheet)) == 1
     page = popup.pages.pages_of(sheet)[0]
-    assert os.path.basename(page.Template.Template) == "A3_Portrait_blank.svg"
+    assert page.Template.EditableTexts["Sheet"] == "1 of 1"
     one_page = page_objects_count(doc)
     assert one_page < two_pages
-    assert one_page == len(popup.pages.page_objects(page))
-    sheet.FoldHints = True  # more labels, then fewer: annotations follow
+    # The page, its template, the symbol, the part view and its outline: however many labels.
+    assert one_page == len(popup.pages.page_objects(page)) == 5
+    labels = len(symbol_texts(page_parts(page)[1]))
+    sheet.FoldHints = True  # more labels, not more objects
     recompute_ok(doc, *objects.values())
-    labels = sum(len(p["labels"]) for p in sheet_set_of(sheet)["pieces"])
-    assert len(page_parts(page)[1]) == labels and page_objects_count(doc) > one_page
+    more = sum(len(p["labels"]) for p in sheet_set_of(sheet)["pieces"])
+    assert len(symbol_texts(page_parts(page)[1])) == more > labels
+    assert page_objects_count(doc) == one_page
     sheet.FoldHints = False
     recompute_ok(doc, *objects.values())
-    assert page_objects_count(doc) == one_page
+    assert len(symbol_texts(page_parts(page)[1])) == labels
     sheet.MakePages = False
     recompute_ok(doc, *objects.values())
     assert page_objects_count(doc) == 0
@@ -195,21 +235,38 @@ def test_pages_follow_the_sheet_count_and_make_pages(doc, popup):
     assert not any("Touched" in o.State for o in doc.Objects)
 
 
-def test_templates_match_the_paper(popup, freecad):
-    def chosen(width, height):
-        path, scale = popup.pages.template_for(width, height)
-        return os.path.basename(path), scale
+def test_templates_are_the_paper_with_legend_and_title_block(popup):
+    from popupwb.sheets.page_template import TitleBlock, template_svg
 
-    assert chosen(210.0, 297.0) == ("A4_Portrait_blank.svg", 1.0)
-    assert chosen(297.0, 420.0) == ("A3_Portrait_blank.svg", 1.0)
-    assert chosen(215.9, 279.4) == ("Letter_Portrait_blank.svg", 1.0)
-    assert chosen(279.4, 431.8) == ("Tabloid_Portrait_blank.svg", 1.0)
-    assert chosen(300.0, 200.0) == ("A3_Landscape_blank.svg", 1.0)
-    name, scale = chosen(1000.0, 1000.0)  # larger than any template: shown scaled down
-    assert name == "A0_Landscape_blank.svg" and scale == pytest.approx(0.841)
-    techdraw = freecad.getResourceDir() + "Mod/TechDraw/Templates/"
-    for name, _, _, folder in popup.pages.TEMPLATES:
-        assert os.path.isfile(os.path.join(folder or techdraw, name)), name
+    title = TitleBlock("Birthday card", "A4 210 x 297 mm", 2, 3)
+    root = ElementTree.fromstring(template_svg(210.0, 297.0, 10.0, title))
+    assert (root.get("width"), root.get("height"), root.get("viewBox")) == (
+        "210mm",
+        "297mm",
+        "0 0 210 297",
+    )
+    editable = "{http://www.freecadweb.org/wiki/index.php?title=Svg_Namespace}editable"
+    texts = list(root.iter(SVG + "text"))
+    fields = {t.get(editable): "".join(t.itertext()) for t in texts if t.get(editable)}
+    assert fields == {
+        "CardName": "Birthday card",
+        "Paper": "A4 210 x 297 mm",
+        "Sheet": "2 of 3",
+        "Scale": "1:1",
+    }
+    legend = [t.text for t in texts if not t.get(editable) and not t.text.endswith(":")]
+    assert legend == ["cut", "mountain fold", "valley fold", "glue"]
+    # Everything sits in the bottom margin band (SVG y down: 287..297 mm), inside the margins,
+    # legend left of the title block.
+    xs = [float(t.get("x")) for t in texts]
+    assert all(287.0 < float(t.get("y")) < 297.0 for t in texts)
+    first_sample = next(root.iter(SVG + "line"))
+    assert float(first_sample.get("x1")) == pytest.approx(10.0) and max(xs) < 200.0
+    assert xs == sorted(xs)
+    lines = {line.get("stroke"): line.get("stroke-dasharray") for line in root.iter(SVG + "line")}
+    assert lines == {"#ff0000": None, "#0000ff": "3 1 0.5 1", "#00ff00": "3 1.5"}
+    (glue,) = root.iter(SVG + "rect")
+    assert glue.get("fill") == "#d9d9d9"
 
 
 def test_a4_card_does_not_fit_a4_paper(doc, popup, card):
@@ -353,8 +410,9 @@ STAMP = "NOT VALID: not enclosed"
 
 
 def stamps_on(page):
-    _, annotations = page_parts(page)
-    return [a for a in annotations if list(a.Text) == [STAMP]]
+    """The stamp's <text> elements in the page's symbol view."""
+    _, marks = page_parts(page)
+    return [t for t in layer_of(marks, "LABEL").iter(SVG + "text") if t.text == STAMP]
 
 
 def test_a_rejected_card_is_laid_out_only_when_forced(doc, popup, tmp_path):
@@ -368,19 +426,20 @@ def test_a_rejected_card_is_laid_out_only_when_forced(doc, popup, tmp_path):
     assert f"CuttingSheet: the card Card is {STAMP}: not_enclosed: " in status
     assert "sticks out of the closed card by 5 mm" in status and "set Force" in status
     assert sheet.SheetSetJson == "" and popup.pages.pages_of(sheet) == []
+    assert not popup.feature.has_layout(sheet)  # PopUp_ExportSheets is disabled
     with pytest.raises(ValueError, match="no layout to export"):
         popup.feature.export_cutting_sheet(sheet, str(tmp_path / "refused"))
 
     sheet.Force = True
     recompute_ok(doc, card, tent, sheet)
-    assert sheet.NotValid == STAMP
+    assert sheet.NotValid == STAMP and popup.feature.has_layout(sheet)
     assert sheet.Diagnostics[0] == f"warning: {STAMP} (laid out because Force is set)"
     assert any("by 5 mm" in finding for finding in sheet.ValidityFindings)
     pages = popup.pages.pages_of(sheet)
     assert len(pages) == sheet.SheetCount == 1
     (stamp,) = stamps_on(pages[0])
-    # Centred across the A4 page (210 mm wide) in its 10 mm top margin band (page y up, 297 mm).
-    assert float(stamp.X) == pytest.approx(105.0) and 287.0 < float(stamp.Y) < 297.0
+    # Centred across the A4 page (210 mm wide) in its 10 mm top margin band (SVG y down).
+    assert float(stamp.get("x")) == pytest.approx(105.0) and 0.0 < float(stamp.get("y")) < 10.0
     paths = popup.feature.export_cutting_sheet(sheet, str(tmp_path / "forced"))
     modelspace = ezdxf.readfile(paths["dxf"]).modelspace()
     texts = [text.dxf.text for text in modelspace.query("TEXT[layer=='LABEL']")]
@@ -442,3 +501,34 @@ def test_survives_save_and_reopen(doc, popup, card, tmp_path, run_fresh_freecad)
         "sheets": 1,
         "ok": True,
     }
+
+
+def label_box(label):
+    """The axis-aligned box of a label's text (its cap height by its Helvetica width), turned."""
+    import math
+
+    from reportlab.pdfbase.pdfmetrics import stringWidth
+
+    width = stringWidth(label["text"], "Helvetica", label["height"] / 0.716)
+    turn = math.radians(label["angle"])
+    half_x = (abs(width * math.cos(turn)) + abs(label["height"] * math.sin(turn))) / 2.0
+    half_y = (abs(width * math.sin(turn)) + abs(label["height"] * math.cos(turn))) / 2.0
+    x, y = label["position"]
+    return (x - half_x, y - half_y, x + half_x, y + half_y)
+
+
+def test_page_labels_are_legible_and_apart(doc, popup):
+    """What the page's symbol draws: every label at least 1.5 mm high (legible on a laser print
+    at 1:1) and no two labels on a sheet overlapping."""
+    sheet = build_card(doc, popup, **TWO_SHEETS)["Sheet"]
+    sheet_set = sheet_set_of(sheet)
+    for index, page in enumerate(popup.pages.pages_of(sheet)):
+        labels = [label for piece in pieces_on(sheet_set, index) for label in piece["labels"]]
+        assert symbol_texts(page_parts(page)[1]) == [label["text"] for label in labels]
+        assert min(label["height"] for label in labels) >= 1.5
+        boxes = [label_box(label) for label in labels]
+        for a in range(len(boxes)):
+            for b in range(a + 1, len(boxes)):
+                (ax0, ay0, ax1, ay1), (bx0, by0, bx1, by1) = boxes[a], boxes[b]
+                apart = ax1 <= bx0 or bx1 <= ax0 or ay1 <= by0 or by1 <= ay0
+                assert apart, (labels[a], labels[b])

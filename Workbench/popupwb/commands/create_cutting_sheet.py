@@ -8,6 +8,7 @@ import popupwb
 from popupwb import card_scaffold, progress
 from popupwb.features.cutting_sheet import is_cutting_sheet
 from popupwb.commands.echoed_python import object_expression, run_echoed
+from popupwb.commands.select_at_fault import select_at_fault
 from popupwb.commands.selection import SelectionError, selected_card
 
 COMMAND_ID = "PopUp_CuttingSheet"
@@ -79,7 +80,10 @@ def create(card=None):
         doc.undo()  # the transaction that added it
         return None
     if "Invalid" in obj.State:
+        # Refused (an invalid card needs Force): say why in one line, select the piece to fix.
         FreeCAD.Console.PrintError(f"{obj.getStatusString()}\n")
+        if select_at_fault(obj):
+            return obj
     FreeCADGui.Selection.clearSelection()
     FreeCADGui.Selection.addSelection(obj)
     return obj

@@ -2,7 +2,9 @@
 .pdf, instructions.pdf, report.json, sheets.json) into a folder chosen in a dialog.
 
 The files come from the layout the CuttingSheet keeps (SheetSetJson): what it shows is what is
-written, with no second layout. export_cutting_sheet() does the work without GUI; it lives with
+written, with no second layout. The command is disabled until there is a layout to write (the
+selected cutting sheet's, or any when none is selected); a failure says why in one line and
+selects the piece to fix (select_at_fault.py). export_cutting_sheet() does the work without GUI; it lives with
 the feature because importing this package needs the GUI.
 """
 
@@ -12,8 +14,9 @@ import FreeCAD
 import FreeCADGui
 
 import popupwb
+from popupwb.commands.select_at_fault import select_at_fault
 from popupwb.commands.selection import SelectionError, selected_cutting_sheet
-from popupwb.features.cutting_sheet import export_cutting_sheet, is_cutting_sheet
+from popupwb.features.cutting_sheet import export_cutting_sheet, has_layout, is_cutting_sheet
 
 COMMAND_ID = "PopUp_ExportSheets"
 
@@ -29,7 +32,12 @@ class ExportSheetsCommand:
 
     def IsActive(self):
         doc = FreeCAD.ActiveDocument
-        return doc is not None and any(is_cutting_sheet(o) for o in doc.Objects)
+        if doc is None:
+            return False
+        try:
+            return has_layout(selected_cutting_sheet(doc))
+        except SelectionError:  # none or several: Activated asks which
+            return any(is_cutting_sheet(o) and has_layout(o) for o in doc.Objects)
 
     def Activated(self):
         from PySide import QtGui
@@ -48,6 +56,8 @@ class ExportSheetsCommand:
             paths = export_cutting_sheet(obj, folder)
         except (OSError, ValueError) as error:
             FreeCAD.Console.PrintError(f"{COMMAND_ID}: {error}\n")
+            if isinstance(error, ValueError):
+                select_at_fault(obj)
             return
         report(obj, paths)
 

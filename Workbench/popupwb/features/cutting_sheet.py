@@ -345,13 +345,18 @@ def diagnostic_line(diagnostic):
     return f"{diagnostic['severity']}: {format_diagnostic(diagnostic)}"
 
 
+def has_layout(obj):
+    """True when the CuttingSheet `obj` holds a layout export can write (not in error)."""
+    return "Invalid" not in obj.State and bool(obj.SheetSetJson)
+
+
 def export_cutting_sheet(obj, folder):
     """Writes the production files of the CuttingSheet `obj` into `folder` (created if needed) from
     the layout it keeps; returns {kind: path(s)} as export.export_sheets. Raises ValueError when
     `obj` has no layout (in error, or never recomputed)."""
     from popupwb.sheets import export
 
-    if "Invalid" in obj.State or not obj.SheetSetJson:
+    if not has_layout(obj):
         reason = obj.getStatusString() if "Invalid" in obj.State else "never recomputed"
         raise ValueError(f"{obj.Label}: no layout to export ({reason}); fix it and recompute")
     return export.export_sheets(json.loads(obj.SheetSetJson), folder, not_valid=not_valid_of(obj))

@@ -26,7 +26,7 @@ def write_svg(sheet_set, path, style=None, not_valid=None):
     if not_valid is not None:
         stamp = stamp_label(sheets.width, sheets.height, sheets.margin, not_valid)
     for sheet, sheet_path in zip(sheets.sheets, paths):
-        _sheet_drawing(sheets, sheet, style, sheet_path, stamp).save(pretty=True)
+        sheet_svg_drawing(sheets, sheet, style, sheet_path, stamp).save(pretty=True)
     return paths
 
 
@@ -36,7 +36,10 @@ def _number(value):
     return "0" if text == "-0" else text
 
 
-def _sheet_drawing(sheets, sheet, style, path, stamp=None):
+def sheet_svg_drawing(sheets, sheet, style, path, stamp=None):
+    """One sheet as an svgwrite.Drawing in millimetres, a group per layer of `style` (glue,
+    mountain, valley, label, cut) and the stamp when given; the file writer and the TechDraw page
+    marks share it."""
     width, height = sheets.width, sheets.height
     drawing = svgwrite.Drawing(
         path,

@@ -1,9 +1,10 @@
 """View provider of a CuttingSheet: its icon, its TechDraw pages (and the outlines they draw) as
-children in the tree, and deleting them with it. Module and class names are stored in .FCStd
-files."""
+children in the tree, and deleting them with it; its pages' windows open fitted and without view
+frames (page_window.py). Module and class names are stored in .FCStd files."""
 
 import popupwb
 from popupwb.stateless_proxy import StatelessProxy
+from popupwb.viewproviders import page_window
 
 
 class CuttingSheetViewProvider(StatelessProxy):
@@ -14,9 +15,11 @@ class CuttingSheetViewProvider(StatelessProxy):
     def __init__(self, vobj):
         vobj.Proxy = self
         self.Object = vobj.Object
+        page_window.install()
 
     def attach(self, vobj):
         self.Object = vobj.Object
+        page_window.install()
 
     def getIcon(self):
         return popupwb.icon_path(self.ICON)
