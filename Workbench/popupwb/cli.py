@@ -24,6 +24,7 @@ import os
 import re
 import sys
 
+from popupwb.patch_titles import add_titles, name_patches
 from popupwb.printable import printable, printable_lines
 from popupwb.readable_file import unreadable
 from popupwb.sheets import sheet_options
@@ -40,7 +41,10 @@ VERSION = "0.1.0"
 # A design to check, lay out or verify, and what the reports say about where it came from (object
 # Name, Label, design file; empty for a .json design). `printed_sides` is what the card's
 # CuttingSheet features say ({CuttingSheet Name: {piece: side}}), empty for anything else.
-Design = collections.namedtuple("Design", "scaffold fields printed_sides", defaults=({},))
+# `patch_titles` ({patch id: maker title}, patch_titles.py) names a card's patches in findings.
+Design = collections.namedtuple(
+    "Design", "scaffold fields printed_sides patch_titles", defaults=({}, {})
+)
 
 
 class InputError(Exception):
@@ -186,6 +190,7 @@ def _card_design(path, card, several):
     """The assembled scaffold of a PopUpCard and its mechanisms; a part that does not build makes
     the input unusable (the message is the feature's error)."""
     from popupwb.card_scaffold import for_card, stray_features
+    from popupwb.patch_titles import titles_of_card
 
     built = for_card(card)
     problems = ([built.card_error] if built.card_error else []) + list(built.errors.values())
@@ -196,7 +201,10 @@ def _card_design(path, card, several):
         hint = " (--card checks another card alone)" if several else ""
         raise InputError(f"{where}: {problems[0]}{hint}")
     return Design(
-        built.scaffold.copy(), {"object": card.Name, "label": card.Label}, _cutting_sides(card)
+        built.scaffold.copy(),
+        {"object": card.Name, "label": card.Label},
+        _cutting_sides(card),
+        titles_of_card(card, built),
     )
 
 
@@ -321,6 +329,7 @@ def _check(popupcore, design, samples, clearance):
         d = rejected[0]
         flag = f"--{d['parameter']} {given[d['parameter']]:g}" if d["parameter"] in given else ""
         raise InputError(f"{flag}: {d['message']}" if flag else d["message"])
+    add_titles(result, design.patch_titles)
     return {**result, **design.fields}
 
 
@@ -372,7 +381,7 @@ def _refuse_invalid(args, design, validity, not_valid):
     return EXIT_INVALID
 
 
-def _print_sheet_summary(report, paths, choice, not_valid):
+def _print_sheet_summary(report, paths, choice, not_valid, titles):
     if choice is not None:
         print(choice.text())
     for path in [
@@ -398,7 +407,8 @@ def _print_sheet_summary(report, paths, choice, not_valid):
     if not_valid is not None:
         print(f"{not_valid.text()}: sheets written anyway (--force), every sheet stamped")
     for d in report["errors"] + report["warnings"]:
-        print(printable(f"{d['severity']}: {d['code']}: {d['message']}"))
+        message = name_patches(d["message"], titles)
+        print(printable(f"{d['severity']}: {d['code']}: {message}"))
 
 
 def cmd_sheet(args):
@@ -455,7 +465,7 @@ def cmd_sheet(args):
         )
         print(json.dumps(report, indent=2))
     else:
-        _print_sheet_summary(report, paths, choice, not_valid)
+        _print_sheet_summary(report, paths, choice, not_valid, design.patch_titles)
     return EXIT_INVALID if report["errors"] or not_valid is not None else EXIT_VALID
 
 

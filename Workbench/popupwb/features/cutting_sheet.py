@@ -215,13 +215,14 @@ class CuttingSheet(StatelessProxy):
         """The card's NotValid (None when the validity check accepts it); raises, leaving the
         feature in error, for a rejected card unless Force is set."""
         from popupwb.core import popupcore
+        from popupwb.patch_titles import add_titles, titles_of_card
         from popupwb.sheets.not_valid_stamp import not_valid_of
 
         try:
             report = popupcore.check_validity(built.scaffold).to_dict()
         except ValueError as error:
             raise self._error(obj, f"the validity check cannot run: {error}") from error
-        not_valid = not_valid_of(report)
+        not_valid = not_valid_of(add_titles(report, titles_of_card(obj.Card, built)))
         if not_valid is not None and not obj.Force:
             first = f": {not_valid.findings[0]}" if not_valid.findings else ""
             raise self._error(
