@@ -340,16 +340,19 @@ def diagnostic_line(diagnostic):
     return f"{diagnostic['severity']}: {format_diagnostic(diagnostic)}"
 
 
-def export_cutting_sheet(obj, folder):
+def export_cutting_sheet(obj, folder, style=None):
     """Writes the production files of the CuttingSheet `obj` into `folder` (created if needed) from
-    the layout it keeps; returns {kind: path(s)} as export.export_sheets. Raises ValueError when
-    `obj` has no layout (in error, or never recomputed)."""
+    the layout it keeps, in the layer_style.SheetStyle `style`; returns {kind: path(s)} as
+    export.export_sheets. Raises ValueError when `obj` has no layout (in error, or never
+    recomputed)."""
     from popupwb.sheets import export
 
     if "Invalid" in obj.State or not obj.SheetSetJson:
         reason = obj.getStatusString() if "Invalid" in obj.State else "never recomputed"
         raise ValueError(f"{obj.Label}: no layout to export ({reason}); fix it and recompute")
-    return export.export_sheets(json.loads(obj.SheetSetJson), folder, not_valid=not_valid_of(obj))
+    return export.export_sheets(
+        json.loads(obj.SheetSetJson), folder, style=style, not_valid=not_valid_of(obj)
+    )
 
 
 def not_valid_of(obj):
