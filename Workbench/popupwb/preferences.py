@@ -246,6 +246,8 @@ def _sheet_options(values, fail):
 
 
 def _style(values, fail):
+    from ezdxf.lldxf.validator import is_valid_layer_name
+
     from popupwb.sheets.layer_style import SheetStyle, nearest_aci
 
     style = SheetStyle()
@@ -255,12 +257,13 @@ def _style(values, fail):
         name_key = f"{layer.capitalize()}LayerName"
         colour_key = f"{layer.capitalize()}LayerColour"
         name = values.get(name_key, base.name)
+        if not name.strip():
+            fail(name_key, "must not be empty")
+        if not is_valid_layer_name(name):
+            fail(name_key, "a DXF layer name cannot hold any of < > / \\ \" : ; ? * | = '")
         rgb = tuple(values.get(colour_key, base.rgb))
         aci = base.aci if rgb == tuple(base.rgb) else nearest_aci(rgb)
-        try:
-            layers[layer] = dataclasses.replace(base, name=name, aci=aci, rgb=rgb)
-        except ValueError as error:
-            fail(name_key, str(error))
+        layers[layer] = dataclasses.replace(base, name=name, aci=aci, rgb=rgb)
     seen = {}
     for layer in LAYERS:
         name = layers[layer].name.upper()  # DXF layer names are case-insensitive

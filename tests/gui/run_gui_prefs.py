@@ -4,8 +4,9 @@ Opens FreeCAD's preferences dialog (Std_DlgPreferences), finds the PopUp group a
 values into it and presses OK, then reads the parameters back from FreeCAD's user.cfg; opens the
 dialog again to see them loaded and to try an empty layer name (refused, one line in the report
 view, the stored name kept); creates a card and a cutting sheet with the toolbar commands and reads
-the preferences off their properties; exports and reads the DXF's layers. Screenshots of the page
-go to <build>/sandbox/gui_prefs/. Run by ctest (gui_prefs); by hand:
+the preferences off their properties; exports and reads the DXF's layers. Then checks a box fold
+card with a step fold inside the box and reads the maker names of its patches in the report view.
+Screenshots of the page go to <build>/sandbox/gui_prefs/. Run by ctest (gui_prefs); by hand:
 
     /usr/bin/python3 tests/gui/run_gui_prefs.py
 """
@@ -132,6 +133,22 @@ def run():
     import ezdxf
     layers = ezdxf.readfile(paths["dxf"]).layers
     result["dxf_layers"] = {layer.dxf.name: layer.dxf.color for layer in layers}
+
+    # Maker names (issue 11, item 6): a box fold with a step fold inside it, checked from the
+    # toolbar; the report view and the card's Diagnostics name the patches as a maker does.
+    from popupwb import make
+    doc = FreeCAD.newDocument("names")
+    card = make.make_card(doc, preset="A5")
+    make.make_box_fold(card)
+    make.make_step_fold(card)
+    doc.recompute()
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(card)
+    Gui.runCommand("PopUp_CheckValidity", 0)
+    wait_until(lambda: "Step fold 'StepFold'" in report_view_text(), 10000)
+    result["names_report_view"] = report_view_text()
+    result["names_diagnostics"] = list(card.Diagnostics)
+    Gui.getMainWindow().grab().save(os.path.join(CONFIG["out_dir"], "maker_names.png"))
 '''
 
 
@@ -194,6 +211,12 @@ def main():
     # ACI 6 is magenta (255, 0, 255) in AutoCAD's palette.
     check("the exported DXF has the cut layer's name and colour", layers.get("Schnitt") == 6)
     check("the other layers keep their names", "MOUNTAIN" in layers and "CUT" not in layers)
+    # The box's top (ground half) is patch 5: after the card's two pages and the box's centre
+    # wall and two side walls (parallel_box.cpp's order C, L, R, TG).
+    top = "Box fold 'BoxFold': top, ground side [#5 BoxFold.TG] passes through Step fold"
+    diagnostics = result.get("names_diagnostics", [])
+    check("the card's Diagnostics use the maker names", any(top in d for d in diagnostics))
+    check("the report view uses the maker names", top in result.get("names_report_view", ""))
     return check.exit_code()
 
 

@@ -109,7 +109,8 @@ def test_an_unset_preference_is_the_built_in_default(cards, home, tmp_path):
     [
         ({"Kerf": 5.0}, ["PopUp preference Kerf = 5 mm", "0 to 2 mm", "Edit › Preferences"]),
         ({"SheetPaper": "B7"}, ["PopUp preference SheetPaper = 'B7'"]),
-        ({"CutLayerName": ""}, ["PopUp preference CutLayerName = ''", "empty layer name"]),
+        ({"CutLayerName": ""}, ["PopUp preference CutLayerName = ''", "must not be empty"]),
+        ({"LabelLayerName": "a/b"}, ["PopUp preference LabelLayerName = 'a/b'", "DXF layer"]),
         ({"GlueLayerName": "cut"}, ["PopUp preference GlueLayerName = 'cut'", "must differ"]),
     ],
 )
