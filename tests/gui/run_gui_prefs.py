@@ -139,8 +139,8 @@ def run():
     from popupwb import make
     doc = FreeCAD.newDocument("names")
     card = make.make_card(doc, preset="A5")
-    make.make_box_fold(card)
-    make.make_step_fold(card)
+    box = make.make_box_fold(card)
+    make.make_step_fold(card, offset=box.Offset.Value)  # inside the box, not placed beside it
     doc.recompute()
     Gui.Selection.clearSelection()
     Gui.Selection.addSelection(card)

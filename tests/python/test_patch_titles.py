@@ -9,8 +9,9 @@ import pytest
 
 from test_cli import popup, run_freecad_script, user_home  # noqa: F401 (fixture)
 
-# A box fold and a step fold at their default places on one A5 card: the step fold sits inside the
-# box, so the box's top halves pass through the step's riser and tread while the card closes.
+# A box fold and a step fold at the box's Offset on one A5 card (an explicit Offset: placement
+# would put the step beside the box): the step sits inside the box, so the box's top halves pass
+# through the step's riser and tread while the card closes.
 BOX_AND_STEP = textwrap.dedent(
     """
     import sys
@@ -19,8 +20,8 @@ BOX_AND_STEP = textwrap.dedent(
 
     doc = FreeCAD.newDocument("box_and_step")
     card = make.make_card(doc, preset="A5")
-    make.make_box_fold(card)
-    make.make_step_fold(card)
+    box = make.make_box_fold(card)
+    make.make_step_fold(card, offset=box.Offset.Value)
     doc.recompute()
     doc.saveAs(sys.argv[1])
     """
@@ -31,8 +32,8 @@ def _overlapping_card(doc):
     import popupwb.make as make
 
     card = make.make_card(doc, preset="A5")
-    make.make_box_fold(card)
-    make.make_step_fold(card)
+    box = make.make_box_fold(card)
+    make.make_step_fold(card, offset=box.Offset.Value)
     doc.recompute()
     return card
 
@@ -79,7 +80,7 @@ def test_popup_check_prints_the_maker_names(tmp_path, user_home):  # noqa: F811
     assert "passes through Step fold 'StepFold': riser [#" in proc.stdout
     # --json keeps the core's message and adds the titles, keyed by patch id.
     report = json.loads(popup("check", str(path), "--json", home=user_home).stdout)
-    finding = report["diagnostics"][0]
+    finding = next(d for d in report["diagnostics"] if "(BoxFold.TG)" in d["message"])
     assert finding["message"].startswith("patch ")
     assert sorted(finding["patch_titles"].values()) == [
         "Box fold 'BoxFold': top, ground side",
