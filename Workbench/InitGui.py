@@ -41,3 +41,4 @@ class PopUpWorkbench(FreeCADGui.Workbench):
 
 
 FreeCADGui.addWorkbench(PopUpWorkbench())
+import popupwb.preferences_page  # noqa: E402,F401 -- adds Edit › Preferences › PopUp

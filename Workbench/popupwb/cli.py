@@ -24,6 +24,7 @@ import os
 import re
 import sys
 
+from popupwb.patch_titles import add_titles, name_patches
 from popupwb.printable import printable, printable_lines
 from popupwb.readable_file import unreadable
 from popupwb.sheets import sheet_options
@@ -40,7 +41,10 @@ VERSION = "0.1.0"
 # A design to check, lay out or verify, and what the reports say about where it came from (object
 # Name, Label, design file; empty for a .json design). `printed_sides` is what the card's
 # CuttingSheet features say ({CuttingSheet Name: {piece: side}}), empty for anything else.
-Design = collections.namedtuple("Design", "scaffold fields printed_sides", defaults=({},))
+# `patch_titles` ({patch id: maker title}, patch_titles.py) names a card's patches in findings.
+Design = collections.namedtuple(
+    "Design", "scaffold fields printed_sides patch_titles", defaults=({}, {})
+)
 
 
 class InputError(Exception):
@@ -186,6 +190,7 @@ def _card_design(path, card, several):
     """The assembled scaffold of a PopUpCard and its mechanisms; a part that does not build makes
     the input unusable (the message is the feature's error)."""
     from popupwb.card_scaffold import for_card, stray_features
+    from popupwb.patch_titles import titles_of_card
 
     built = for_card(card)
     problems = ([built.card_error] if built.card_error else []) + list(built.errors.values())
@@ -196,7 +201,10 @@ def _card_design(path, card, several):
         hint = " (--card checks another card alone)" if several else ""
         raise InputError(f"{where}: {problems[0]}{hint}")
     return Design(
-        built.scaffold.copy(), {"object": card.Name, "label": card.Label}, _cutting_sides(card)
+        built.scaffold.copy(),
+        {"object": card.Name, "label": card.Label},
+        _cutting_sides(card),
+        titles_of_card(card, built),
     )
 
 
@@ -321,6 +329,7 @@ def _check(popupcore, design, samples, clearance):
         d = rejected[0]
         flag = f"--{d['parameter']} {given[d['parameter']]:g}" if d["parameter"] in given else ""
         raise InputError(f"{flag}: {d['message']}" if flag else d["message"])
+    add_titles(result, design.patch_titles)
     return {**result, **design.fields}
 
 
@@ -372,7 +381,7 @@ def _refuse_invalid(args, design, validity, not_valid):
     return EXIT_INVALID
 
 
-def _print_sheet_summary(report, paths, choice, not_valid):
+def _print_sheet_summary(report, paths, choice, not_valid, titles):
     if choice is not None:
         print(choice.text())
     for path in [
@@ -398,7 +407,24 @@ def _print_sheet_summary(report, paths, choice, not_valid):
     if not_valid is not None:
         print(f"{not_valid.text()}: sheets written anyway (--force), every sheet stamped")
     for d in report["errors"] + report["warnings"]:
-        print(printable(f"{d['severity']}: {d['code']}: {d['message']}"))
+        message = name_patches(d["message"], titles)
+        print(printable(f"{d['severity']}: {d['code']}: {message}"))
+
+
+def _preferences():
+    """The maker's PopUp preferences (popupwb/preferences.py), read from FreeCAD's user.cfg; the
+    built-in defaults when FreeCAD is not installed."""
+    from popupwb import preferences
+
+    with _stdout_to_stderr():
+        try:
+            _import_freecad()
+        except InputError:
+            pass
+        try:
+            return preferences.read()
+        except preferences.PreferenceError as e:
+            raise InputError(str(e))
 
 
 def cmd_sheet(args):
@@ -408,6 +434,15 @@ def cmd_sheet(args):
         except ValueError as e:
             raise InputError(f"--paper {args.paper}: {_one_line(e)}")
     _check_sheet_options(sheet_options.from_cli(args))
+    # The preferences are the defaults; each option given overrides its own.
+    prefs = _preferences()
+    args.paper = prefs.sheet_paper if args.paper is None else args.paper
+    args.out = args.out or prefs.export_folder
+    if not args.out:
+        raise InputError(
+            "--out DIR: say which folder to write into (or set the export folder in Edit › "
+            "Preferences › PopUp)"
+        )
     if os.path.exists(args.out) and not os.path.isdir(args.out):
         raise InputError(f"--out {args.out}: is a file, not a folder")
     from popupwb.sheets.export import export_sheets, layout
@@ -420,7 +455,7 @@ def cmd_sheet(args):
     not_valid = not_valid_of(validity)
     if not_valid is not None and not args.force:
         return _refuse_invalid(args, design, validity, not_valid)
-    options = sheet_options.from_cli(args)
+    options = {**prefs.sheet_options, **sheet_options.from_cli(args)}
     if "printed_sides" not in options:  # the card's CuttingSheet says, as in the feature
         card_sides = _card_printed_sides(args, design)
         if card_sides:
@@ -438,6 +473,7 @@ def cmd_sheet(args):
             paths = export_sheets(
                 sheet_set,
                 args.out,
+                style=prefs.style,
                 registration_marks=args.registration_marks,
                 not_valid=not_valid,
             )
@@ -455,7 +491,7 @@ def cmd_sheet(args):
         )
         print(json.dumps(report, indent=2))
     else:
-        _print_sheet_summary(report, paths, choice, not_valid)
+        _print_sheet_summary(report, paths, choice, not_valid, design.patch_titles)
     return EXIT_INVALID if report["errors"] or not_valid is not None else EXIT_VALID
 
 
@@ -530,7 +566,8 @@ def cmd_verify(args):
     # The sheets first: reading them is quick, and a wrong path should not wait for FreeCAD.
     try:
         dxf = sheets_path(args.sheets)
-        drawing = read_dxf(dxf, kerf=args.kerf)
+        # The layers are those `popup sheet` writes: the names in the preferences.
+        drawing = read_dxf(dxf, kerf=args.kerf, style=_preferences().style)
     except DxfReadError as e:
         raise InputError(str(e))
     popupcore, (design,) = load_designs(args.design, args.card, one=True)
@@ -638,12 +675,18 @@ def build_parser():
         help="lay a design out flat for cutting: DXF, SVG, PDF, instructions and a report",
         description="Unfold the design into pieces with glue tabs, fold lines and labels, nest "
         "them onto sheets and write DIR/sheets.dxf, sheets.svg, sheets.pdf, instructions.pdf and "
-        "report.json (and sheets.json, the layout itself).",
+        "report.json (and sheets.json, the layout itself). Paper, kerf, tab width and angle, "
+        "layer names and colours and the folder default to FreeCAD's PopUp preferences (the "
+        "user.cfg of FREECAD_USER_HOME, else ~/.config/FreeCAD); options override them.",
     )
     sheet.add_argument(
         "design", help="design file (.json) or FreeCAD document with a Scaffold or a PopUpCard"
     )
-    sheet.add_argument("--out", required=True, metavar="DIR", help="folder for the files")
+    sheet.add_argument(
+        "--out",
+        metavar="DIR",
+        help="folder for the files (default: the export folder of the PopUp preferences)",
+    )
     sheet.add_argument(
         "--card",
         metavar="NAME",
@@ -652,8 +695,8 @@ def build_parser():
     )
     sheet.add_argument(
         "--paper",
-        help="A4, A3, Letter, Tabloid or WxH in mm (default: the smallest preset holding every "
-        "piece, presets of the system's paper family first)",
+        help="A4, A3, Letter, Tabloid or WxH in mm (default: the PopUp preference, else the "
+        "smallest preset holding every piece, presets of the system's paper family first)",
     )
     sheet_options.add_cli_arguments(sheet)
     sheet.add_argument(

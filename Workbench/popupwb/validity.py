@@ -16,10 +16,14 @@ _VERDICTS = (
 
 
 def format_diagnostic(diagnostic):
-    """A diagnostic dict as one line, "code: message" (the message names what it is about)."""
+    """A diagnostic dict as one line, "code: message" (the message names what it is about). The
+    patches it has titles for ("patch_titles", patch_titles.add_titles) are named as a maker
+    names them: "Box fold 'BoxFold': top, ground side [#5 BoxFold.TG]"."""
+    from popupwb.patch_titles import name_patches
     from popupwb.printable import printable
 
-    return printable(f"{diagnostic.get('code', '')}: {diagnostic.get('message', '')}")
+    message = name_patches(diagnostic.get("message", ""), diagnostic.get("patch_titles"))
+    return printable(f"{diagnostic.get('code', '')}: {message}")
 
 
 def format_report(report):
@@ -131,7 +135,7 @@ def _check_card(card, samples, clearance):
     """The card's whole scaffold; mechanisms that do not build are findings of their own."""
     import FreeCAD
 
-    from popupwb import card_scaffold, progress
+    from popupwb import card_scaffold, patch_titles, progress
     from popupwb.core import popupcore
 
     built = card_scaffold.for_card(card)
@@ -148,6 +152,7 @@ def _check_card(card, samples, clearance):
     for message in problems:
         report["diagnostics"].append(design_error(message))
     report["valid"] = bool(report["valid"]) and not problems
+    patch_titles.add_titles(report, patch_titles.titles_of_card(card, built))
     card.CheckedDesign = built.digest
     if FreeCAD.GuiUp:
         from popupwb.viewproviders import patch_colours

@@ -1,10 +1,11 @@
-"""PopUp_Card: a new folded card (A5 by default) in the active document."""
+"""PopUp_Card: a new folded card (A5 by default, or the preferences' size and paper thickness) in
+the active document."""
 
 import FreeCAD
 import FreeCADGui
 
 import popupwb
-from popupwb import card_scaffold
+from popupwb import card_scaffold, preferences
 from popupwb.commands.echoed_python import run_echoed
 
 COMMAND_ID = "PopUp_Card"
@@ -26,14 +27,19 @@ class CreateCardCommand:
         create()
 
 
-def create(preset="A5"):
-    """What the command does; returns the new card. The console shows the
-    `popupwb.make.make_card(...)` line it ran (and `FreeCAD.newDocument()` without a document)."""
+def create(preset=None):
+    """What the command does; returns the new card, of `preset` (default: the preferences'). The
+    console shows the `popupwb.make.make_card(...)` line it ran (and `FreeCAD.newDocument()`
+    without a document)."""
+    prefs = preferences.read_or_built_in(COMMAND_ID)
+    preset = preset or prefs.card_preset
     if FreeCAD.ActiveDocument is None:
         FreeCADGui.doCommand("FreeCAD.newDocument()")
     doc = FreeCAD.ActiveDocument
-    line = f"card = popupwb.make.make_card(FreeCAD.ActiveDocument, preset={preset!r})"
-    added = run_echoed(doc, "Add pop-up card", [line])
+    lines = [f"card = popupwb.make.make_card(FreeCAD.ActiveDocument, preset={preset!r})"]
+    if prefs.paper_thickness is not None:
+        lines.append(f"card.PaperThickness = {prefs.paper_thickness!r}")
+    added = run_echoed(doc, "Add pop-up card", lines)
     card = next(o for o in added if card_scaffold.is_card(o))
     if FreeCADGui.ActiveDocument is not None:
         FreeCADGui.Selection.clearSelection()

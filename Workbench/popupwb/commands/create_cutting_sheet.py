@@ -5,7 +5,7 @@ import FreeCAD
 import FreeCADGui
 
 import popupwb
-from popupwb import card_scaffold, progress
+from popupwb import card_scaffold, preferences, progress
 from popupwb.features.cutting_sheet import is_cutting_sheet
 from popupwb.commands.echoed_python import object_expression, run_echoed
 from popupwb.commands.select_at_fault import select_at_fault
@@ -54,24 +54,41 @@ class CreateCuttingSheetCommand:
         create()
 
 
+def paper_arguments(prefs, card):
+    """make_cutting_sheet's paper keywords: the preferences' paper (a preset, or its width and
+    height), else the first of FIRST_PAPERS the card fits."""
+    from popupwb.core import popupcore
+    from popupwb.features.cutting_sheet import PAPERS
+
+    if prefs.sheet_paper is None:
+        return f"paper={first_paper(card)!r}"
+    name, width, height = popupcore.paper_size(prefs.sheet_paper)
+    return (
+        f"paper={name!r}" if name in PAPERS else f"paper_width={width!r}, paper_height={height!r}"
+    )
+
+
 def create(card=None):
     """What the command does; returns the new CuttingSheet (None, with a message, without card or
-    when the user cancelled it in its progress dialog).
-    The console shows the `popupwb.make.make_cutting_sheet(...)` line it ran."""
+    when the user cancelled it in its progress dialog). The console shows the
+    `popupwb.make.make_cutting_sheet(...)` line it ran, with the layout options the preferences
+    set."""
     doc = FreeCAD.ActiveDocument
     try:
         card = card or selected_card(doc)
     except SelectionError as error:
         FreeCAD.Console.PrintError(f"{COMMAND_ID}: {error}\n")
         return None
+    prefs = preferences.read_or_built_in(COMMAND_ID)
+    options = "".join(f", {key}={value!r}" for key, value in prefs.sheet_options.items())
     try:
-        paper = first_paper(card)
+        paper = paper_arguments(prefs, card)
     except progress.Cancelled as cancelled:
         FreeCAD.Console.PrintWarning(f"{cancelled}\n")
         return None
     line = (
         f"sheet = popupwb.make.make_cutting_sheet({object_expression(card)}, "
-        f"paper={paper!r}, name={card.Name + 'Sheets'!r})"
+        f"{paper}{options}, name={card.Name + 'Sheets'!r})"
     )
     added = run_echoed(doc, "Add cutting sheets", [line])
     obj = next(o for o in added if is_cutting_sheet(o))

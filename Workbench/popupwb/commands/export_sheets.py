@@ -1,5 +1,6 @@
 """PopUp_ExportSheets: writes the selected CuttingSheet's production files (sheets.dxf, .svg,
-.pdf, instructions.pdf, report.json, sheets.json) into a folder chosen in a dialog.
+.pdf, instructions.pdf, report.json, sheets.json) into a folder chosen in a dialog, which opens
+on the preferences' export folder; the layers have the preferences' names and colours.
 
 The files come from the layout the CuttingSheet keeps (SheetSetJson): what it shows is what is
 written, with no second layout. The command is disabled until there is a layout to write (the
@@ -14,6 +15,7 @@ import FreeCAD
 import FreeCADGui
 
 import popupwb
+from popupwb import preferences
 from popupwb.commands.select_at_fault import select_at_fault
 from popupwb.commands.selection import SelectionError, selected_cutting_sheet
 from popupwb.features.cutting_sheet import export_cutting_sheet, has_layout, is_cutting_sheet
@@ -47,13 +49,14 @@ class ExportSheetsCommand:
         except SelectionError as error:
             FreeCAD.Console.PrintError(f"{COMMAND_ID}: {error}\n")
             return
+        prefs = preferences.read_or_built_in(COMMAND_ID)
         folder = QtGui.QFileDialog.getExistingDirectory(
-            FreeCADGui.getMainWindow(), f"Export {obj.Label} into"
+            FreeCADGui.getMainWindow(), f"Export {obj.Label} into", prefs.export_folder
         )
         if not folder:
             return
         try:
-            paths = export_cutting_sheet(obj, folder)
+            paths = export_cutting_sheet(obj, folder, style=prefs.style)
         except (OSError, ValueError) as error:
             FreeCAD.Console.PrintError(f"{COMMAND_ID}: {error}\n")
             if isinstance(error, ValueError):

@@ -219,6 +219,7 @@ class CuttingSheet(StatelessProxy):
         """The card's NotValid (None when the validity check accepts it); raises, leaving the
         feature in error, for a rejected card unless Force is set."""
         from popupwb.core import popupcore
+        from popupwb.patch_titles import add_titles, titles_of_card
         from popupwb.sheets.not_valid_stamp import not_valid_of
 
         try:
@@ -227,7 +228,7 @@ class CuttingSheet(StatelessProxy):
             ).to_dict()
         except ValueError as error:
             raise self._error(obj, f"the validity check cannot run: {error}") from error
-        not_valid = not_valid_of(report)
+        not_valid = not_valid_of(add_titles(report, titles_of_card(obj.Card, built)))
         if not_valid is not None and not obj.Force:
             first = f": {not_valid.findings[0]}" if not_valid.findings else ""
             raise self._error(
@@ -350,16 +351,19 @@ def has_layout(obj):
     return "Invalid" not in obj.State and bool(obj.SheetSetJson)
 
 
-def export_cutting_sheet(obj, folder):
+def export_cutting_sheet(obj, folder, style=None):
     """Writes the production files of the CuttingSheet `obj` into `folder` (created if needed) from
-    the layout it keeps; returns {kind: path(s)} as export.export_sheets. Raises ValueError when
-    `obj` has no layout (in error, or never recomputed)."""
+    the layout it keeps, in the layer_style.SheetStyle `style`; returns {kind: path(s)} as
+    export.export_sheets. Raises ValueError when `obj` has no layout (in error, or never
+    recomputed)."""
     from popupwb.sheets import export
 
     if not has_layout(obj):
         reason = obj.getStatusString() if "Invalid" in obj.State else "never recomputed"
         raise ValueError(f"{obj.Label}: no layout to export ({reason}); fix it and recompute")
-    return export.export_sheets(json.loads(obj.SheetSetJson), folder, not_valid=not_valid_of(obj))
+    return export.export_sheets(
+        json.loads(obj.SheetSetJson), folder, style=style, not_valid=not_valid_of(obj)
+    )
 
 
 def not_valid_of(obj):

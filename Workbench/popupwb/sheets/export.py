@@ -96,7 +96,11 @@ def export_sheets(sheet_set, out_dir, style=None, registration_marks=False, not_
     paths["sheet_set"] = os.path.join(out_dir, "sheets.json")
     with open(paths["sheet_set"], "w") as f:
         json.dump(sheet_set, f)
-    check = check_dxf(paths["dxf"], expected_cut_length=sheet_set["cut_length"])
+    check = check_dxf(
+        paths["dxf"],
+        expected_cut_length=sheet_set["cut_length"],
+        cut_layer=style.cut.name if style else None,
+    )
     paths["report"] = os.path.join(out_dir, "report.json")
     with open(paths["report"], "w") as f:
         json.dump(report(sheet_set, check, not_valid), f, indent=2)

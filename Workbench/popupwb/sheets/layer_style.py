@@ -1,7 +1,8 @@
 """Layer names, colours and line patterns: one table shared by the DXF, SVG, PDF and PNG writers,
 so a cutter or a person sees the same convention in every file (docs/SHEET_FORMAT.md, "Layers and
 styles"). Change it with dataclasses.replace, e.g.
-`replace(SheetStyle(), cut=replace(SheetStyle().cut, name="Schnitt"))`.
+`replace(SheetStyle(), cut=replace(SheetStyle().cut, name="Schnitt"))`; the maker's preferences
+(popupwb/preferences.py) give the style `popup sheet` and Export cutting sheets write with.
 """
 
 from dataclasses import dataclass
@@ -65,3 +66,19 @@ class SheetStyle:
 
     def glue_fill_unit(self):
         return tuple(channel / 255.0 for channel in self.glue_fill)
+
+
+def nearest_aci(rgb):
+    """The AutoCAD colour index (1..255) closest to (r, g, b), for a DXF layer of a colour the user
+    chose (cutters read the index; ACI 7 draws black on white). Needs ezdxf."""
+    from ezdxf.colors import DXF_DEFAULT_COLORS
+
+    if tuple(rgb) == (0, 0, 0):
+        return 7
+
+    def distance(aci):
+        value = DXF_DEFAULT_COLORS[aci]
+        other = ((value >> 16) & 0xFF, (value >> 8) & 0xFF, value & 0xFF)
+        return sum((a - b) ** 2 for a, b in zip(rgb, other))
+
+    return min(range(1, 256), key=distance)

@@ -36,6 +36,9 @@ SHEET_OPTIONS = (
     ),
 )
 
+# Options whose default a maker can set in the preferences (popupwb/preferences.py).
+PREFERRED = ("Kerf", "TabWidth", "TabAngle")
+
 _BY_KEY = {key: option for option in SHEET_OPTIONS for key in (option.name, option.prop)}
 
 
@@ -126,6 +129,8 @@ def add_cli_arguments(parser):
             )
             continue
         default = f"; default {shown[option.name]:g}" if option.name in shown else ""
+        if option.prop in PREFERRED:
+            default += " or the PopUp preference"
         parser.add_argument(
             cli_flag(option), type=float, metavar=units[option.kind], help=option.doc + default
         )
