@@ -236,6 +236,11 @@ def invalid_card(doc, card, box, v_fold):
     out["outlined_edges"] = {
         o.Name: offending_overlay.outlined_edge_count(o.ViewObject) for o in (card, box, v_fold)
     }
+    root = box.ViewObject.RootNode
+    out["root_children"] = [
+        str(root.getChild(i).getName()) or str(root.getChild(i).getTypeId().getName())
+        for i in range(root.getNumChildren())
+    ]
     out["unselected"] = shot("invalid_unselected")
     Gui.Selection.addSelection(card)
     out["card_selected"] = shot("invalid_card_selected")
@@ -392,6 +397,14 @@ def main():
         and outlined.get("Box", 0) > 0
         and outlined.get("VFold", 0) > 0,
         f"red faces {red_faces}, outlined edges {outlined}",
+    )
+    children = inv.get("root_children") or []
+    check(
+        "the outlines sit after the object's transform (they follow its Placement)",
+        "Transform" in children
+        and "PopUpOffendingOutlines" in children
+        and children.index("Transform") < children.index("PopUpOffendingOutlines"),
+        children,
     )
     unselected, card_selected = inv.get("unselected") or {}, inv.get("card_selected") or {}
     check(

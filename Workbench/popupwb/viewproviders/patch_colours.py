@@ -6,8 +6,6 @@ PopUp_CheckValidity marks the patches its findings name (highlight()); the marks
 card's design is the one checked (a changed design drops them). Kept in memory, never saved.
 """
 
-import FreeCAD
-
 # Paper-like tints per patch role (RGB 0..1); the base patches stay closest to white card.
 ROLE_COLOURS = {
     "ground": (0.93, 0.91, 0.85),
@@ -76,9 +74,8 @@ def colour_object(obj):
         offending_overlay.show_outlines(vobj, [])
         return
     patches, ids, red = shown
-    local = obj.Shape.copy()
-    local.Placement = FreeCAD.Placement()  # the view's transform applies the Placement
-    children = local.childShapes()
+    # Without the Placement (cumLoc False): the view's transform applies it to the outlines.
+    children = obj.Shape.childShapes(True, False)
     if len(children) != len(ids):
         return
     colours, marked = [], []
