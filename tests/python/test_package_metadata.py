@@ -10,7 +10,8 @@ from conftest import SOURCE_DIR, WORKBENCH_DIR
 
 NAMESPACE = {"p": "https://wiki.freecad.org/Package_Metadata"}
 # Modules FreeCAD itself provides (the workbenches and its Qt binding), and this project's own.
-FREECAD_MODULES = {"FreeCAD", "FreeCADGui", "Part", "PySide", "TechDraw", "TechDrawGui"}
+# pivy: the Coin bindings FreeCAD's GUI is built on (a dependency of FreeCAD itself).
+FREECAD_MODULES = {"FreeCAD", "FreeCADGui", "Part", "PySide", "TechDraw", "TechDrawGui", "pivy"}
 OWN_MODULES = {"popupwb", "popupcore"}
 
 
