@@ -16,10 +16,19 @@ class PopUpWorkbench(FreeCADGui.Workbench):
         self.__class__.Icon = popupwb.icon_path("PopUp_Workbench")
 
     def Initialize(self):
-        from popupwb.commands import COMMANDS
+        from popupwb import commands as c
 
-        self.appendToolbar("PopUp", COMMANDS)
-        self.appendMenu("PopUp", COMMANDS)
+        for name, group in c.GROUPS:
+            self.appendToolbar(name, group)
+        self.appendMenu(c.MENU, c.CARD_COMMANDS + [c.SEPARATOR])
+        self.appendMenu(c.MECHANISM_SUBMENU, c.add_mechanism_commands())
+        self.appendMenu(c.MENU, [c.SEPARATOR] + c.CHECK_COMMANDS + [c.SEPARATOR] + c.SHEET_COMMANDS)
+
+    def ContextMenu(self, recipient):
+        from popupwb.commands import context_menu
+
+        for submenu, entries in context_menu.entries():
+            self.appendContextMenu(submenu, entries)
 
     def Activated(self):
         return None

@@ -151,6 +151,8 @@ class CardScaffold:
     patches           {object name: [patch ids]} (the card owns its ground and backdrop)
     errors            {object name: message} for mechanisms that added nothing
     offered           {object name: [popupcore.BasePatchPair]} for the card and built mechanisms
+    parts             {object name: popupcore.MechanismParts} for built mechanisms (their host
+                      pair and swept span, popupwb.placement)
     card_error        message when the card itself cannot be built (then nothing is)
     key, digest       the design key and a short stable hash of it
     """
@@ -163,6 +165,7 @@ class CardScaffold:
         self.patches = {}
         self.errors = {}
         self.offered = {}
+        self.parts = {}
         self.card_error = None
 
     def pair_names(self, name):
@@ -336,6 +339,7 @@ def build(card):
         built.order.append(obj.Name)
         built.patches[obj.Name] = list(parts.patches)
         built.offered[obj.Name] = list(parts.offered)
+        built.parts[obj.Name] = parts
     return built
 
 

@@ -32,6 +32,7 @@ class Mechanism:
     make_name: str  # popupwb.make.<make_name>(host, host_pair=None, name=..., **parameters)
     menu_text: str
     tool_tip: str
+    motion: bool = False  # a motion mechanism (thesis §4.3): its own toolbar and menu group
     task_panel: tuple = PARAMETER_PANEL
 
     @property
@@ -92,6 +93,7 @@ MECHANISMS = (
         "Rotation arm",
         "Add a rotation arm (a flat v-fold whose wing carries an arm past the spine) on the "
         "selected card or box fold",
+        motion=True,
     ),
     Mechanism(
         HorizontalTranslation,
@@ -100,6 +102,7 @@ MECHANISMS = (
         "Horizontal translation",
         "Add a horizontal translation (a step fold and a patch sliding through a slit at its "
         "nose) on the selected card or box fold",
+        motion=True,
     ),
     Mechanism(
         VerticalTranslation,
@@ -108,6 +111,7 @@ MECHANISMS = (
         "Vertical translation",
         "Add a vertical translation (front walls and a two-triangle top whose front corner slides "
         "along the fold) on the selected card or box fold",
+        motion=True,
     ),
     Mechanism(
         FloatingLayer,
@@ -120,6 +124,10 @@ MECHANISMS = (
 )
 
 COMMAND_IDS = [m.command_id for m in MECHANISMS]
+# Structures that stand or carry (tent, step, boxes, floating layer), and the motion mechanisms
+# whose parts slide or swing as the card opens: the two groups of the toolbars and menus.
+STRUCTURE_COMMAND_IDS = [m.command_id for m in MECHANISMS if not m.motion]
+MOTION_COMMAND_IDS = [m.command_id for m in MECHANISMS if m.motion]
 _BY_COMMAND = {m.command_id: m for m in MECHANISMS}
 _BY_TYPE = {m.type_name: m for m in MECHANISMS}
 

@@ -380,8 +380,14 @@ def main():
     registered = set(c for c in Gui.listCommands() if c.startswith("PopUp_"))
     result["mechanism_commands"] = sorted(registered - set(CONFIG["other_commands"]))
     result["registry_commands"] = sorted(mechanism_registry.COMMAND_IDS)
-    toolbar = Gui.getMainWindow().findChild(QtGui.QToolBar, "PopUp")
-    result["toolbar_actions"] = len(toolbar.actions()) if toolbar else 0
+    # One toolbar per group (card, mechanisms, motion mechanisms, check, sheets): their commands.
+    result["toolbar_commands"] = [
+        action.objectName()
+        for toolbar in Gui.getMainWindow().findChildren(QtGui.QToolBar)
+        if toolbar.objectName().startswith("PopUp ")
+        for action in toolbar.actions()
+        if not action.isSeparator()
+    ]
 
     from popupwb.make import make_scaffold
     from popupwb.commands import check_validity
@@ -647,7 +653,11 @@ def main():
         result.get("workbench"),
     )
     check("commands registered", result.get("commands") == COMMANDS, result.get("commands"))
-    check("toolbar has the commands", result.get("toolbar_actions", 0) >= len(COMMANDS))
+    check(
+        "the PopUp toolbars hold every command once",
+        sorted(result.get("toolbar_commands", [])) == sorted(COMMANDS),
+        result.get("toolbar_commands"),
+    )
     check(
         "every mechanism command comes from the registry, and every registry entry is a command",
         result.get("mechanism_commands") == result.get("registry_commands")

@@ -10,7 +10,7 @@ from conftest import SOURCE_DIR, WORKBENCH_DIR
 
 NAMESPACE = {"p": "https://wiki.freecad.org/Package_Metadata"}
 # Modules FreeCAD itself provides (the workbenches and its Qt binding), and this project's own.
-# pivy: the Coin bindings FreeCAD's GUI is built on (a dependency of FreeCAD itself).
+# pivy is the Coin binding FreeCAD ships with (its 3D view is a Coin scene graph).
 FREECAD_MODULES = {"FreeCAD", "FreeCADGui", "Part", "PySide", "TechDraw", "TechDrawGui", "pivy"}
 OWN_MODULES = {"popupwb", "popupcore"}
 

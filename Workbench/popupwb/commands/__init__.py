@@ -1,4 +1,10 @@
-"""GUI commands of the PopUp workbench. Importing this package registers them with FreeCADGui."""
+"""GUI commands of the PopUp workbench. Importing this package registers them with FreeCADGui.
+
+GROUPS is how the toolbars and the menu show them, in a maker's order: make a card, nest
+mechanisms on it (structures, then motion mechanisms), check and play it, lay it out on cutting
+sheets and export them. InitGui builds one toolbar per group, the PopUp menu with a Mechanisms
+submenu, and the right-click menu on cards and mechanisms from these lists.
+"""
 
 from popupwb.commands import (
     animate,
@@ -9,13 +15,33 @@ from popupwb.commands import (
     export_sheets,
     load_design,
 )
-from popupwb.mechanism_registry import COMMAND_IDS as MECHANISM_COMMAND_IDS
+from popupwb.mechanism_registry import MOTION_COMMAND_IDS, STRUCTURE_COMMAND_IDS
 
-# Toolbar and menu order: make a card, nest mechanisms on it, check and play it, lay it out on
-# cutting sheets and export them; design files.
-COMMANDS = (
-    [create_card.COMMAND_ID]
-    + MECHANISM_COMMAND_IDS
-    + [check_validity.COMMAND_ID, animate.COMMAND_ID]
-    + [create_cutting_sheet.COMMAND_ID, export_sheets.COMMAND_ID, load_design.COMMAND_ID]
+SEPARATOR = "Separator"
+
+CARD_COMMANDS = [create_card.COMMAND_ID, load_design.COMMAND_ID]
+MECHANISM_COMMANDS = list(STRUCTURE_COMMAND_IDS)
+MOTION_COMMANDS = list(MOTION_COMMAND_IDS)
+CHECK_COMMANDS = [check_validity.COMMAND_ID, animate.COMMAND_ID]
+SHEET_COMMANDS = [create_cutting_sheet.COMMAND_ID, export_sheets.COMMAND_ID]
+
+# (toolbar name, commands); the name is also the QToolBar's object name.
+GROUPS = (
+    ("PopUp card", CARD_COMMANDS),
+    ("PopUp mechanisms", MECHANISM_COMMANDS),
+    ("PopUp motion mechanisms", MOTION_COMMANDS),
+    ("PopUp check", CHECK_COMMANDS),
+    ("PopUp sheets", SHEET_COMMANDS),
 )
+
+COMMANDS = [command for _, commands in GROUPS for command in commands]
+
+# The PopUp menu: card, the Mechanisms submenu, check, sheets, with separators between.
+MENU = "PopUp"
+MECHANISM_SUBMENU = [MENU, "Mechanisms"]
+ADD_MECHANISM_SUBMENU = "Add mechanism"  # in the right-click menu of a card or host mechanism
+
+
+def add_mechanism_commands():
+    """The mechanism submenu's entries: structures, a separator, motion mechanisms."""
+    return MECHANISM_COMMANDS + [SEPARATOR] + MOTION_COMMANDS

@@ -33,8 +33,9 @@ class CreateMechanismCommand:
 
 def create(command_id, host=None):
     """What the command does; returns the new mechanism (None, with a message, without host).
-    The console shows `popupwb.make.make_<type>(<host>)`: the host's defaults are fitted again
-    on replay, so the line stays short and reproduces the same mechanism."""
+    The console shows `popupwb.make.make_<type>(<host>)`: the host's defaults are fitted and
+    placed beside the mechanisms already on the pair again on replay, so the line stays short and
+    reproduces the same mechanism; with no free span left, the report view says so."""
     doc = FreeCAD.ActiveDocument
     try:
         host = host or selected_host(doc)

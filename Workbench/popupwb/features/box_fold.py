@@ -47,7 +47,9 @@ class BoxFold(MechanismFeature):
 
     @classmethod
     def fitted_parameters(cls, pair):
-        depth = min(pair.ground_depth, pair.backdrop_depth)
+        # Closed, each end panel reaches DepthGround past the box's end (thesis §4.2.2): with the
+        # depth at most half the hinge, the box sweeps at most 70 % of it and leaves room beside.
+        depth = min(pair.ground_depth, pair.backdrop_depth, 0.5 * pair.length)
         return {
             "Offset": 0.3 * pair.length,
             "Width": 0.4 * pair.length,

@@ -138,13 +138,19 @@ class MechanismFeature(StatelessProxy):
 
     def parameters(self, obj):
         """The popupcore params object from the properties (lengths in mm, angles in radians)."""
+        return self.core_parameters(self.parameter_values(obj), obj.Label)
+
+    @classmethod
+    def core_parameters(cls, values, label):
+        """The popupcore params object from plain `values` in PARAMETERS order (mm, degrees);
+        `label` names the object in errors."""
         from popupwb.core import popupcore
 
-        params = getattr(popupcore, self.PARAMS)()
-        for p, value in zip(self.PARAMETERS, self.parameter_values(obj)):
+        params = getattr(popupcore, cls.PARAMS)()
+        for p, value in zip(cls.PARAMETERS, values):
             if p.kind == "integer" and not -(2**31) <= value < 2**31:
                 # The core counts in 32 bits: name the property rather than fail in the binding.
-                raise ValueError(f"{obj.Label}: {p.name} = {value}, must be below 2147483648")
+                raise ValueError(f"{label}: {p.name} = {value}, must be below 2147483648")
             setattr(params, p.field, math.radians(value) if p.kind == "angle" else value)
         return params
 

@@ -4,12 +4,13 @@ make_step_fold, make_box_fold, ...): mechanisms on a host, headless or in the GU
 Keyword parameters are the popupcore field names (foot, run_ground, hinge_angle...) or the property
 names (Foot, RunGround, HingeAngle...); lengths in mm, angles in degrees as in FreeCAD. Parameters
 left out start fitted to the host pair (its hinge length and depths), or at the property defaults
-when the host does not build.
+when the host does not build; without an Offset, a mechanism joining others on the pair is placed
+in its largest free span (popupwb.placement), with a warning when there is none.
 """
 
 import FreeCAD
 
-from popupwb import card_scaffold
+from popupwb import card_scaffold, placement
 from popupwb.mechanism_registry import MECHANISMS
 from popupwb.view_provider_by_name import view_provider_class
 
@@ -55,7 +56,11 @@ def make_mechanism(proxy_class, host, host_pair=None, name=None, **params):
     pair = _host_pair(host, host_pair)
     if pair is not None:
         values.update(proxy_class.fitted_parameters(pair))
-    values.update({by_key[key]: value for key, value in params.items()})
+    given = {by_key[key]: value for key, value in params.items()}
+    values.update(given)
+    # Beside the mechanisms already on that pair, not inside them (thesis §4.2.2).
+    placed = placement.place(proxy_class, host, host_pair, values, given)
+    values = placed.values
 
     doc = host.Document
     obj = doc.addObject("Part::FeaturePython", name or proxy_class.__name__)
@@ -66,6 +71,9 @@ def make_mechanism(proxy_class, host, host_pair=None, name=None, **params):
     obj.HostPair = host_pair
     if FreeCAD.GuiUp:
         view_provider_class(obj.Proxy)(obj.ViewObject)
+    message = placed.message(obj.Label)
+    if message:
+        FreeCAD.Console.PrintWarning(message + "\n")
     return obj
 
 

@@ -3,13 +3,17 @@
 Every parameter of the feature's proxy (MechanismFeature.PARAMETERS) becomes a spin box (lengths
 in mm, angles in degrees) or a check box, and the host pair a combo box. A change is applied at
 once and the document recomputed, so the 3D view follows; the feature's error (the core names the
-bad property) shows under the fields. The whole edit is one undo transaction: OK commits it,
-Cancel aborts it and restores the values the feature had.
+bad property) shows under the fields, and under it the span the mechanism occupies along its host
+pair, drawn on the fold while the panel is open (SpanOverlay). The whole edit is one undo
+transaction: OK commits it, Cancel aborts it and restores the values the feature had.
 """
 
 import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtGui
+
+from popupwb import placement
+from popupwb.taskpanels.span_overlay import SpanOverlay
 
 LIMIT = 1.0e5  # mm or degrees: wide enough for any card, the core judges the real range
 
@@ -69,6 +73,15 @@ class MechanismPanel:
         self.message.setWordWrap(True)
         self.message.setTextInteractionFlags(QtCore.Qt.TextSelectableByMouse)
         layout.addRow(self.message)
+        # Where it stands along its host pair and what it overlaps (thesis §4.2.2), also drawn
+        # on the fold while the panel is open.
+        self.span = QtGui.QLabel()
+        self.span.setObjectName("Span")
+        self.span.setWordWrap(True)
+        self.span.setTextInteractionFlags(QtCore.Qt.TextSelectableByMouse)
+        layout.addRow(self.span)
+        self.overlay = SpanOverlay(obj)
+        self.form.destroyed.connect(lambda *_: self.overlay.remove())
         self.show_status()
 
     # --- applying ---------------------------------------------------------------------------
@@ -100,6 +113,17 @@ class MechanismPanel:
         else:
             self.message.setStyleSheet("color: #206020;")
             self.message.setText(f"{self.obj.Label}: {len(self.obj.Shape.Faces)} faces, builds")
+        report = None if in_error(self.obj) else placement.span_report(self.obj)
+        if report is None:
+            self.span.setText("")
+        else:
+            text, fits = report
+            self.span.setStyleSheet("color: #206020;" if fits else "color: #b06000;")
+            self.span.setText(text)
+        self.overlay.refresh()
+
+    def span_text(self):
+        return self.span.text()
 
     def status_text(self):
         return self.message.text()
@@ -121,6 +145,7 @@ class MechanismPanel:
         return True
 
     def _close(self):
+        self.overlay.remove()
         gui_doc = FreeCADGui.getDocument(self.doc.Name)
         if gui_doc is not None and gui_doc.getInEdit() is not None:
             gui_doc.resetEdit()  # unsetEdit closes the dialog
