@@ -12,9 +12,10 @@
   - An invalid card: Validity goes NotChecked -> Invalid -> NotChecked (design changed) -> Valid;
     the check leaves nothing selected; with the card selected and with the offending mechanism
     selected, red offending faces or outlines stay on screen; the tree icon carries the verdict.
-    Saves docs/images/invalid_card_selected.png (800x600, card selected).
+    Saves invalid_card_selected.png (800x600, card selected) in its sandbox folder, and with
+    --update-docs, when every check passed, copies it to docs/images/.
 
-    POPUP_SOURCE_DIR=. POPUP_BUILD_DIR=build /usr/bin/python3 tests/gui/run_gui_view.py
+    POPUP_SOURCE_DIR=. POPUP_BUILD_DIR=build /usr/bin/python3 tests/gui/run_gui_view.py [--update-docs]
 """
 
 import os
@@ -28,7 +29,8 @@ import gui_harness  # noqa: E402
 sys.path.insert(0, os.path.join(gui_harness.SOURCE_DIR, "tools"))
 import run_demo  # noqa: E402
 
-IMAGE = os.path.join(gui_harness.SOURCE_DIR, "docs", "images", "invalid_card_selected.png")
+IMAGE_NAME = "invalid_card_selected.png"
+DOCS_IMAGE = os.path.join(gui_harness.SOURCE_DIR, "docs", "images", IMAGE_NAME)
 
 # A script's file: a card with a tent, a Scaffold of a design file and a cutting sheet, saved
 # headless (so without GuiDocument.xml).
@@ -61,7 +63,7 @@ def pixels(path):
             inked += rgb != 0xFFFFFF
             red += r > 150 and g < 90 and b < 90
             green += g > 120 and r < 90 and b < 90
-    return {"red": red, "green": green, "inked": inked}
+    return {"red": red, "green": green, "inked": inked, "size": [image.width(), image.height()]}
 
 
 def changed_pixels(name_a, name_b):
@@ -306,9 +308,9 @@ def build_inputs():
 
 def main():
     demo, script = build_inputs()
-    os.makedirs(os.path.dirname(IMAGE), exist_ok=True)
+    image = os.path.join(gui_harness.SANDBOX, "view", IMAGE_NAME)
     code, r, out_dir = gui_harness.run_macro(
-        "view", BODY, {"demo": demo, "script": script, "image": IMAGE}, timeout=400
+        "view", BODY, {"demo": demo, "script": script, "image": image}, timeout=400
     )
     check = gui_harness.Checks("gui_view")
     if r is None:
@@ -427,11 +429,13 @@ def main():
         box_hidden.get("red", 0) < unselected.get("red", 0),
         f"red {unselected.get('red')} -> {box_hidden.get('red')}",
     )
-    image = inv.get("image") or {}
+    shot_counts = inv.get("image") or {}
     check(
-        "docs/images/invalid_card_selected.png: 800x600, red and selection green",
-        os.path.isfile(IMAGE) and image.get("red", 0) > 500 and image.get("green", 0) > 1000,
-        image,
+        f"{IMAGE_NAME}: 800x600, red and selection green",
+        shot_counts.get("size") == [800, 600]
+        and shot_counts.get("red", 0) > 500
+        and shot_counts.get("green", 0) > 1000,
+        shot_counts,
     )
     changed = inv.get("after_change") or []
     check(
@@ -448,7 +452,11 @@ def main():
         and inv.get("outlines_after_recheck") == 0,
         f"{recheck}, {valid_icon}, {inv.get('outlines_after_recheck')}",
     )
-    return check.exit_code()
+    code = check.exit_code()
+    if code == 0 and "--update-docs" in sys.argv[1:]:
+        shutil.copyfile(image, DOCS_IMAGE)
+        print(f"copied {image} to {DOCS_IMAGE}")
+    return code
 
 
 if __name__ == "__main__":
