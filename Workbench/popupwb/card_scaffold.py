@@ -4,7 +4,9 @@ nested on it.
 A card and its mechanisms are one rigid-body system: the core builds and simulates them together.
 Every feature of the card asks this module for the same CardScaffold (built once per design,
 cached by a key made of every property that shapes it) and for the same posed compound at the
-card's FoldAngle (simulated once per angle, cached), then keeps only its own patches.
+card's FoldAngle (simulated once per angle, cached), then shows only its own patches
+(CardScaffold.own_shape): the card its pages, each mechanism its own patches. assembled_shape()
+gives the whole card where one piece is needed.
 
 Design order: the card, then each mechanism after its host (depth first from the card, siblings in
 document order, so the patch ids are the same in every process). A mechanism whose generator
@@ -237,6 +239,30 @@ class CardScaffold:
         else:
             _SHAPES.move_to_end(cache_key)
         return shape
+
+    def own_shape(self, name, angle_deg, thickness=0.0):
+        """Compound of the patches object `name` owns (the card its pages, a mechanism its own),
+        cut from shape_at(): what that object shows, one child per patch in id order."""
+        import Part
+
+        children = self.shape_at(angle_deg, thickness).childShapes()
+        return Part.makeCompound([children[i] for i in self.patches[name]])
+
+
+def assembled_shape(card):
+    """The whole card as one compound (its pages and every mechanism that builds, one child per
+    patch in id order) at its FoldAngle, thickened as shown, placed at card.Placement.
+
+    No object shows it (each shows its own patches, so selecting or hiding a mechanism acts on its
+    faces): this is for what needs the card in one piece (export, tests). ValueError says why the
+    card cannot be built or posed."""
+    built = for_card(card)
+    if built.card_error:
+        raise ValueError(built.card_error)
+    thickness = card.PaperThickness.Value if card.Thickened else 0.0
+    shape = built.shape_at(card.FoldAngle.Value, thickness).copy()
+    shape.Placement = card.Placement
+    return shape
 
 
 def _remember(cache, key, value, size):

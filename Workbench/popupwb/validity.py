@@ -15,6 +15,32 @@ _VERDICTS = (
 )
 
 
+# States of a card's Validity property (stored in files: never rename them). Valid, the older
+# boolean, stays as Validity == VALID for scripts and files that read it.
+NOT_CHECKED, VALID, INVALID = "NotChecked", "Valid", "Invalid"
+VALIDITY_STATES = [NOT_CHECKED, VALID, INVALID]
+
+
+def record_verdict(obj, state, diagnostics=()):
+    """Writes the verdict `state` (one of VALIDITY_STATES) into obj.Validity, when it has one,
+    obj.Valid and obj.Diagnostics, each only when it changes."""
+    if "Validity" in obj.PropertiesList and obj.Validity != state:
+        obj.Validity = state
+    if obj.Valid != (state == VALID):
+        obj.Valid = state == VALID
+    if list(obj.Diagnostics) != list(diagnostics):
+        obj.Diagnostics = list(diagnostics)
+
+
+def verdict_of_old_file(obj):
+    """The Validity of an object saved before it had one: Valid was True only after a passing
+    check, and an invalid verdict always came with findings; anything else was never checked (or
+    its verdict was dropped when the design changed)."""
+    if obj.Valid:
+        return VALID
+    return INVALID if list(obj.Diagnostics) else NOT_CHECKED
+
+
 def format_diagnostic(diagnostic):
     """A diagnostic dict as one line, "code: message" (the message names what it is about). The
     patches it has titles for ("patch_titles", patch_titles.add_titles) are named as a maker
@@ -63,7 +89,7 @@ def format_report(report):
 def run_check(obj, samples=181, clearance=0.0):
     """Checks a Scaffold's or a PopUpCard's design with popupcore.check_validity.
 
-    Writes obj.Valid and obj.Diagnostics, prints the report to the report view and returns the
+    Writes obj.Validity (a card's), obj.Valid and obj.Diagnostics, prints the report to the report view and returns the
     report dict (ValidityReport.to_dict() plus "object": obj.Name). A design that does not load
     (or, for a card, a mechanism that does not build) gives an INVALID report with a
     "design_error" finding instead of an exception. For a card, in the GUI, the faces of the
@@ -82,8 +108,11 @@ def run_check(obj, samples=181, clearance=0.0):
         FreeCAD.Console.PrintWarning(f"{cancelled}\n")
         return None
     report["object"] = obj.Name
-    obj.Diagnostics = [format_diagnostic(d) for d in report["diagnostics"]]
-    obj.Valid = bool(report["valid"])
+    record_verdict(
+        obj,
+        VALID if report["valid"] else INVALID,
+        [format_diagnostic(d) for d in report["diagnostics"]],
+    )
 
     summary = [line for line in format_report(report).splitlines() if not line.startswith("    ")]
     FreeCAD.Console.PrintMessage(f"{obj.Label}: " + "\n".join(summary) + "\n")

@@ -130,9 +130,14 @@ def test_nested_card_matches_the_core_patch_for_patch(doc, popup, card):
         recompute_ok(doc, *card.values())
         state = popup.core.simulate_fold(scaffold, [math.radians(angle)]).states[0]
         outlines = popup.core.posed_outlines(scaffold, state)
-        whole = card["Card"].Shape
+        whole = popup.card_scaffold.assembled_shape(card["Card"])
         assert whole.isValid()
         assert len(whole.Faces) == len(scaffold.patches) == ALL_FACES
+        # The card shows its pages only: every patch is drawn once, by the object owning it.
+        pages = card["Card"].Shape
+        assert len(pages.Faces) == 2
+        for face, patch_id in zip(pages.Faces, (scaffold.ground, scaffold.backdrop)):
+            assert_same_points(vertices(face.OuterWire), outlines[patch_id], 1e-9 * size)
         for name, count in FACES.items():
             shape = card[name].Shape
             assert shape.isValid()
@@ -146,7 +151,7 @@ def test_nested_card_matches_the_core_patch_for_patch(doc, popup, card):
 
 
 def test_closed_card_lies_in_the_page_plane(doc, popup, card):
-    size = card["Card"].Shape.BoundBox.DiagonalLength
+    size = popup.card_scaffold.assembled_shape(card["Card"]).BoundBox.DiagonalLength
     card["Card"].FoldAngle = 0.0
     recompute_ok(doc, *card.values())
     for obj in card.values():
@@ -247,7 +252,10 @@ def test_a_bad_parameter_puts_only_its_feature_in_error(doc, popup, card):
             continue
         assert not in_error(obj), (name, obj.getStatusString())
         assert obj.Shape.isValid()
-    assert len(card["Card"].Shape.Faces) == ALL_FACES - 2  # the card without the tent
+    assert card["Tent"].Shape.isNull()  # no stale tent on screen
+    assert len(card["Card"].Shape.Faces) == 2
+    whole = popup.card_scaffold.assembled_shape(card["Card"])
+    assert len(whole.Faces) == ALL_FACES - 2  # the card without the tent
     for name in ("Box", "Layer", "Step", "VFold", "VBox"):
         assert vertices(card[name].Shape) == pytest.approx(shapes[name], abs=1e-9)
     report = popup.validity.run_check(card["Card"])
@@ -256,7 +264,8 @@ def test_a_bad_parameter_puts_only_its_feature_in_error(doc, popup, card):
 
     card["Tent"].Foot = 10.0  # fixing it clears the error
     recompute_ok(doc, *card.values())
-    assert len(card["Tent"].Shape.Faces) == 2 and len(card["Card"].Shape.Faces) == ALL_FACES
+    assert len(card["Tent"].Shape.Faces) == 2
+    assert len(popup.card_scaffold.assembled_shape(card["Card"]).Faces) == ALL_FACES
 
 
 def test_a_failing_host_takes_down_only_what_stands_on_it(doc, popup, card):
@@ -265,13 +274,15 @@ def test_a_failing_host_takes_down_only_what_stands_on_it(doc, popup, card):
     assert in_error(card["Box"])
     assert card["Box"].getStatusString().startswith("Box: Height = -1 mm, must be > 0")
     assert not in_error(card["VFold"]) and not in_error(card["Card"])
-    assert len(card["Card"].Shape.Faces) == 2 + 2 + 6  # the pages, the v-fold and the v-box
+    assert card["Box"].Shape.isNull()  # no stale box on screen
+    whole = popup.card_scaffold.assembled_shape(card["Card"])
+    assert len(whole.Faces) == 2 + 2 + 6  # the pages, the v-fold and the v-box
     built = popup.card_scaffold.for_card(card["Card"])
     for name in ("Tent", "Layer", "Step"):
         assert built.errors[name] == f"{name}: Host = Box, which is in error; fix it first"
     card["Box"].Height = 30.0
     recompute_ok(doc, *card.values())
-    assert len(card["Card"].Shape.Faces) == ALL_FACES
+    assert len(popup.card_scaffold.assembled_shape(card["Card"]).Faces) == ALL_FACES
 
 
 def test_card_errors_name_the_card_and_the_property(doc, popup, card):
@@ -340,11 +351,12 @@ def test_moving_and_removing_mechanisms_updates_the_card(doc, popup, card):
     assert all(card[n].Card is other for n in ("Tent", "Layer", "Step"))
     assert card["Box"].getEnumerationsOfProperty("HostPair") == ["central fold"]
     recompute_ok(doc, other, *card.values())
-    assert len(card["Card"].Shape.Faces) == 10 and len(other.Shape.Faces) == ALL_FACES - 8
+    whole, other_whole = (popup.card_scaffold.assembled_shape(c) for c in (card["Card"], other))
+    assert len(whole.Faces) == 10 and len(other_whole.Faces) == ALL_FACES - 8
     doc.removeObject("VFold")
     assert "Touched" in card["Card"].State
     recompute_ok(doc, card["Card"])
-    assert len(card["Card"].Shape.Faces) == 8
+    assert len(popup.card_scaffold.assembled_shape(card["Card"]).Faces) == 8
 
 
 def test_mechanisms_move_with_their_card(doc, popup, card, freecad):
@@ -364,9 +376,10 @@ def test_thickened_card_has_one_solid_per_patch(doc, popup, card):
     recompute_ok(doc, *card.values())
     for name, count in FACES.items():
         assert len(card[name].Shape.Solids) == count and card[name].Shape.isValid()
-    assert len(card["Card"].Shape.Solids) == ALL_FACES
+    whole = popup.card_scaffold.assembled_shape(card["Card"])
+    assert len(card["Card"].Shape.Solids) == 2 and len(whole.Solids) == ALL_FACES
     area = sum(p.area() for p in popup.card_scaffold.for_card(card["Card"]).scaffold.patches)
-    assert card["Card"].Shape.Volume == pytest.approx(0.3 * area, rel=1e-6)
+    assert whole.Volume == pytest.approx(0.3 * area, rel=1e-6)
 
 
 def test_make_refuses_unknown_pairs_and_parameters(doc, popup, card):

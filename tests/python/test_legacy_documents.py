@@ -15,7 +15,8 @@ REOPEN = r"""
 import json
 doc = FreeCAD.openDocument(%(path)r)
 card, tent, sheet = (doc.getObject(n) for n in ("Card", "Tent", "CuttingSheet"))
-out = {"proxies": {o.Name: type(o.Proxy).__module__ + "." + type(o.Proxy).__name__
+out = {"verdict": [card.Validity, card.Valid, list(card.Diagnostics)],
+       "proxies": {o.Name: type(o.Proxy).__module__ + "." + type(o.Proxy).__name__
                    for o in (card, tent, sheet) if o.Proxy is not None}}
 # Change the design so every proxy has to execute with today's code.
 tent.Foot = 25.0
@@ -71,7 +72,9 @@ def test_legacy_card_reopens_and_recomputes(run_fresh_freecad, data_dir, name):
         "CuttingSheet": "popupwb.features.cutting_sheet.CuttingSheet",
     }
     assert out["states"] == {n: ["Up-to-date"] for n in ("Card", "Tent", "CuttingSheet")}
-    assert out["faces"] == {"Card": 4, "Tent": 2}
+    # Saved before Validity existed, never checked: migrated to NotChecked, Valid kept.
+    assert out["verdict"] == ["NotChecked", False, []]
+    assert out["faces"] == {"Card": 2, "Tent": 2}  # the card shows its pages, the tent its own
     assert out["slope_backdrop"] == pytest.approx(25.0 + 30.0 - 20.0)  # Foot + Slope - FootBackdrop
     # At 90° each 105 mm page rises 45° out of the plane it lay in at 180°.
     assert out["card_height"] == pytest.approx(105.0 * math.sin(math.radians(45.0)), abs=1e-6)

@@ -1,5 +1,7 @@
 """PopUp_CheckValidity: validity report of the selected Scaffolds and cards (a selected mechanism
-stands for its card; all of them when none is selected)."""
+stands for its card; all of them when none is selected). The offending patches turn red and are
+outlined; the check leaves nothing selected so that no selection colour hides them, and the card's
+Validity (NotChecked, Valid, Invalid) marks its tree icon."""
 
 import FreeCAD
 import FreeCADGui
@@ -52,6 +54,9 @@ class CheckValidityCommand:
             except RuntimeError as error:  # a core failure on one object must not stop the rest
                 FreeCAD.Console.PrintError(f"{obj.Label}: validity check failed: {error}\n")
         last_checked[:] = checked
+        # A selected object is drawn in the selection colour, which covers the red of its
+        # offending faces: leave nothing selected, so the findings are what the view shows.
+        FreeCADGui.Selection.clearSelection()
 
 
 def _show_report_view():

@@ -1,6 +1,7 @@
 """PopUpCard: a folded card of a paper size, carrying the mechanism features nested on it.
 
-Its shape is the whole assembled card (its two pages and every mechanism that builds) at FoldAngle.
+Its shape is its two pages at FoldAngle; each mechanism shows its own patches (so selecting or
+hiding one acts on its faces), and card_scaffold.assembled_shape() gives the whole card.
 The module path, the class name and the property names are stored in .FCStd files: never rename
 them.
 """
@@ -9,7 +10,8 @@ import time
 
 import FreeCAD
 
-from popupwb import card_scaffold
+from popupwb import card_scaffold, validity
+from popupwb.features.no_stale_shape import clears_shape_on_error
 from popupwb.features.one_line_errors import one_line_errors
 from popupwb.features.property_adder import add_validity_outputs, property_adder
 from popupwb.features.signed_lengths import SIGNED, make_signed
@@ -80,6 +82,17 @@ class PopUpCard(StatelessProxy):
         add_validity_outputs(
             add, "True when the last validity check passed; reset when the design changes"
         )
+        if "Validity" not in have:
+            add(
+                "App::PropertyEnumeration",
+                "Validity",
+                "Verdict of the last validity check: NotChecked, Valid or Invalid (back to "
+                "NotChecked when the design changes)",
+                mode=1,
+                output=True,
+            )
+            obj.Validity = validity.VALIDITY_STATES
+            obj.Validity = validity.verdict_of_old_file(obj)
         add(
             "App::PropertyString",
             "CheckedDesign",
@@ -115,6 +128,7 @@ class PopUpCard(StatelessProxy):
         attach_view_provider(obj)  # saved headless: it has none yet
 
     @one_line_errors
+    @clears_shape_on_error
     def execute(self, obj):
         start = time.perf_counter()
         angle = obj.FoldAngle.Value
@@ -128,12 +142,12 @@ class PopUpCard(StatelessProxy):
         built = card_scaffold.for_card(obj)
         if built.card_error:
             raise ValueError(built.card_error)
-        if obj.CheckedDesign != built.digest and (obj.Valid or obj.Diagnostics):
+        if obj.CheckedDesign != built.digest and obj.Validity != validity.NOT_CHECKED:
             # The verdict belongs to another design.
-            obj.Valid = False
-            obj.Diagnostics = []
+            validity.record_verdict(obj, validity.NOT_CHECKED)
         try:
-            shape = built.shape_at(angle, thickness)
+            # Its pages only: each mechanism shows its own patches.
+            shape = built.own_shape(obj.Name, angle, thickness)
         except ValueError as error:
             raise ValueError(f"{obj.Label}: FoldAngle = {angle:g}° {error}") from error
         # Assigning Shape resets Placement to the shape's own: keep the user's placement.

@@ -4,11 +4,13 @@ A mechanism stands on a base patch pair (HostPair) offered by its Host: the card
 a pair a box fold offers. Its parameters are properties; the card's scaffold (popupwb.card_scaffold)
 calls the popupcore generator with them, and execute() shows this mechanism's own patches of the
 card posed at the card's FoldAngle. A parameter the generator refuses puts only this feature (and
-what is nested on it) in error, with the core's message naming the property.
+what is nested on it) in error, with the core's message naming the property, and empties its
+shape: no stale patches on screen. The card shows only its pages, so these are the only faces of
+this mechanism: selecting or hiding it acts on them.
 
 Dependencies: every mechanism links its root card (hidden `Card`), so FreeCAD recomputes it after
-the card when FoldAngle changes; a changed parameter touches the card, whose shape holds every
-patch, and so the whole card follows. Subclass module paths, class names and property names are
+the card when FoldAngle changes; a changed parameter touches the card (it may move every mechanism
+built after this one, and it resets the card's validity verdict), and so the whole card follows. Subclass module paths, class names and property names are
 stored in .FCStd files: never rename them.
 """
 
@@ -18,6 +20,7 @@ import math
 
 
 from popupwb import card_scaffold
+from popupwb.features.no_stale_shape import clears_shape_on_error
 from popupwb.features.one_line_errors import one_line_errors
 from popupwb.stateless_proxy import StatelessProxy
 from popupwb.view_provider_by_name import attach_view_provider
@@ -184,16 +187,16 @@ class MechanismFeature(StatelessProxy):
             old_card = obj.Card
             self.follow_host(obj)
             if old_card is not None and old_card is not obj.Card:
-                old_card.touch()  # its shape still holds this mechanism
+                old_card.touch()  # its other mechanisms move and its verdict is stale
         if prop in ("Host", "HostPair", "Label") or prop in {p.name for p in self.PARAMETERS}:
-            # The card's shape holds every patch, and every mechanism after this one may move:
+            # Every mechanism after this one may move, and the card's verdict is for another design:
             # recompute the card, and through the Card links all its mechanisms.
             card = obj.Card
             if card is not None:
                 card.touch()
 
     def unsetupObject(self, obj):
-        # Removed from the document: the card's shape must drop its patches.
+        # Removed from the document: the mechanisms after it move, the card's verdict is stale.
         card = getattr(obj, "Card", None)
         if card is not None:
             try:
@@ -218,6 +221,7 @@ class MechanismFeature(StatelessProxy):
                     other.Card = card
 
     @one_line_errors
+    @clears_shape_on_error
     def execute(self, obj):
         card = card_scaffold.root_card(obj)  # ValueError names a bad Host
         if obj.Card is not card:
@@ -240,15 +244,12 @@ class MechanismFeature(StatelessProxy):
         angle = card.FoldAngle.Value
         thickness = card.PaperThickness.Value if card.Thickened else 0.0
         try:
-            whole = built.shape_at(angle, thickness)
+            shape = built.own_shape(obj.Name, angle, thickness)
         except ValueError as error:
             raise ValueError(
                 f"{obj.Label}: the card {card.Label} at FoldAngle = {angle:g}° {error}"
             ) from error
-        import Part
-
-        children = whole.childShapes()
-        obj.Shape = Part.makeCompound([children[i] for i in built.patches[obj.Name]])
+        obj.Shape = shape
         obj.Placement = card.Placement  # the mechanism moves with its card
         with _quiet(obj):
             self.update_outputs(obj, built)

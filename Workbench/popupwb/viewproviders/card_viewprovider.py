@@ -1,8 +1,9 @@
-"""View provider of a PopUpCard: its icon, faces coloured by patch role, and the mechanisms
-standing on it as children in the tree. Module and class names are stored in .FCStd files."""
+"""View provider of a PopUpCard: its icon (marked by the validity verdict), its pages coloured by
+patch role, and the mechanisms standing on it as children in the tree. Module and class names are stored in .FCStd files."""
 
 import popupwb
 from popupwb.stateless_proxy import StatelessProxy
+from popupwb.viewproviders.restored_visibility import show_by_role
 
 
 def hosted_on(obj):
@@ -21,6 +22,8 @@ class CardViewProvider(StatelessProxy):
     remembered in attach(), which runs again after a file is opened)."""
 
     ICON = "PopUp_Card"
+    # Icons by the card's Validity: the tree marks a checked card, red when it failed.
+    VERDICT_ICONS = {"Valid": "PopUp_CardValid", "Invalid": "PopUp_CardInvalid"}
 
     def __init__(self, vobj):
         vobj.Proxy = self
@@ -28,21 +31,28 @@ class CardViewProvider(StatelessProxy):
         # Paper is seen from both sides: light the back of every patch too.
         if "Lighting" in vobj.PropertiesList:
             vobj.Lighting = "Two side"
+        show_by_role(vobj, True)  # opened from a file saved headless: the design is shown
 
     def attach(self, vobj):
         self.Object = vobj.Object
 
     def getIcon(self):
-        return popupwb.icon_path(self.ICON)
+        verdict = getattr(getattr(self, "Object", None), "Validity", None)
+        return popupwb.icon_path(self.VERDICT_ICONS.get(verdict, self.ICON))
 
     def updateData(self, obj, prop):
         if prop == "Shape":
             from popupwb.viewproviders.patch_colours import colour_after_shape_change
 
             colour_after_shape_change(obj)
+        elif prop == "Validity" and obj.ViewObject is not None:
+            obj.ViewObject.signalChangeIcon()
 
     def onChanged(self, vobj, prop):
-        return None
+        if prop == "Visibility":
+            from popupwb.viewproviders.offending_overlay import follow_visibility
+
+            follow_visibility(vobj)
 
     def doubleClicked(self, vobj):
         import FreeCADGui

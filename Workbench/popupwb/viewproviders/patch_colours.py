@@ -1,5 +1,6 @@
 """Face colours of every PopUp object that shows patches (Scaffold, card, mechanism): by patch
-role, offending patches in red. The only place that writes DiffuseColor.
+role, offending patches in red and outlined in red over any selection colour. The only place that
+writes DiffuseColor.
 
 PopUp_CheckValidity marks the patches its findings name (highlight()); the marks last while the
 card's design is the one checked (a changed design drops them). Kept in memory, never saved.
@@ -51,37 +52,43 @@ def _shown_patches(obj):
     built = card_scaffold.for_card(card)
     if built.scaffold is None or obj.Name not in built.patches:
         return None
-    patches = built.scaffold.patches
-    ids = list(range(len(patches))) if card_scaffold.is_card(obj) else built.patches[obj.Name]
-    return patches, ids, highlighted(card, built.digest)
+    return built.scaffold.patches, built.patches[obj.Name], highlighted(card, built.digest)
 
 
 def colour_object(obj):
-    """Sets obj.ViewObject.DiffuseColor from the roles of the patches it shows (a Scaffold and a
-    card every patch of their design, a mechanism its own). Its shape holds one child (face, or
-    solid when thickened) per patch; nothing happens when the shape and the design do not match."""
+    """Sets obj.ViewObject.DiffuseColor from the roles of the patches it shows (a Scaffold every
+    patch of its design, a card its pages, a mechanism its own patches), and outlines the red ones
+    (offending_overlay) so that they show even while the object is selected. Its shape holds one
+    child (face, or solid when thickened) per patch; nothing happens when the shape and the design
+    do not match, and an object without a shape (in error) loses its marks."""
+    from popupwb.viewproviders import offending_overlay
+
     try:
         vobj = obj.ViewObject
-        if vobj is None or obj.Shape.isNull():
+        if vobj is None:
             return
-        shown = _shown_patches(obj)
+        shown = None if obj.Shape.isNull() else _shown_patches(obj)
     except (ReferenceError, RuntimeError, AttributeError):
         return  # deleted before a deferred call
     if shown is None:
+        offending_overlay.show_outlines(vobj, [])
         return
     patches, ids, red = shown
-    children = obj.Shape.childShapes()
+    # Without the Placement (cumLoc False): the view's transform applies it to the outlines.
+    children = obj.Shape.childShapes(True, False)
     if len(children) != len(ids):
         return
-    colours = []
+    colours, marked = [], []
     for child, patch_id in zip(children, ids):
         if patch_id in red:
             colour = OFFENDING
+            marked.append(child)
         else:
             colour = ROLE_COLOURS.get(patches[patch_id].role, ROLE_COLOURS["other"])
         colours.extend([colour + (0.0,)] * len(child.Faces))
     if list(vobj.DiffuseColor) != colours:
         vobj.DiffuseColor = colours
+    offending_overlay.show_outlines(vobj, marked)
 
 
 def colour_after_shape_change(obj):

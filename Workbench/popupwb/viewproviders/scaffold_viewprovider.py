@@ -3,6 +3,7 @@ class names are stored in .FCStd files."""
 
 import popupwb
 from popupwb.stateless_proxy import StatelessProxy
+from popupwb.viewproviders.restored_visibility import show_by_role
 
 
 class ScaffoldViewProvider(StatelessProxy):
@@ -10,6 +11,7 @@ class ScaffoldViewProvider(StatelessProxy):
 
     def __init__(self, vobj):
         vobj.Proxy = self
+        show_by_role(vobj, True)  # opened from a file saved headless: the design is shown
 
     def attach(self, vobj):
         return None
@@ -24,4 +26,7 @@ class ScaffoldViewProvider(StatelessProxy):
             colour_after_shape_change(obj)
 
     def onChanged(self, vobj, prop):
-        return None
+        if prop == "Visibility":
+            from popupwb.viewproviders.offending_overlay import follow_visibility
+
+            follow_visibility(vobj)
