@@ -13,6 +13,7 @@
 #include "binding_support.hpp"
 #include "popup/io/brep_export.hpp"
 #include "popup/io/design_file.hpp"
+#include "popup/model/cancel_flag.hpp"
 #include "popup/sheets/pieces.hpp"
 #include "popup/simulation/check_validity.hpp"
 #include "popup/simulation/simulate_fold.hpp"
@@ -90,6 +91,15 @@ PYBIND11_MODULE(popupcore, m)
     m.attr("DesignError") = py::handle(design_error);
     m.attr("OcctError") = py::handle(occt_error);
     m.attr("CgalError") = py::handle(cgal_error);
+    // A call stopped by its CancelFlag: not an error in the design, so not a DesignError.
+    py::register_exception<Cancelled>(m, "Cancelled", PyExc_RuntimeError);
+    py::class_<CancelFlag, std::shared_ptr<CancelFlag>>(
+        m, "CancelFlag",
+        "Pass as cancel= to a long call (check_validity, layout_sheets) running in another "
+        "thread; cancel() makes it raise popupcore.Cancelled at its next checkpoint.")
+        .def(py::init<>())
+        .def("cancel", &CancelFlag::cancel)
+        .def_property_readonly("cancelled", &CancelFlag::cancelled);
     // OCCT's Standard_Failure is not a std::exception in 7.6: translate it by itself.
     py::register_exception_translator([](std::exception_ptr p) {
         try {
@@ -307,13 +317,14 @@ PYBIND11_MODULE(popupcore, m)
 
     m.def(
         "check_validity",
-        [](const Scaffold& s, int samples, double clearance) {
+        [](const Scaffold& s, int samples, double clearance, std::shared_ptr<CancelFlag> cancel) {
             ValidityOptions o;
             o.samples = samples;
             o.clearance = clearance;
+            o.cancel = cancel.get();
             return check_validity(s, o);
         },
         py::arg("scaffold"), py::arg("samples") = 181, py::arg("clearance") = 0.0,
-        py::call_guard<py::gil_scoped_release>(),
+        py::arg("cancel") = nullptr, py::call_guard<py::gil_scoped_release>(),
         "Foldable, stable, intersection-free and enclosed verdicts with diagnostics.");
 }

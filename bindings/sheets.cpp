@@ -71,11 +71,12 @@ void bind_sheets(py::module_& m)
             "The options' range errors as diagnostics (empty when every option is in range).");
     m.def(
         "layout_sheets",
-        [](const Scaffold& s, const SheetOptions& o) {
+        [](const Scaffold& s, SheetOptions o, std::shared_ptr<CancelFlag> cancel) {
             py::gil_scoped_release release;
+            o.cancel = cancel.get();
             return unwrap(layout_sheets(s, o));
         },
-        py::arg("scaffold"), py::arg("options") = SheetOptions{},
+        py::arg("scaffold"), py::arg("options") = SheetOptions{}, py::arg("cancel") = nullptr,
         "Unfolds, tabs, labels, orders, nests and re-folds the card; returns the SheetSet "
         "(to_json() gives the file format, docs/SHEET_FORMAT.md). Raises DesignError naming a bad "
         "option (and its "

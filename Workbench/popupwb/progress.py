@@ -9,12 +9,15 @@
             results.append(steps.run(fit_batch, batch))  # Cancel stops between and within steps
 
 In the GUI each call runs in a worker thread while the main thread keeps the window alive; once
-the work has taken SHOW_AFTER_MS a modal progress dialog appears with Cancel. Cancel raises
-Cancelled in the caller at once, and the result of the abandoned call is dropped. The work must
-not touch FreeCAD documents or Qt (it runs off the main thread): pass it the core calls, which
-release the GIL (popupcore.check_validity, layout_sheets, simulate_fold, ...). The core cannot be
-interrupted inside one call: an abandoned call finishes in the background, using a core until then
-(and quitting FreeCAD waits for it).
+the work has taken SHOW_AFTER_MS a modal progress dialog appears with Cancel. The work must not
+touch FreeCAD documents or Qt (it runs off the main thread): pass it the core calls, which release
+the GIL (popupcore.check_validity, layout_sheets, simulate_fold, ...).
+
+Cancel raises Cancelled in the caller. A core call that takes a `cancel=` keyword stops for real:
+pass `cancel=progress.CANCEL_FLAG` and the call gets a popupcore.CancelFlag that Cancel sets; the
+core gives up at its next checkpoint (one fold-simulation step) and the worker is joined before
+Cancelled is raised, so nothing runs on in the background. A call without one is abandoned: it
+finishes in the background and its result is dropped (quitting FreeCAD waits for it).
 
 Headless (no GUI, or called off the main thread) run() is a plain call and Steps never cancels.
 
@@ -31,6 +34,10 @@ POLL_SECONDS = 0.02
 DIALOG_NAME = "PopUpProgress"  # objectName of the dialog (scripts and the GUI tests find it)
 
 shown = []  # labels of the dialogs shown so far in this session (the GUI tests read it)
+
+
+# Stands for "a fresh popupcore.CancelFlag that Cancel sets" among a call's keyword arguments.
+CANCEL_FLAG = object()
 
 
 class Cancelled(Exception):
@@ -104,15 +111,29 @@ class Steps:
         return False
 
     def run(self, function, *args, **kwargs):
+        flags = [key for key, value in kwargs.items() if value is CANCEL_FLAG]
         if not self.gui:
+            kwargs.update({key: None for key in flags})  # headless: nothing cancels
             result = function(*args, **kwargs)
             self.done += 1
             return result
+        flag = None
+        if flags:
+            from popupwb.core import popupcore
+
+            flag = popupcore.CancelFlag()
+            kwargs.update({key: flag for key in flags})
         worker = _Worker(function, args, kwargs)
         worker.start()
         while worker.is_alive():
             worker.join(POLL_SECONDS)  # waits with the GIL released
-            self._poll()
+            try:
+                self._poll()
+            except Cancelled:
+                if flag is not None:  # the core stops at its next checkpoint: wait for it
+                    flag.cancel()
+                    worker.join()
+                raise
         self.done += 1
         self._update()
         if worker.error is not None:

@@ -145,6 +145,7 @@ def _check_scaffold(obj, samples, clearance):
             scaffold_of(obj),
             samples=samples,
             clearance=clearance,
+            cancel=progress.CANCEL_FLAG,
         ).to_dict()
     except popupcore.DesignError as error:
         return {"valid": False, "diagnostics": list(error.diagnostics)}
@@ -176,6 +177,7 @@ def _check_card(card, samples, clearance):
         built.scaffold,
         samples=samples,
         clearance=clearance,
+        cancel=progress.CANCEL_FLAG,
     ).to_dict()
     problems = list(built.errors.values()) + card_scaffold.stray_features(card.Document)
     for message in problems:

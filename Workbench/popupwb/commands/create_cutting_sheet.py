@@ -30,6 +30,7 @@ def first_paper(card):
                     export.layout,
                     built.scaffold,
                     paper=paper,
+                    cancel=progress.CANCEL_FLAG,
                 )
                 return paper
             except ValueError:

@@ -185,7 +185,11 @@ class CuttingSheet(StatelessProxy):
         not_valid = self._not_valid(obj, built)
         try:
             sheet_set = progress.run(
-                f"{obj.Label}: laying out the sheets", export.layout, built.scaffold, **options
+                f"{obj.Label}: laying out the sheets",
+                export.layout,
+                built.scaffold,
+                cancel=progress.CANCEL_FLAG,
+                **options,
             )
         except ValueError as error:  # DesignError names the option and its range
             raise self._error(obj, property_message(error, obj)) from error
@@ -224,7 +228,10 @@ class CuttingSheet(StatelessProxy):
 
         try:
             report = progress.run(
-                f"{obj.Label}: checking validity", popupcore.check_validity, built.scaffold
+                f"{obj.Label}: checking validity",
+                popupcore.check_validity,
+                built.scaffold,
+                cancel=progress.CANCEL_FLAG,
             ).to_dict()
         except ValueError as error:
             raise self._error(obj, f"the validity check cannot run: {error}") from error

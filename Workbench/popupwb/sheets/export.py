@@ -21,14 +21,15 @@ from .sheet_options import core_options
 from .svg_writer import write_svg
 
 
-def layout(scaffold, **options):
+def layout(scaffold, cancel=None, **options):
     """The sheet set of a scaffold as a dict. Options are those of sheets/sheet_options.py (and
     `paper`), defaults the core's; raises ValueError for an unknown option and
     popupcore.DesignError (a ValueError) naming a bad value and its range, or a piece that does
-    not fit the paper."""
+    not fit the paper. `cancel`: a popupcore.CancelFlag (progress.CANCEL_FLAG) that stops it."""
     from popupwb.core import popupcore
 
-    return json.loads(popupcore.layout_sheets(scaffold, core_options(**options)).to_json())
+    sheet_set = popupcore.layout_sheets(scaffold, core_options(**options), cancel=cancel)
+    return json.loads(sheet_set.to_json())
 
 
 def report(sheet_set, dxf_check=None, not_valid=None):

@@ -212,6 +212,7 @@ Result<SheetSet> layout_sheets(const Scaffold& input, const SheetOptions& option
         }
     }
     for (int g : order) {
+        stop_if_cancelled(options.cancel, "the sheet layout");
         const auto side = options.printed_sides.find("P" + std::to_string(pieces.size() + 1));
         const bool back = side != options.printed_sides.end() && side->second == PrintedSide::back;
         Result<LocalPiece> flat = lay_flat(s, groups[g], 1e-6 * std::max(set.card_size, 1.0), back);
@@ -226,7 +227,9 @@ Result<SheetSet> layout_sheets(const Scaffold& input, const SheetOptions& option
     }
     // One sweep of the design serves the fold directions, the round trip and the stack height.
     const std::vector<double> angles = sweep_angles(s, options.round_trip_angles);
-    const Result<FoldSweep> designed = simulate_fold(s, angles);
+    SimulationOptions simulation;
+    simulation.cancel = options.cancel;
+    const Result<FoldSweep> designed = simulate_fold(s, angles, simulation);
     // A card whose fold never completes cannot be assembled into one that closes: an error here,
     // where the simulator alone only warns.
     for (const Diagnostic& d : designed.diagnostics)
@@ -266,6 +269,7 @@ Result<SheetSet> layout_sheets(const Scaffold& input, const SheetOptions& option
         shapes.push_back({"piece " + id, largest->outer, largest->holes});
     }
 
+    stop_if_cancelled(options.cancel, "the sheet layout");
     Result<Nesting> nesting = nest_shapes(shapes, options.nest);
     if (!nesting.ok) {
         r.fail_with(nesting.diagnostics);
@@ -343,6 +347,7 @@ Result<SheetSet> layout_sheets(const Scaffold& input, const SheetOptions& option
     VerifyOptions check;
     check.printed_sides = options.printed_sides;
     check.angles = options.round_trip_angles;
+    check.cancel = options.cancel;
     Result<RoundTrip> trip = verify_sheets(s, draw_sheets(set), check);
     set.round_trip = trip.value;
     set.round_trip.ok = trip.ok && trip.value.ok;

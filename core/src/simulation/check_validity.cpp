@@ -211,7 +211,9 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
         angles.push_back(s.design_angle);
         std::sort(angles.rbegin(), angles.rend());
     }
-    const Result<FoldSweep> sim = simulate_fold(s, angles);
+    SimulationOptions simulation;
+    simulation.cancel = options.cancel;
+    const Result<FoldSweep> sim = simulate_fold(s, angles, simulation);
     for (const Diagnostic& d : sim.diagnostics)
         report.diagnostics.push_back(d);
     const FoldSweep& sweep = sim.value;
@@ -281,6 +283,7 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
     std::map<std::pair<int, int>, bool> was_crossing;
     const FoldState* previous = nullptr;
     for (const FoldState& st : sweep.states) {
+        stop_if_cancelled(options.cancel, "the validity check");
         const double margin = flat_tolerance + options.clearance;
         for (const auto& [i, j] : candidate_pairs(meshes, graph.value.body_of_patch, st, margin)) {
             const std::pair<int, int> key{i, j};

@@ -70,6 +70,7 @@ struct Start {
 Result<FoldSweep> sweep_from(const Scaffold& s, const BodyGraph& g, const FoldSolver& solver,
                              const Start& start, const std::vector<double>& angles)
 {
+    stop_if_cancelled(solver.options().cancel, "the fold simulation");
     Result<FoldSweep> result;
     std::vector<int> order(angles.size());
     std::iota(order.begin(), order.end(), 0);
@@ -88,6 +89,7 @@ Result<FoldSweep> sweep_from(const Scaffold& s, const BodyGraph& g, const FoldSo
             size_t k = 0;
             for (; k < run->size(); ++k) {
                 const int i = (*run)[k];
+                stop_if_cancelled(solver.options().cancel, "the fold simulation");
                 if (!track.advance_to(angles[i]))
                     break;
                 for (int b : g.components[c])

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "popup/model/cancel_flag.hpp"
 #include "popup/model/result.hpp"
 #include "popup/model/scaffold.hpp"
 #include "popup/sheets/nest.hpp"
@@ -28,6 +29,7 @@ struct SheetOptions {
     bool fold_hints = false;        ///< print M/V beside each fold
     int round_trip_angles = 13;     ///< fold angles sampled by the round trip, ≥ 2
     std::map<std::string, PrintedSide> printed_sides; ///< by piece id (P1, …); front if absent
+    const CancelFlag* cancel = nullptr; ///< set from another thread: the layout throws Cancelled
 };
 
 /// Checks every option; errors name the option, its value and the allowed range.

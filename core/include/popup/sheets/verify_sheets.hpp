@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "popup/model/cancel_flag.hpp"
 #include "popup/model/result.hpp"
 #include "popup/model/scaffold.hpp"
 #include "popup/sheets/sheet_drawing.hpp"
@@ -12,6 +13,7 @@ namespace popup {
 struct VerifyOptions {
     std::map<std::string, PrintedSide> printed_sides; ///< as the sheets were written with
     int angles = 13; ///< fold angles sampled from the design angle to closed, ≥ 2
+    const CancelFlag* cancel = nullptr; ///< set from another thread: verify throws Cancelled
 };
 
 /// Proves cutting files against their design using only what the files hold. The CUT loops,

@@ -1,6 +1,7 @@
 #pragma once
 #include <vector>
 
+#include "popup/model/cancel_flag.hpp"
 #include "popup/model/result.hpp"
 #include "popup/model/scaffold.hpp"
 
@@ -24,6 +25,7 @@ struct SimulationOptions {
     double max_step = 0.0174532925199432958; ///< largest continuation step (1°)
     double min_step = 1e-7;                  ///< below this the motion is declared locked
     int max_newton_iterations = 60;
+    const CancelFlag* cancel = nullptr; ///< checked before each continuation run (throws Cancelled)
 };
 
 /// Drives the base patches from the design angle to each requested angle (radians, 0..π) by

@@ -264,7 +264,9 @@ bool Verifier::prepare(Result<RoundTrip>& r)
     angles_ = sweep_angles(s_, options_.angles);
     for (int k = 0; k < options_.angles; ++k)
         asked_.push_back(s_.design_angle * (1.0 - double(k) / (options_.angles - 1)));
-    designed_ = simulate_fold(s_, angles_);
+    SimulationOptions simulation;
+    simulation.cancel = options_.cancel;
+    designed_ = simulate_fold(s_, angles_, simulation);
     if (!designed_.ok) {
         r.fail(DiagnosticCode::round_trip_failed,
                "the design does not simulate: " + (designed_.diagnostics.empty()
@@ -943,7 +945,9 @@ RoundTrip Verifier::compare(const std::map<int, Pose>& from_sheet)
             }
     }
 
-    const Result<FoldSweep> refolded = simulate_fold(remade, angles_);
+    SimulationOptions simulation;
+    simulation.cancel = options_.cancel;
+    const Result<FoldSweep> refolded = simulate_fold(remade, angles_, simulation);
     if (!refolded.ok) {
         const Diagnostics& why = refolded.diagnostics;
         const std::string message =
