@@ -130,13 +130,15 @@ def run():
     # The slider: FoldAngle and the shape follow. The pages open symmetrically: at 90° each leans
     # 45°, so the card is Depth * cos 45° high; flat open (180°) only the box stands up, Height
     # high.
-    result["z_at_180"] = card.Shape.BoundBox.ZLength
+    from popupwb.card_scaffold import assembled_shape
+
+    result["z_at_180"] = assembled_shape(card).BoundBox.ZLength
     start = time.perf_counter()
     for degrees in range(180, 89, -5):
         panel.slider.setValue(degrees)
     result["ms_per_slider_step"] = 1000.0 * (time.perf_counter() - start) / 19
     result["fold_angle_after_slider"] = card.FoldAngle.Value
-    result["z_at_90"] = card.Shape.BoundBox.ZLength
+    result["z_at_90"] = assembled_shape(card).BoundBox.ZLength
     result["depth"] = card.Depth.Value
     result["box_height"] = box.Height.Value
     result["angle_label"] = panel.angle_label.text()
