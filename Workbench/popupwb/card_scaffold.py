@@ -56,7 +56,10 @@ def root_card(obj):
     while not is_card(current):
         if any(current is other for other in seen):
             chain = " -> ".join(o.Label for o in seen + [current])
-            raise ValueError(f"{obj.Label}: Host = {current.Label}, must not loop ({chain})")
+            # Named by the object's own Host, the property to fix.
+            raise ValueError(
+                f"{obj.Label}: Host = {obj.Host.Label}, must not lead back to itself ({chain})"
+            )
         seen.append(current)
         host = getattr(current, "Host", None)
         if host is None:

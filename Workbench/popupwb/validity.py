@@ -161,6 +161,19 @@ def offending_patches(report):
     return ids
 
 
+def add_build_problems(report, card, built):
+    """Adds to a check_validity report dict of `card` (built: card_scaffold.for_card(card)) a
+    design_error finding per mechanism that does not build and per stray PopUp feature; any such
+    problem makes the card invalid. Its patches were left out of what the core checked."""
+    from popupwb import card_scaffold
+
+    problems = list(built.errors.values()) + card_scaffold.stray_features(card.Document)
+    for message in problems:
+        report["diagnostics"].append(design_error(message))
+    report["valid"] = bool(report["valid"]) and not problems
+    return report
+
+
 def _check_card(card, samples, clearance):
     """The card's whole scaffold; mechanisms that do not build are findings of their own."""
     import FreeCAD
@@ -179,10 +192,7 @@ def _check_card(card, samples, clearance):
         clearance=clearance,
         cancel=progress.CANCEL_FLAG,
     ).to_dict()
-    problems = list(built.errors.values()) + card_scaffold.stray_features(card.Document)
-    for message in problems:
-        report["diagnostics"].append(design_error(message))
-    report["valid"] = bool(report["valid"]) and not problems
+    add_build_problems(report, card, built)
     patch_titles.add_titles(report, patch_titles.titles_of_card(card, built))
     card.CheckedDesign = built.digest
     if FreeCAD.GuiUp:

@@ -365,3 +365,24 @@ def test_every_generator_refuses_a_foreign_base_pair():
 
 if __name__ == "__main__":
     sys.exit(pytest.main([__file__]))
+
+
+def test_a_cutting_sheet_refuses_a_card_whose_mechanism_does_not_build(doc, make):
+    """A Host loop (as in a damaged file) leaves the box and the tent out of the card's scaffold:
+    the bare card folds fine, but the sheets must not be laid out without them."""
+    card = make.make_card(doc)
+    box = make.make_box_fold(card, name="Box")
+    tent = make.make_tent_fold(box, host_pair="Box.top", name="Tent")
+    doc.recompute()
+    box.Host = tent
+    sheet = make.make_cutting_sheet(card, paper="A3")
+    doc.recompute()
+    message = sheet.getStatusString()
+    assert in_error(sheet), message
+    assert "NOT VALID: design_error: Box: Host = Tent, must not lead back to itself" in message
+    assert message.count("must not lead back") == 1, message  # the reason is not repeated
+    assert not sheet.SheetSetJson
+    sheet.Force = True
+    doc.recompute()
+    assert not in_error(sheet), sheet.getStatusString()
+    assert "Box: Host = Tent" in sheet.NotValid

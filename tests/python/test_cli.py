@@ -524,7 +524,10 @@ def test_a_damaged_document_does_not_check_valid(card_documents, user_home, tmp_
         )
 
     looped = rewritten(good, tmp_path / "loop.FCStd", host_loop)
-    assert_clean_error(popup("check", looped, home=user_home), "must not loop")
+    assert_clean_error(
+        popup("check", looped, home=user_home),
+        "Box: Host = Tent, must not lead back to itself (Box -> Tent -> Box)",
+    )
     missing = rewritten(good, tmp_path / "noproxy.FCStd", no_proxy)
     assert_clean_error(popup("check", missing, home=user_home), "Tent", "proxy module missing")
 

@@ -47,7 +47,9 @@ def test_cancelled_messages_name_the_work():
 
 def test_cancel_flag_headless_is_none(freecad):
     seen = []
-    progress.run("Card: checking", lambda cancel=0: seen.append(cancel), cancel=progress.CANCEL_FLAG)
+    progress.run(
+        "Card: checking", lambda cancel=0: seen.append(cancel), cancel=progress.CANCEL_FLAG
+    )
     assert seen == [None]  # headless nothing cancels: the core gets no flag
 
 

@@ -6,7 +6,7 @@ import FreeCADGui
 
 import popupwb
 from popupwb import card_scaffold, preferences, progress
-from popupwb.features.cutting_sheet import is_cutting_sheet
+from popupwb.features.cutting_sheet import has_layout, is_cutting_sheet
 from popupwb.commands.echoed_python import object_expression, run_echoed
 from popupwb.commands.select_at_fault import select_at_fault
 from popupwb.commands.selection import SelectionError, selected_card
@@ -95,6 +95,15 @@ def create(card=None):
     obj = next(o for o in added if is_cutting_sheet(o))
     if progress.is_cancelled_message(obj.getStatusString()):
         FreeCAD.Console.PrintWarning(f"{obj.getStatusString()}: no cutting sheets added\n")
+        doc.undo()  # the transaction that added it
+        return None
+    if "Invalid" not in obj.State and not has_layout(obj):
+        # FreeCAD recomputes nothing in a document whose links form a loop (a damaged file's
+        # Host loop): the sheet was never laid out. Say why rather than leave it silently empty.
+        why = list(card_scaffold.for_card(card).errors.values()) or [
+            "FreeCAD did not recompute the document (see the report view)"
+        ]
+        FreeCAD.Console.PrintError(f"{obj.Label}: not laid out: {'; '.join(why)}\n")
         doc.undo()  # the transaction that added it
         return None
     if "Invalid" in obj.State:

@@ -21,7 +21,7 @@ import json
 
 import FreeCAD
 
-from popupwb import card_scaffold, progress
+from popupwb import card_scaffold, progress, validity
 from popupwb.features.one_line_errors import one_line_errors
 from popupwb.features.property_adder import property_adder
 from popupwb.sheets.sheet_options import SHEET_OPTIONS, defaults, sides_text
@@ -235,9 +235,14 @@ class CuttingSheet(StatelessProxy):
             ).to_dict()
         except ValueError as error:
             raise self._error(obj, f"the validity check cannot run: {error}") from error
+        # A mechanism that does not build (a damaged file's Host loop, say) is left out of the
+        # scaffold: the card is not valid, however well the rest folds.
+        validity.add_build_problems(report, obj.Card, built)
         not_valid = not_valid_of(add_titles(report, titles_of_card(obj.Card, built)))
         if not_valid is not None and not obj.Force:
-            first = f": {not_valid.findings[0]}" if not_valid.findings else ""
+            # The first finding, unless it is already the reason (all verdicts passed).
+            first = not_valid.findings[0] if not_valid.findings else not_valid.reason
+            first = "" if first == not_valid.reason else f": {first}"
             raise self._error(
                 obj,
                 f"the card {obj.Card.Label} is {not_valid.text()}{first}; fix it, or set Force "
