@@ -11,6 +11,7 @@ struct ValidityOptions {
     int samples = 181;      ///< fold angles sampled evenly over 0..180°
     double clearance = 0.0; ///< extra gap (mm) two patches must keep, e.g. the paper thickness
     int refine_depth = 6;   ///< bisection levels between samples when two patches come close
+    bool dense_linear_algebra = false; ///< SimulationOptions::dense_linear_algebra (a baseline)
 };
 
 /// A pair of patches passing through each other at one state.
