@@ -1,6 +1,7 @@
 // Fold sweep, validity check and BREP export against the patch count. BM_SweepNaiveSteps is the
 // same-process baseline for BM_SimulateSweep: the same 181 angles, one simulate_fold call each,
-// so every call restarts the continuation from the design state.
+// so every call restarts the continuation from the design state. The ...Dense rows are the
+// baseline of the sparse solver: the same check with dense normal equations.
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -8,8 +9,6 @@
 
 #include "generated_scaffolds.hpp"
 #include "popup/io/brep_export.hpp"
-#include "popup/mechanisms/box_fold.hpp"
-#include "popup/model/card.hpp"
 #include "popup/simulation/check_validity.hpp"
 #include "popup/simulation/simulate_fold.hpp"
 
@@ -83,42 +82,45 @@ void BM_CheckValidity(benchmark::State& state)
     state.counters["valid"] = valid ? 1.0 : 0.0;
 }
 
+/// check_validity of `scaffold` with the default solver, or with dense normal equations
+/// (SimulationOptions::dense_linear_algebra): the same-process baseline of the sparse solver.
+void check_validity_rows(benchmark::State& state, const popup::Scaffold& scaffold, bool dense)
+{
+    popup::ValidityOptions options;
+    options.dense_linear_algebra = dense;
+    bool valid = false;
+    for (auto _ : state) {
+        popup::ValidityReport report = popup::check_validity(scaffold, options);
+        valid = report.valid();
+        benchmark::DoNotOptimize(valid);
+    }
+    set_counters(state, scaffold);
+    state.counters["valid"] = valid ? 1.0 : 0.0;
+}
+
 /// A box whose ends are made of `panel_pairs` stacked strips (issue 10: 10 pairs took 17.7 s):
 /// how the validity check grows with the panels of one mechanism.
 void BM_CheckValidityBoxPanelPairs(benchmark::State& state)
 {
-    popup::CardParams card;
-    popup::Scaffold scaffold = popup::make_card(card).value;
-    popup::BoxFoldParams box;
-    box.offset = 60.0;
-    box.width = 80.0;
-    box.panel_pairs = static_cast<int>(state.range(0));
-    popup::add_box_fold(scaffold, popup::central_fold(scaffold), box, "B");
-    for (auto _ : state) {
-        popup::ValidityReport report = popup::check_validity(scaffold);
-        benchmark::DoNotOptimize(report);
-    }
-    set_counters(state, scaffold);
+    check_validity_rows(state, popup::fixtures::box_with_panel_pairs(int(state.range(0))), false);
+}
+
+void BM_CheckValidityBoxPanelPairsDense(benchmark::State& state)
+{
+    check_validity_rows(state, popup::fixtures::box_with_panel_pairs(int(state.range(0))), true);
 }
 
 /// `depth` boxes each standing on the top of the one below (issue 10: 10 took 28.8 s): how the
-/// check grows with the bodies of one connected mechanism (dense normal equations: their cube).
+/// check grows with the bodies of one connected mechanism (9 per box). The Dense rows are the
+/// solver before sparse factorisation, whose normal equations grew with the cube of the bodies.
 void BM_CheckValidityNestedBoxes(benchmark::State& state)
 {
-    popup::Scaffold scaffold = popup::make_card(popup::CardParams{}).value;
-    popup::BasePatchPair host = popup::central_fold(scaffold);
-    for (int k = 0; k < state.range(0); ++k) {
-        popup::BoxFoldParams box;
-        box.offset = k == 0 ? 40.0 : 2.0;
-        box.width = 76.0 - 4.0 * k;
-        box.height = box.depth_ground = box.depth_backdrop = 10.0;
-        host = popup::add_box_fold(scaffold, host, box, "B" + std::to_string(k)).value.offered[0];
-    }
-    for (auto _ : state) {
-        popup::ValidityReport report = popup::check_validity(scaffold);
-        benchmark::DoNotOptimize(report);
-    }
-    set_counters(state, scaffold);
+    check_validity_rows(state, popup::fixtures::nested_boxes(int(state.range(0))), false);
+}
+
+void BM_CheckValidityNestedBoxesDense(benchmark::State& state)
+{
+    check_validity_rows(state, popup::fixtures::nested_boxes(int(state.range(0))), true);
 }
 
 /// The tent card with its ground outline split into `vertices` points along its four edges, as
@@ -171,7 +173,13 @@ BENCHMARK(BM_SimulateSweep)->Unit(benchmark::kMillisecond)->Arg(10)->Arg(50)->Ar
 BENCHMARK(BM_SweepNaiveSteps)->Unit(benchmark::kMillisecond)->Arg(10)->Arg(50)->Arg(100)->Arg(200);
 BENCHMARK(BM_CheckValidity)->Unit(benchmark::kMillisecond)->Arg(10)->Arg(50)->Arg(100)->Arg(200);
 BENCHMARK(BM_CheckValidityBoxPanelPairs)->Unit(benchmark::kMillisecond)->Arg(1)->Arg(4)->Arg(10);
+BENCHMARK(BM_CheckValidityBoxPanelPairsDense)
+    ->Unit(benchmark::kMillisecond)
+    ->Arg(1)
+    ->Arg(4)
+    ->Arg(10);
 BENCHMARK(BM_CheckValidityNestedBoxes)->Unit(benchmark::kMillisecond)->Arg(2)->Arg(5)->Arg(10);
+BENCHMARK(BM_CheckValidityNestedBoxesDense)->Unit(benchmark::kMillisecond)->Arg(2)->Arg(5)->Arg(10);
 BENCHMARK(BM_CheckValidityLongOutline)
     ->Unit(benchmark::kMillisecond)
     ->Arg(1000)

@@ -5,6 +5,7 @@
 // dropped or re-attached). Whatever validate_scaffold accepts goes through check_validity with a
 // modest sample count, so one input runs in well under a second. Nothing may crash, leak, hit
 // undefined behaviour or throw.
+#include <algorithm>
 #include <fuzzer/FuzzedDataProvider.h>
 
 #include <chrono>
@@ -46,7 +47,9 @@ double length(FuzzedDataProvider& in, double lo, double hi)
                                          -1e300};
         return special[in.ConsumeIntegralInRange<size_t>(0, std::size(special) - 1)];
     }
-    return in.ConsumeFloatingPointInRange<double>(lo, hi);
+    // A host shorter than `lo` (a small nested pair) leaves an empty range: the provider aborts
+    // on those, so it shrinks to the one value lo.
+    return in.ConsumeFloatingPointInRange<double>(lo, std::max(lo, hi));
 }
 
 void place(FuzzedDataProvider& in, Placement1D& p, const BasePatchPair& host)

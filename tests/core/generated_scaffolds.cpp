@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "popup/mechanisms/box_fold.hpp"
+#include "popup/model/card.hpp"
 #include "test_support.hpp"
 
 namespace popup::fixtures {
@@ -36,6 +38,31 @@ Scaffold generated_scaffold(int patch_count)
                                ") is invalid:" + why);
     }
     return valid.value;
+}
+
+Scaffold nested_boxes(int depth)
+{
+    Scaffold s = popup::make_card(CardParams{}).value;
+    BasePatchPair host = central_fold(s);
+    for (int k = 0; k < depth; ++k) {
+        BoxFoldParams box;
+        box.offset = k == 0 ? 40.0 : 2.0;
+        box.width = 76.0 - 4.0 * k;
+        box.height = box.depth_ground = box.depth_backdrop = 10.0;
+        host = add_box_fold(s, host, box, "B" + std::to_string(k)).value.offered[0];
+    }
+    return s;
+}
+
+Scaffold box_with_panel_pairs(int panel_pairs)
+{
+    Scaffold s = popup::make_card(CardParams{}).value;
+    BoxFoldParams box;
+    box.offset = 60.0;
+    box.width = 80.0;
+    box.panel_pairs = panel_pairs;
+    add_box_fold(s, central_fold(s), box, "B");
+    return s;
 }
 
 } // namespace popup::fixtures

@@ -1,6 +1,8 @@
 #include "validity_cases.hpp"
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "test_support.hpp"
 
@@ -47,6 +49,25 @@ Scaffold five_bar_card()
     add_hinge(s, a, b, at(p2, y0), at(p2, y1));
     add_hinge(s, b, c, at(p3, y0), at(p3, y1));
     add_hinge(s, c, s.backdrop, at(p4, y0), at(p4, y1));
+    return s;
+}
+
+Scaffold chain_card(int links)
+{
+    Scaffold s = make_card(200, 140);
+    s.name = "chain of " + std::to_string(links);
+    const double y0 = 50, y1 = 110, r = 40;
+    auto at = [&](int k, double y) {
+        const double t = M_PI * k / links;
+        return k == links ? Vec3(-r, y, 0) : Vec3(r * std::cos(t), y, r * std::sin(t));
+    };
+    std::vector<int> link;
+    for (int k = 0; k < links; ++k)
+        link.push_back(add_quad(s, at(k, y0), at(k, y1), at(k + 1, y1), at(k + 1, y0)));
+    add_hinge(s, s.ground, link.front(), at(0, y0), at(0, y1));
+    for (int k = 1; k < links; ++k)
+        add_hinge(s, link[k - 1], link[k], at(k, y0), at(k, y1));
+    add_hinge(s, link.back(), s.backdrop, at(links, y0), at(links, y1));
     return s;
 }
 

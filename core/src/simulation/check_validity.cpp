@@ -213,6 +213,7 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
     }
     SimulationOptions simulation;
     simulation.cancel = options.cancel;
+    simulation.dense_linear_algebra = options.dense_linear_algebra;
     const Result<FoldSweep> sim = simulate_fold(s, angles, simulation);
     for (const Diagnostic& d : sim.diagnostics)
         report.diagnostics.push_back(d);
@@ -254,7 +255,7 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
     if (!sim.ok)
         return report;
 
-    const FoldSolver solver(s, graph.value, SimulationOptions{});
+    const FoldSolver solver(s, graph.value, simulation);
 
     // Stable: no free motion with the base held still, at every sampled angle strictly between.
     int unstable_samples = 0;

@@ -2,9 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <utility>
 
 #include <Eigen/Cholesky>
 #include <Eigen/SVD>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
 
 namespace popup {
 
@@ -46,7 +50,155 @@ SlitRow slit_row(const SlitJoint& sl, int e, const Configuration& q, const BodyG
     return r;
 }
 
+using Mat6 = Eigen::Matrix<double, 6, 6>;
+using Vec6 = Eigen::Matrix<double, 6, 1>;
+
 } // namespace
+
+/// Normal equations of one component as a sparse matrix with a fixed pattern: a 6x6 block for
+/// each body and for each pair of bodies a hinge, a slit or a branch hint couples, both
+/// triangles stored. The pattern's fill-reducing ordering and elimination tree are computed once
+/// (analyzePattern); each Newton step only refactorises.
+struct FoldSolver::SparseSystem {
+    using Matrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+    /// Where a 6x6 block's values live: entry (r, k) at values[first + k * stride + r].
+    struct Slot {
+        int first = -1;
+        int stride = 0;
+    };
+
+    Matrix A; ///< JᵀJ (plus hint rows), bodies in fill-reducing order
+    Matrix M; ///< A damped or shifted: same pattern, so the analysed factorisation applies
+    Eigen::VectorXd g;
+    std::vector<int> column;                    ///< first row and column of each body in A
+    std::vector<int> diagonal;                  ///< value index of each diagonal entry
+    std::map<std::pair<int, int>, Slot> blocks; ///< by (row, column) body of the component
+    std::vector<std::array<Slot, 4>> joints;    ///< per component joint: aa, bb, ab, ba (-1: base)
+    std::vector<std::array<Slot, 4>> slits;     ///< per component slit: tt, cc, tc, ct
+    /// Reads the upper triangle of M in place (the bodies are ordered already).
+    Eigen::SimplicialLDLT<Matrix, Eigen::Upper, Eigen::NaturalOrdering<int>> ldlt;
+
+    Slot slot(int row_body, int column_body) const
+    {
+        const auto it = blocks.find({row_body, column_body});
+        return it == blocks.end() ? Slot{} : it->second;
+    }
+    void add(const Slot& s, const Mat6& m)
+    {
+        double* v = A.valuePtr() + s.first;
+        for (int k = 0; k < 6; ++k)
+            for (int r = 0; r < 6; ++r)
+                v[k * s.stride + r] += m(r, k);
+    }
+    /// M = A with `scale` A_ii + `shift` added to each diagonal entry.
+    void set_diagonal(double scale, double shift)
+    {
+        std::copy(A.valuePtr(), A.valuePtr() + A.nonZeros(), M.valuePtr());
+        for (int i : diagonal)
+            M.valuePtr()[i] += scale * A.valuePtr()[i] + shift;
+    }
+    /// Factorises M; false unless every pivot is positive (M positive definite).
+    bool factorize_positive()
+    {
+        ldlt.factorize(M);
+        return ldlt.info() == Eigen::Success && (ldlt.vectorD().array() > 0.0).all();
+    }
+};
+
+FoldSolver::~FoldSolver() = default;
+
+bool FoldSolver::uses_sparse(int c) const
+{
+    return !options_.dense_linear_algebra && int(graph_.components[c].size()) >= kSparseFromBodies;
+}
+
+FoldSolver::SparseSystem& FoldSolver::sparse_system(int c) const
+{
+    if (sparse_[c])
+        return *sparse_[c];
+    auto s = std::make_unique<SparseSystem>();
+    const int nb = int(graph_.components[c].size());
+    // Local body index of a body of this component, -1 for the base (no unknowns).
+    auto local = [&](int body) {
+        return graph_.component_of_body[body] == c ? column_of_body_[body] / 6 : -1;
+    };
+    std::vector<std::vector<int>> rows_of(nb); // block rows present in each block column
+    for (int k = 0; k < nb; ++k)
+        rows_of[k].push_back(k);
+    auto couple = [&](int a, int b) {
+        if (a < 0 || b < 0)
+            return;
+        rows_of[b].push_back(a);
+        rows_of[a].push_back(b);
+    };
+    for (int j : graph_.component_joints[c])
+        couple(local(graph_.joints[j].body_a), local(graph_.joints[j].body_b));
+    for (int k : graph_.component_slits[c])
+        couple(local(graph_.slits[k].body_through), local(graph_.slits[k].body_cut));
+    for (const BranchHint& hint : hints_[c])
+        couple(local(graph_.body_of_patch[hint.patch_a]),
+               local(graph_.body_of_patch[hint.patch_b]));
+    // Fill-reducing order of the bodies (minimum degree on the body graph), so that the scalar
+    // matrix is assembled already permuted and each factorisation reads it in place.
+    Eigen::SparseMatrix<double, Eigen::ColMajor, int> body_pattern(nb, nb);
+    std::vector<Eigen::Triplet<double, int>> links;
+    for (int j = 0; j < nb; ++j) {
+        auto& rows = rows_of[j];
+        std::sort(rows.begin(), rows.end());
+        rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+        for (int i : rows)
+            links.emplace_back(i, j, 1.0);
+    }
+    body_pattern.setFromTriplets(links.begin(), links.end());
+    Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> order; // position -> body
+    Eigen::AMDOrdering<int>()(body_pattern, order);
+    std::vector<int> position(nb);
+    for (int p = 0; p < nb; ++p)
+        position[order.indices()[p]] = p;
+    s->column.resize(nb);
+    for (int k = 0; k < nb; ++k)
+        s->column[k] = 6 * position[k];
+
+    std::vector<int> outer(6 * nb + 1, 0);
+    std::vector<int> inner;
+    for (int p = 0; p < nb; ++p) {
+        const int j = order.indices()[p];
+        std::vector<int> rows; // block rows of column p, by position
+        for (int i : rows_of[j])
+            rows.push_back(position[i]);
+        std::sort(rows.begin(), rows.end());
+        const int stride = int(6 * rows.size());
+        for (int k = 0; k < 6; ++k) {
+            for (int i : rows)
+                for (int r = 0; r < 6; ++r)
+                    inner.push_back(6 * i + r);
+            outer[6 * p + k + 1] = outer[6 * p + k] + stride;
+        }
+        for (size_t e = 0; e < rows.size(); ++e) {
+            s->blocks[{order.indices()[rows[e]], j}] = {outer[6 * p] + int(6 * e), stride};
+            if (rows[e] == p)
+                for (int k = 0; k < 6; ++k)
+                    s->diagonal.push_back(outer[6 * p + k] + int(6 * e) + k);
+        }
+    }
+    const int n = 6 * nb;
+    std::vector<double> zeros(inner.size(), 0.0);
+    s->A = Eigen::Map<SparseSystem::Matrix>(n, n, int(inner.size()), outer.data(), inner.data(),
+                                            zeros.data());
+    s->M = s->A;
+    s->g.resize(n);
+    for (int j : graph_.component_joints[c]) {
+        const int a = local(graph_.joints[j].body_a), b = local(graph_.joints[j].body_b);
+        s->joints.push_back({s->slot(a, a), s->slot(b, b), s->slot(a, b), s->slot(b, a)});
+    }
+    for (int k : graph_.component_slits[c]) {
+        const int t = local(graph_.slits[k].body_through), u = local(graph_.slits[k].body_cut);
+        s->slits.push_back({s->slot(t, t), s->slot(u, u), s->slot(t, u), s->slot(u, t)});
+    }
+    s->ldlt.analyzePattern(s->A);
+    sparse_[c] = std::move(s);
+    return *sparse_[c];
+}
 
 FoldSolver::FoldSolver(const Scaffold& scaffold, const BodyGraph& graph,
                        const SimulationOptions& options)
@@ -64,6 +216,7 @@ FoldSolver::FoldSolver(const Scaffold& scaffold, const BodyGraph& graph,
             {scaffold.patch_index(h.patch_a), scaffold.patch_index(h.patch_b)});
     hints_.resize(graph.components.size());
     undirected_.resize(graph.components.size());
+    sparse_.resize(graph.components.size());
     const Configuration design = design_configuration();
     for (const Joint& joint : graph.joints) {
         const Hinge& h = scaffold.hinges[joint.hinge];
@@ -289,16 +442,133 @@ void FoldSolver::linearize_into(int c, const Configuration& q, const std::vector
     for (const BranchHint& hint : *hints) {
         const double f = hint_residual(hint, q);
         Eigen::VectorXd row(n);
-        for (int col = 0; col < n; ++col) {
-            Configuration moved = q;
-            Eigen::VectorXd d = Eigen::VectorXd::Zero(n);
-            d[col] = 1e-7 * size_;
-            apply_step(c, moved, d);
-            row[col] = (hint_residual(hint, moved) - f) / d[col];
-        }
+        hint_gradient(c, hint, q, f, 0, n, row);
         A += row * row.transpose();
         g += row * f;
     }
+}
+
+template <class Row>
+void FoldSolver::hint_gradient(int c, const BranchHint& hint, const Configuration& q, double f,
+                               int from, int to, Row& row) const
+{
+    const int n = int(6 * graph_.components[c].size());
+    for (int col = from; col < to; ++col) {
+        Configuration moved = q;
+        Eigen::VectorXd d = Eigen::VectorXd::Zero(n);
+        d[col] = 1e-7 * size_;
+        apply_step(c, moved, d);
+        row[col - from] = (hint_residual(hint, moved) - f) / d[col];
+    }
+}
+
+bool FoldSolver::linearize_sparse(int c, const Configuration& q,
+                                  const std::vector<BranchHint>* hints, SparseSystem& s) const
+{
+    s.A.coeffs().setZero();
+    s.g.setZero();
+    const Mat3 I = Mat3::Identity();
+    // Where a free body's unknowns are in the system (its bodies are in their own order).
+    auto at = [&](int body) { return s.column[column_of_body_[body] / 6]; };
+    // The blocks of linearize_into, added in the same order (so the sums are the same).
+    const auto& joints = graph_.component_joints[c];
+    for (size_t k = 0; k < joints.size(); ++k) {
+        const Joint& joint = graph_.joints[joints[k]];
+        const bool free_a = !graph_.is_base(joint.body_a);
+        const bool free_b = !graph_.is_base(joint.body_b);
+        const int ca = free_a ? at(joint.body_a) : -1;
+        const int cb = free_b ? at(joint.body_b) : -1;
+        const auto& slot = s.joints[k];
+        for (const Vec3& x : joint.ends) {
+            const Vec3 arm_a = q[joint.body_a].rotation * (x - graph_.center[joint.body_a]);
+            const Vec3 arm_b = q[joint.body_b].rotation * (x - graph_.center[joint.body_b]);
+            const Vec3 r = (arm_a + q[joint.body_a].position) - (arm_b + q[joint.body_b].position);
+            const Vec3 a = arm_a / size_;
+            const Vec3 b = arm_b / size_;
+            if (free_a) {
+                const Mat3 Sa = -skew(a);
+                Mat6 aa;
+                aa << a.squaredNorm() * I - a * a.transpose(), Sa.transpose(), Sa, I;
+                s.add(slot[0], aa);
+                s.g.segment<3>(ca) += a.cross(r);
+                s.g.segment<3>(ca + 3) += r;
+            }
+            if (free_b) {
+                const Mat3 Sb = skew(b);
+                Mat6 bb;
+                bb << b.squaredNorm() * I - b * b.transpose(), -Sb.transpose(), -Sb, I;
+                s.add(slot[1], bb);
+                s.g.segment<3>(cb) -= b.cross(r);
+                s.g.segment<3>(cb + 3) -= r;
+            }
+            if (free_a && free_b) {
+                Mat6 ab;
+                ab << skew(a) * skew(b), -skew(a), skew(b), -I;
+                s.add(slot[2], ab);
+                s.add(slot[3], ab.transpose());
+            }
+        }
+    }
+    const auto& slits = graph_.component_slits[c];
+    for (size_t k = 0; k < slits.size(); ++k) {
+        const SlitJoint& sl = graph_.slits[slits[k]];
+        const bool free_t = !graph_.is_base(sl.body_through);
+        const bool free_c = !graph_.is_base(sl.body_cut);
+        const int ct = free_t ? at(sl.body_through) : -1;
+        const int cc = free_c ? at(sl.body_cut) : -1;
+        const auto& slot = s.slits[k];
+        for (int e = 0; e < 2; ++e) {
+            const SlitRow row = slit_row(sl, e, q, graph_, size_);
+            if (free_t) {
+                s.add(slot[0], row.through * row.through.transpose());
+                s.g.segment<6>(ct) += row.through * row.distance;
+            }
+            if (free_c) {
+                s.add(slot[1], row.cut * row.cut.transpose());
+                s.g.segment<6>(cc) += row.cut * row.distance;
+            }
+            if (free_t && free_c) {
+                const Mat6 tc = row.through * row.cut.transpose();
+                s.add(slot[2], tc);
+                s.add(slot[3], tc.transpose());
+            }
+        }
+    }
+    if (!hints)
+        return true;
+    // A hint's residual depends on the poses of its two patches' bodies only: its row has at
+    // most 12 non-zero columns, and the other differences are exactly zero.
+    for (const BranchHint& hint : *hints) {
+        int bodies[2], count = 0;
+        for (int patch : {hint.patch_a, hint.patch_b}) {
+            const int body = graph_.body_of_patch[patch];
+            if (graph_.component_of_body[body] == c &&
+                std::find(bodies, bodies + count, body) == bodies + count)
+                bodies[count++] = body;
+        }
+        if (count == 0)
+            continue;
+        SparseSystem::Slot slots[2][2];
+        for (int i = 0; i < count; ++i)
+            for (int j = 0; j < count; ++j) {
+                slots[i][j] =
+                    s.slot(column_of_body_[bodies[i]] / 6, column_of_body_[bodies[j]] / 6);
+                if (slots[i][j].first < 0)
+                    return false;
+            }
+        const double f = hint_residual(hint, q);
+        Vec6 row[2];
+        for (int i = 0; i < count; ++i) {
+            const int col = column_of_body_[bodies[i]];
+            hint_gradient(c, hint, q, f, col, col + 6, row[i]);
+        }
+        for (int i = 0; i < count; ++i) {
+            for (int j = 0; j < count; ++j)
+                s.add(slots[i][j], row[i] * row[j].transpose());
+            s.g.segment<6>(at(bodies[i])) += row[i] * f;
+        }
+    }
+    return true;
 }
 
 void FoldSolver::linearize(int c, const Configuration& q, const std::vector<BranchHint>* hints,
@@ -368,9 +638,100 @@ bool FoldSolver::least_squares_sized(int c, Configuration& q, const std::vector<
     return worst <= tolerance_;
 }
 
+bool FoldSolver::least_squares_sparse(int c, Configuration& q, const std::vector<BranchHint>* hints,
+                                      int max_iterations, bool to_round_off) const
+{
+    // least_squares_sized's iteration, with the damped normal matrix factorised sparsely.
+    SparseSystem& s = sparse_system(c);
+    const auto& bodies = graph_.components[c];
+    std::vector<BodyPose> saved(bodies.size());
+    Eigen::VectorXd step, d(6 * bodies.size());
+    double worst = 0.0;
+    double current = cost(c, q, hints, &worst);
+    double lambda = 1e-6;
+    for (int it = 0; it < max_iterations; ++it) {
+        if (!hints && !to_round_off && worst <= tolerance_)
+            return true;
+        if (!linearize_sparse(c, q, hints, s)) // hints from elsewhere than hints(c)
+            return least_squares_sized<Eigen::Dynamic>(c, q, hints, max_iterations - it,
+                                                       to_round_off);
+        bool improved = false;
+        while (lambda < 1e10) {
+            s.set_diagonal(lambda, 1e-14);
+            // A failed factorisation (round-off on a singular A) is a rejected step: more damping.
+            if (!s.factorize_positive()) {
+                lambda *= 8.0;
+                continue;
+            }
+            step = s.ldlt.solve(s.g);
+            for (size_t k = 0; k < bodies.size(); ++k) // back to the component's order
+                d.segment<6>(6 * k) = -step.segment<6>(s.column[k]);
+            for (size_t k = 0; k < bodies.size(); ++k)
+                saved[k] = q[bodies[k]];
+            apply_step(c, q, d);
+            double worst2 = 0.0;
+            const double trial = cost(c, q, hints, &worst2);
+            if (trial < current || (trial == 0.0 && current == 0.0)) {
+                improved = current - trial > 1e-30 * size_ * size_;
+                current = trial;
+                worst = worst2;
+                lambda = std::max(lambda * 0.25, 1e-12);
+                break;
+            }
+            for (size_t k = 0; k < bodies.size(); ++k)
+                q[bodies[k]] = saved[k];
+            lambda *= 8.0;
+        }
+        if (!improved)
+            break;
+    }
+    if (hints)
+        return true;
+    return worst <= tolerance_;
+}
+
+bool FoldSolver::small_eigenvalue(int c, const Configuration& q) const
+{
+    SparseSystem& s = sparse_system(c);
+    linearize_sparse(c, q, nullptr, s);
+    // A - τI has as many negative pivots as A has eigenvalues below τ (Sylvester's law of
+    // inertia), whatever the elimination order: the rank test is one factorisation.
+    auto below = [&](double largest) {
+        s.set_diagonal(0.0, -1e-12 * std::max(largest, 1.0));
+        return !s.factorize_positive();
+    };
+    // First against the largest absolute column sum, which bounds λmax from above: a
+    // component that passes there passes (the usual case, rigid and regular).
+    double bound = 0.0;
+    for (int k = 0; k < s.A.outerSize(); ++k) {
+        double sum = 0.0;
+        for (int i = s.A.outerIndexPtr()[k]; i < s.A.outerIndexPtr()[k + 1]; ++i)
+            sum += std::abs(s.A.valuePtr()[i]);
+        bound = std::max(bound, sum);
+    }
+    if (!below(bound))
+        return false;
+    // Otherwise λmax itself, by power iteration (the Rayleigh quotient, from below, to 1e-4).
+    Eigen::VectorXd v = Eigen::VectorXd::Ones(s.A.cols()).normalized(), w;
+    double largest = 0.0;
+    for (int it = 0; it < 200; ++it) {
+        w.noalias() = s.A * v;
+        const double rayleigh = v.dot(w);
+        const double norm = w.norm();
+        const bool settled = std::abs(rayleigh - largest) <= 1e-4 * rayleigh;
+        largest = rayleigh;
+        if (settled || !(norm > 0.0))
+            break;
+        v = w / norm;
+    }
+    return below(largest);
+}
+
 bool FoldSolver::least_squares(int c, Configuration& q, const std::vector<BranchHint>* hints,
                                int max_iterations, bool to_round_off) const
 {
+    if (uses_sparse(c))
+        return least_squares_sparse(c, q, hints, max_iterations, to_round_off);
     // Most mechanisms are one or two free bodies: fixed-size algebra avoids heap traffic there.
     switch (graph_.components[c].size()) {
     case 0:
@@ -397,6 +758,8 @@ template <int N> bool FoldSolver::rigid_sized(int c, const Configuration& q) con
 
 bool FoldSolver::rigid(int c, const Configuration& q) const
 {
+    if (uses_sparse(c))
+        return !small_eigenvalue(c, q);
     switch (graph_.components[c].size()) {
     case 0:
         return true;
@@ -494,6 +857,11 @@ bool ComponentTrack::advance_to(double target)
 
 bool FoldSolver::singular(int c, const Configuration& q) const
 {
+    // σ² are the eigenvalues of JᵀJ when J has at least as many rows as columns.
+    const size_t rows =
+        6 * graph_.component_joints[c].size() + 2 * graph_.component_slits[c].size();
+    if (uses_sparse(c) && rows >= 6 * graph_.components[c].size())
+        return small_eigenvalue(c, q);
     const Eigen::MatrixXd J = jacobian(c, q);
     if (J.cols() == 0)
         return false;

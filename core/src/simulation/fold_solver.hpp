@@ -1,8 +1,10 @@
 #pragma once
 // Internal: rigid-body kinematics of a scaffold. Every free body has a pose x -> R (x - c) + p
 // (c its design-state centre); hinges are point-coincidence constraints at both hinge ends; the
-// base bodies are driven by the fold angle. Solved per component by damped Gauss-Newton.
+// base bodies are driven by the fold angle. Solved per component by damped Gauss-Newton: dense
+// normal equations for small components, a sparse factorisation from kSparseFromBodies bodies.
 #include <array>
+#include <memory>
 #include <vector>
 
 #include "body_graph.hpp"
@@ -25,9 +27,18 @@ struct BranchHint {
     double sign = 1.0; ///< +1 valley, -1 mountain
 };
 
+/// Components of this many free bodies or more are solved with sparse normal equations (unless
+/// SimulationOptions::dense_linear_algebra): below it the dense Cholesky is as fast.
+constexpr int kSparseFromBodies = 6;
+
+/// Not thread-safe: a solver keeps per-component factorisation workspaces between calls (every
+/// caller builds its own solver).
 class FoldSolver {
 public:
     FoldSolver(const Scaffold& scaffold, const BodyGraph& graph, const SimulationOptions& options);
+    ~FoldSolver();
+    FoldSolver(const FoldSolver&) = delete;
+    FoldSolver& operator=(const FoldSolver&) = delete;
 
     const BodyGraph& graph() const { return graph_; }
     const SimulationOptions& options() const { return options_; }
@@ -56,10 +67,15 @@ public:
     /// (rotation columns scaled by the model size so every column is in mm).
     Eigen::MatrixXd jacobian(int c, const Configuration& q) const;
     /// No free motion of component c at q with the base held still: the pivoted LDLᵀ of JᵀJ
-    /// has no pivot below 1e-12 of the largest (columns are in mm, so pivots are O(1)).
+    /// has no pivot below 1e-12 of the largest (columns are in mm, so pivots are O(1)). Sparse
+    /// components: no eigenvalue of JᵀJ at or below 1e-12 max(λmax, 1) (docs/MATH.md, Solver).
     bool rigid(int c, const Configuration& q) const;
-    /// The component's constraints lose rank at q (a branch point or a free motion).
+    /// The component's constraints lose rank at q (a branch point or a free motion): a singular
+    /// value of J at or below 1e-6 max(σmax, 1), by SVD, or for sparse components by the same
+    /// test on the eigenvalues of JᵀJ.
     bool singular(int c, const Configuration& q) const;
+    /// Whether component c is solved with sparse normal equations.
+    bool uses_sparse(int c) const;
 
     /// Normal equations JᵀJ and Jᵀr of component c's least-squares problem (hinge ends, plus
     /// hints when given), with rotation columns scaled by the model size.
@@ -67,6 +83,8 @@ public:
                    Eigen::MatrixXd& A, Eigen::VectorXd& g) const;
 
 private:
+    struct SparseSystem; // fold_solver.cpp
+
     void constraint_system(int c, const Configuration& q, Eigen::VectorXd& r,
                            Eigen::MatrixXd& J) const;
     bool least_squares(int c, Configuration& q, const std::vector<BranchHint>* hints,
@@ -79,6 +97,21 @@ private:
     template <class Matrix, class Vector>
     void linearize_into(int c, const Configuration& q, const std::vector<BranchHint>* hints,
                         Matrix& A, Vector& g) const;
+    /// Finite-difference gradient of a hint's residual over the unknowns of component c: its
+    /// columns `from`..`to`; apply_step moves nothing else, so the others are exactly zero.
+    template <class Row>
+    void hint_gradient(int c, const BranchHint& hint, const Configuration& q, double f, int from,
+                       int to, Row& row) const;
+    SparseSystem& sparse_system(int c) const;
+    /// Normal equations of component c into its sparse system (same sums as linearize_into);
+    /// false when a hint couples two bodies outside the system's pattern.
+    bool linearize_sparse(int c, const Configuration& q, const std::vector<BranchHint>* hints,
+                          SparseSystem& s) const;
+    bool least_squares_sparse(int c, Configuration& q, const std::vector<BranchHint>* hints,
+                              int max_iterations, bool to_round_off) const;
+    /// Sparse rank test: JᵀJ has an eigenvalue at or below 1e-12 max(λmax, 1) (inertia of the
+    /// shifted matrix, Sylvester's law).
+    bool small_eigenvalue(int c, const Configuration& q) const;
     double hint_residual(const BranchHint& hint, const Configuration& q) const;
     /// Sum of squared residuals (hinge ends, and hints when given); `worst` gets the largest
     /// hinge coordinate mismatch.
@@ -92,10 +125,10 @@ private:
     double tolerance_ = 1e-11;
     std::vector<std::vector<BranchHint>> hints_;
     std::vector<std::vector<int>> undirected_;
-    std::vector<int> column_of_body_;
-    std::vector<std::array<int, 2>>
-        hinge_patches_; ///< patch indices of each hinge  ///< first unknown of each free body
-                        ///< within its component
+    std::vector<int> column_of_body_; ///< first unknown of each free body within its component
+    std::vector<std::array<int, 2>> hinge_patches_; ///< patch indices of each hinge
+    /// Per component, built on first use by sparse_system().
+    mutable std::vector<std::unique_ptr<SparseSystem>> sparse_;
 };
 
 /// Continuation of one component from the design state toward a sequence of angles.

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "generated_scaffolds.hpp"
 #include "popup/simulation/check_validity.hpp"
 #include "sheet_designs.hpp"
 #include "test_support.hpp"
@@ -261,4 +262,38 @@ TEST(CheckValidity, ClearanceIsBoundedAndNeverTurnsInvalidIntoValid)
             EXPECT_EQ(r.diagnostics.front().parameter, "clearance");
         }
     }
+}
+
+// The sparse solver's rank test (inertia of JᵀJ - τI) against the dense one (pivoted LDLᵀ, then
+// eigenvalues): the same verdicts and diagnostics on rigid mechanisms of many bodies, and the same
+// free motions on a chain of 7 links between the bases (whose path is arbitrary: 5 free motions).
+TEST(CheckValidity, SparseAndDenseSolversGiveTheSameReport)
+{
+    auto both = [](const Scaffold& card) {
+        ValidityOptions dense;
+        dense.dense_linear_algebra = true;
+        dense.samples = 37;
+        ValidityOptions sparse;
+        sparse.samples = 37;
+        return std::make_pair(check_validity(card, dense), check_validity(card, sparse));
+    };
+    for (const Scaffold& card : {fixtures::nested_boxes(2), fixtures::box_with_panel_pairs(2)}) {
+        const auto [a, b] = both(card);
+        EXPECT_TRUE(a.valid());
+        EXPECT_TRUE(b.valid());
+        EXPECT_TRUE(b.diagnostics.empty()) << b.diagnostics.front().message;
+        EXPECT_NEAR(a.max_hinge_residual, b.max_hinge_residual, 1e-10 * card.size());
+        EXPECT_NEAR(a.flatness_at_zero, b.flatness_at_zero, 1e-8 * card.size());
+    }
+    const auto [a, b] = both(fixtures::chain_card(7));
+    EXPECT_EQ(a.foldable, b.foldable);
+    EXPECT_FALSE(b.stable);
+    EXPECT_FALSE(a.stable);
+    const Diagnostic* da = find_code(a, "unstable");
+    const Diagnostic* db = find_code(b, "unstable");
+    ASSERT_NE(da, nullptr);
+    ASSERT_NE(db, nullptr);
+    EXPECT_EQ(da->message, db->message);
+    EXPECT_NE(db->message.find("5 free motion"), std::string::npos) << db->message;
+    EXPECT_EQ(db->patches.size(), 7u);
 }

@@ -12,6 +12,7 @@ struct ValidityOptions {
     double clearance = 0.0; ///< extra gap (mm) two patches must keep, e.g. the paper thickness
     int refine_depth = 6;   ///< bisection levels between samples when two patches come close
     const CancelFlag* cancel = nullptr; ///< set from another thread: the check throws Cancelled
+    bool dense_linear_algebra = false;  ///< SimulationOptions::dense_linear_algebra (a baseline)
 };
 
 /// A pair of patches passing through each other at one state.

@@ -26,6 +26,12 @@ struct SimulationOptions {
     double min_step = 1e-7;                  ///< below this the motion is declared locked
     int max_newton_iterations = 60;
     const CancelFlag* cancel = nullptr; ///< checked before each continuation run (throws Cancelled)
+    /// Solve every connected mechanism with dense normal equations (a dense Cholesky per Newton
+    /// step, an SVD or pivoted LDLᵀ rank test), as before the sparse solver. By default a
+    /// mechanism of 6 free bodies or more is solved with a sparse factorisation instead: the
+    /// same Levenberg–Marquardt steps and tolerances (docs/MATH.md, Solver). Kept as the
+    /// benchmarks' same-process baseline and for comparing the two.
+    bool dense_linear_algebra = false;
 };
 
 /// Drives the base patches from the design angle to each requested angle (radians, 0..π) by
