@@ -34,6 +34,7 @@ POLL_SECONDS = 0.02
 DIALOG_NAME = "PopUpProgress"  # objectName of the dialog (scripts and the GUI tests find it)
 
 shown = []  # labels of the dialogs shown so far in this session (the GUI tests read it)
+cancelled = []  # labels of the work cancelled so far (a command compares its length before/after)
 
 
 # Stands for "a fresh popupcore.CancelFlag that Cancel sets" among a call's keyword arguments.
@@ -159,6 +160,7 @@ class Steps:
         # The dialog is application modal: only its Cancel button takes input.
         QtCore.QCoreApplication.processEvents(QtCore.QEventLoop.AllEvents, 50)
         if self.dialog.wasCanceled():
+            cancelled.append(self.label)
             raise Cancelled(cancelled_message(self.label))
 
     def _show(self):

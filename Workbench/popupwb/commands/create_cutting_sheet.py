@@ -91,9 +91,12 @@ def create(card=None):
         f"sheet = popupwb.make.make_cutting_sheet({object_expression(card)}, "
         f"{paper}{options}, name={card.Name + 'Sheets'!r})"
     )
+    cancels = len(progress.cancelled)
     added = run_echoed(doc, "Add cutting sheets", [line])
     obj = next(o for o in added if is_cutting_sheet(o))
-    if progress.is_cancelled_message(obj.getStatusString()):
+    # Cancelled in its recompute; FreeCAD may have run it once more since, so its status alone
+    # does not tell.
+    if len(progress.cancelled) > cancels or progress.is_cancelled_message(obj.getStatusString()):
         FreeCAD.Console.PrintWarning(f"{obj.getStatusString()}: no cutting sheets added\n")
         doc.undo()  # the transaction that added it
         return None

@@ -262,6 +262,7 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
     for (const FoldState& st : sweep.states) {
         if (st.angle <= 0.0 || st.angle >= M_PI)
             continue;
+        stop_if_cancelled(options.cancel, "the validity check");
         const FreeMotion motion = free_motion_of(s, solver, solver.configuration(st));
         if (motion.dimension == 0)
             continue;
@@ -287,6 +288,7 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
         stop_if_cancelled(options.cancel, "the validity check");
         const double margin = flat_tolerance + options.clearance;
         for (const auto& [i, j] : candidate_pairs(meshes, graph.value.body_of_patch, st, margin)) {
+            stop_if_cancelled(options.cancel, "the validity check"); // a pair may be refined
             const std::pair<int, int> key{i, j};
             double depth = checker.depth(st, i, j);
             double at = st.angle;
