@@ -15,6 +15,7 @@ import textwrap
 
 import pytest
 
+from conftest import TIME_SCALE
 from popupwb.core import popupcore
 
 SOURCE_DIR = os.environ.get(
@@ -38,7 +39,7 @@ def run_python(script, timeout=60):
         ["/usr/bin/python3", "-c", textwrap.dedent(script)],
         capture_output=True,
         text=True,
-        timeout=timeout,
+        timeout=timeout * TIME_SCALE,
         cwd=SOURCE_DIR,
     )
 
