@@ -3,11 +3,20 @@
 
 Called by `make asan` as `/usr/bin/python3 tools/run_asan.py --build build-asan`. The build is a
 separate CMake tree (g++ -fsanitize=address,undefined, no fuzzers). The C++ suite runs with leak
-detection on. The Python suite runs Debian's uninstrumented python3 with the ASan runtime
-preloaded (an ASan extension module needs it first in the process) and leak detection off (the
-interpreter's own allocations are not ours). UBSan reports do not stop a run: they are counted,
-with the ASan and LeakSanitizer ones, from the logs. Exit status 0 only with both suites passing
-and 0 reports. Logs: <build>/asan-cpp.log and <build>/asan-python.log.
+detection on; its UBSan reports do not stop it. The Python suite runs Debian's uninstrumented
+python3 with the ASan runtime preloaded (an ASan extension module needs it first in the process),
+then libstdc++ (python3 does not link it: without it ASan finds no real __cxa_throw to forward to
+and the first C++ exception ends the process in a CHECK failure), and leak detection off (the
+interpreter's own allocations are not ours). pytest captures only Python's sys.stdout/stderr
+(--capture=sys), so what the sanitizers write to file descriptor 2 of pytest's own process reaches
+the log, from a passing test or a dying process alike. Much of the suite's native code runs in
+subprocesses (the popup command, FreeCAD scripts) whose stderr the tests capture: there any
+sanitizer report, UBSan's included, ends the process with exit status 86, which no PopUp command
+uses, so its test, which checks that status, fails (most of them show the process's stderr, the
+report, in their failure message). Reports (ASan, LeakSanitizer, UBSan, and sanitizer CHECK
+failures) are counted from the logs. The tests' time limits are for the optimised build:
+POPUP_TIME_SCALE stretches them here. Exit status 0 only with both suites passing and 0 reports.
+Logs: <build>/asan-cpp.log and <build>/asan-python.log.
 """
 
 import argparse
@@ -22,13 +31,32 @@ SANITIZE = "-fsanitize=address,undefined -fno-omit-frame-pointer"
 # (CGAL/Epic_converter.h): a warning here, an error in the normal build.
 NO_ERROR = "-Wno-error=maybe-uninitialized"
 REPORT = re.compile(
-    r"ERROR: (?:AddressSanitizer|LeakSanitizer)[^\n]*|^[^\n]*runtime error:[^\n]*", re.M
+    r"ERROR: (?:AddressSanitizer|LeakSanitizer)[^\n]*|^[^\n]*runtime error:[^\n]*"
+    r"|Sanitizer: CHECK failed:[^\n]*",
+    re.M,
 )
+# The sanitized build runs check_validity about 40 times slower than the -O3 one (at -O1 Eigen's
+# small products are not inlined, and its assertions are on): the time limits of the Python tests
+# (hang and speed checks) are multiplied by this.
+TIME_SCALE = 20
+# Exit status of a Python-suite process that a sanitizer stops (PopUp's commands use 0 to 3).
+SANITIZER_EXIT = 86
 
 
 def run(command, **kwargs):
     print("+", " ".join(command), flush=True)
     return subprocess.call(command, **kwargs)
+
+
+def runtime_library(name):
+    """g++'s own copy of a runtime library, the file itself, to preload."""
+    path = os.path.realpath(
+        subprocess.check_output(["g++", f"-print-file-name={name}"], text=True).strip()
+    )
+    with open(path, "rb") as f:
+        if f.read(4) != b"\x7fELF":
+            sys.exit(f"run_asan: {path} (for {name}) is not a shared object to preload")
+    return path
 
 
 def build(build_dir, jobs):
@@ -90,13 +118,16 @@ def main():
         os.path.join(build_dir, "asan-cpp.log"),
     )
 
-    libasan = subprocess.check_output(["g++", "-print-file-name=libasan.so"], text=True).strip()
+    preload = [runtime_library("libasan.so"), runtime_library("libstdc++.so")]
     sandbox = os.path.join(build_dir, "sandbox", "home")
     os.makedirs(sandbox, exist_ok=True)
     py_env = dict(
         base,
-        LD_PRELOAD=libasan,
-        ASAN_OPTIONS="detect_leaks=0",
+        LD_PRELOAD=" ".join(preload),
+        ASAN_OPTIONS=f"detect_leaks=0:exitcode={SANITIZER_EXIT}",
+        # GCC 12's runtime takes the exit status of UBSan's reports from UBSAN_OPTIONS.
+        UBSAN_OPTIONS=f"print_stacktrace=1:halt_on_error=1:exitcode={SANITIZER_EXIT}",
+        POPUP_TIME_SCALE=str(TIME_SCALE),
         PYTHONPATH=os.pathsep.join(
             [
                 os.path.join(build_dir, "python"),
@@ -110,8 +141,18 @@ def main():
         HOME=sandbox,
     )
     python = suite(
-        "Python suite (ASan runtime preloaded, leak detection off)",
-        ["/usr/bin/python3", "-m", "pytest", "-q", "-p", "no:cacheprovider", "tests/python"],
+        "Python suite (ASan runtime and libstdc++ preloaded, leak detection off)",
+        [
+            "/usr/bin/python3",
+            "-m",
+            "pytest",
+            "-q",
+            "-rfEs",
+            "--capture=sys",
+            "-p",
+            "no:cacheprovider",
+            "tests/python",
+        ],
         py_env,
         os.path.join(build_dir, "asan-python.log"),
     )

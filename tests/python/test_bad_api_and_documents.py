@@ -16,6 +16,7 @@ import textwrap
 
 import pytest
 
+from conftest import TIME_SCALE
 from popupwb.core import popupcore
 
 SOURCE_DIR = os.environ.get(
@@ -39,7 +40,7 @@ def run_python(script, timeout=60):
         ["/usr/bin/python3", "-c", textwrap.dedent(script)],
         capture_output=True,
         text=True,
-        timeout=timeout,
+        timeout=timeout * TIME_SCALE,
         cwd=SOURCE_DIR,
     )
 

@@ -9,6 +9,8 @@ import textwrap
 
 import pytest
 
+from conftest import TIME_SCALE
+
 SOURCE_DIR = os.environ.get(
     "POPUP_SOURCE_DIR", os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 )
@@ -53,7 +55,12 @@ def popup(*args, home=None, env_vars=None):
         env.update(FREECAD_USER_HOME=home, HOME=home)
     env.update(env_vars or {})
     return subprocess.run(
-        [POPUP, *args], capture_output=True, text=True, timeout=300, env=env, cwd=SOURCE_DIR
+        [POPUP, *args],
+        capture_output=True,
+        text=True,
+        timeout=300 * TIME_SCALE,
+        env=env,
+        cwd=SOURCE_DIR,
     )
 
 
@@ -174,7 +181,7 @@ def run_freecad_script(script, *args, home):
         ["/usr/bin/python3", "-c", script, *map(str, args)],
         capture_output=True,
         text=True,
-        timeout=300,
+        timeout=300 * TIME_SCALE,
         env=env,
     )
     assert proc.returncode == 0, proc.stderr
@@ -220,7 +227,7 @@ def documents(tmp_path_factory, user_home):
         ["/usr/bin/python3", "-c", MAKE_DOCUMENTS, *designs, str(out)],
         capture_output=True,
         text=True,
-        timeout=300,
+        timeout=300 * TIME_SCALE,
         env=env,
     )
     assert proc.returncode == 0, proc.stderr
@@ -278,7 +285,7 @@ def card_documents(tmp_path_factory, user_home):
         ["/usr/bin/python3", "-c", CARD_DOCUMENT, str(folder)],
         capture_output=True,
         text=True,
-        timeout=300,
+        timeout=300 * TIME_SCALE,
         env=env,
     )
     assert proc.returncode == 0, proc.stderr
