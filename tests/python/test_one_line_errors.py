@@ -7,6 +7,8 @@ import json
 import os
 import subprocess
 
+from conftest import TIME_SCALE
+
 SCRIPT = r"""
 import json, os, sys
 import FreeCAD
@@ -55,7 +57,7 @@ def run(case, tmp_path):
         env=dict(os.environ, ONE_LINE_CASE=case),
         capture_output=True,
         text=True,
-        timeout=120,
+        timeout=120 * TIME_SCALE,
     )
     output = process.stdout + process.stderr
     assert "RESULT " in output, output
