@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <utility>
 
 #include <Eigen/Cholesky>
@@ -580,43 +581,32 @@ void FoldSolver::linearize(int c, const Configuration& q, const std::vector<Bran
     linearize_into(c, q, hints, A, g);
 }
 
-template <int N>
-bool FoldSolver::least_squares_sized(int c, Configuration& q, const std::vector<BranchHint>* hints,
-                                     int max_iterations, bool to_round_off) const
+template <class Linearize, class SolveAndApply>
+std::optional<bool>
+FoldSolver::damped_least_squares(int c, Configuration& q, const std::vector<BranchHint>* hints,
+                                 int max_iterations, bool to_round_off, int& iterations,
+                                 Linearize&& linearize, SolveAndApply&& solve_and_apply) const
 {
-    using Matrix = Eigen::Matrix<double, N, N>;
-    using Vector = Eigen::Matrix<double, N, 1>;
     const auto& bodies = graph_.components[c];
-    const int n = int(6 * bodies.size());
-    // Buffers reused across iterations and, per thread, across calls: a sweep runs this
-    // thousands of times, and a large component's normal matrix (270 x 270 for 45 bodies, half a
-    // megabyte) allocated afresh each time cost more in page faults than the factorisation.
-    thread_local Matrix A, M;
-    thread_local Vector g, d;
-    thread_local Eigen::LLT<Matrix> llt;
-    A.resize(n, n);
-    M.resize(n, n);
-    g.resize(n);
-    d.resize(n);
     std::vector<BodyPose> saved(bodies.size());
     double worst = 0.0;
     double current = cost(c, q, hints, &worst);
     double lambda = 1e-6;
-    for (int it = 0; it < max_iterations; ++it) {
+    for (iterations = 0; iterations < max_iterations; ++iterations) {
         if (!hints && !to_round_off && worst <= tolerance_)
             return true;
-        linearize_into(c, q, hints, A, g);
+        if (!linearize())
+            return std::nullopt;
         bool improved = false;
         while (lambda < 1e10) {
-            M = A;
-            M.diagonal().array() += lambda * A.diagonal().array() + 1e-14;
-            llt.compute(M);
-            d.noalias() = llt.solve(g);
-            d = -d;
             // Try the step in place; only this component's bodies are saved for a rollback.
             for (size_t k = 0; k < bodies.size(); ++k)
                 saved[k] = q[bodies[k]];
-            apply_step(c, q, d);
+            // A failed factorisation (round-off on a singular A) is a rejected step.
+            if (!solve_and_apply(lambda)) {
+                lambda *= 8.0;
+                continue;
+            }
             double worst2 = 0.0;
             const double trial = cost(c, q, hints, &worst2);
             if (trial < current || (trial == 0.0 && current == 0.0)) {
@@ -638,56 +628,66 @@ bool FoldSolver::least_squares_sized(int c, Configuration& q, const std::vector<
     return worst <= tolerance_;
 }
 
+template <int N>
+bool FoldSolver::least_squares_sized(int c, Configuration& q, const std::vector<BranchHint>* hints,
+                                     int max_iterations, bool to_round_off) const
+{
+    using Matrix = Eigen::Matrix<double, N, N>;
+    using Vector = Eigen::Matrix<double, N, 1>;
+    const int n = int(6 * graph_.components[c].size());
+    // Buffers reused across iterations and, per thread, across calls: a sweep runs this
+    // thousands of times, and a large component's normal matrix (270 x 270 for 45 bodies, half a
+    // megabyte) allocated afresh each time cost more in page faults than the factorisation.
+    thread_local Matrix A, M;
+    thread_local Vector g, d;
+    thread_local Eigen::LLT<Matrix> llt;
+    A.resize(n, n);
+    M.resize(n, n);
+    g.resize(n);
+    d.resize(n);
+    int iterations = 0;
+    return *damped_least_squares(
+        c, q, hints, max_iterations, to_round_off, iterations,
+        [&] {
+            linearize_into(c, q, hints, A, g);
+            return true;
+        },
+        [&](double lambda) {
+            M = A;
+            M.diagonal().array() += lambda * A.diagonal().array() + 1e-14;
+            llt.compute(M);
+            d.noalias() = llt.solve(g);
+            d = -d;
+            apply_step(c, q, d);
+            return true;
+        });
+}
+
 bool FoldSolver::least_squares_sparse(int c, Configuration& q, const std::vector<BranchHint>* hints,
                                       int max_iterations, bool to_round_off) const
 {
-    // least_squares_sized's iteration, with the damped normal matrix factorised sparsely.
     SparseSystem& s = sparse_system(c);
     const auto& bodies = graph_.components[c];
-    std::vector<BodyPose> saved(bodies.size());
     Eigen::VectorXd step, d(6 * bodies.size());
-    double worst = 0.0;
-    double current = cost(c, q, hints, &worst);
-    double lambda = 1e-6;
-    for (int it = 0; it < max_iterations; ++it) {
-        if (!hints && !to_round_off && worst <= tolerance_)
-            return true;
-        if (!linearize_sparse(c, q, hints, s)) // hints from elsewhere than hints(c)
-            return least_squares_sized<Eigen::Dynamic>(c, q, hints, max_iterations - it,
-                                                       to_round_off);
-        bool improved = false;
-        while (lambda < 1e10) {
+    int iterations = 0;
+    const std::optional<bool> converged = damped_least_squares(
+        c, q, hints, max_iterations, to_round_off, iterations,
+        [&] { return linearize_sparse(c, q, hints, s); },
+        [&](double lambda) {
             s.set_diagonal(lambda, 1e-14);
-            // A failed factorisation (round-off on a singular A) is a rejected step: more damping.
-            if (!s.factorize_positive()) {
-                lambda *= 8.0;
-                continue;
-            }
+            if (!s.factorize_positive())
+                return false;
             step = s.ldlt.solve(s.g);
             for (size_t k = 0; k < bodies.size(); ++k) // back to the component's order
                 d.segment<6>(6 * k) = -step.segment<6>(s.column[k]);
-            for (size_t k = 0; k < bodies.size(); ++k)
-                saved[k] = q[bodies[k]];
             apply_step(c, q, d);
-            double worst2 = 0.0;
-            const double trial = cost(c, q, hints, &worst2);
-            if (trial < current || (trial == 0.0 && current == 0.0)) {
-                improved = current - trial > 1e-30 * size_ * size_;
-                current = trial;
-                worst = worst2;
-                lambda = std::max(lambda * 0.25, 1e-12);
-                break;
-            }
-            for (size_t k = 0; k < bodies.size(); ++k)
-                q[bodies[k]] = saved[k];
-            lambda *= 8.0;
-        }
-        if (!improved)
-            break;
-    }
-    if (hints)
-        return true;
-    return worst <= tolerance_;
+            return true;
+        });
+    if (converged)
+        return *converged;
+    // A hint couples bodies outside the sparse pattern (hints from elsewhere than hints(c)).
+    return least_squares_sized<Eigen::Dynamic>(c, q, hints, max_iterations - iterations,
+                                               to_round_off);
 }
 
 bool FoldSolver::small_eigenvalue(int c, const Configuration& q) const

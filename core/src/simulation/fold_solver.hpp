@@ -5,6 +5,7 @@
 // normal equations for small components, a sparse factorisation from kSparseFromBodies bodies.
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "body_graph.hpp"
@@ -90,6 +91,15 @@ private:
     bool least_squares(int c, Configuration& q, const std::vector<BranchHint>* hints,
                        int max_iterations, bool to_round_off) const;
     template <int N> bool rigid_sized(int c, const Configuration& q) const;
+    /// Levenberg–Marquardt on component c, whatever the linear algebra: linearize() builds the
+    /// normal equations at q (false: it cannot, and nullopt is returned after `iterations`);
+    /// solve_and_apply(λ) solves the damped system and moves q by the step (false: the
+    /// factorisation failed, which counts as a rejected step). True when converged.
+    template <class Linearize, class SolveAndApply>
+    std::optional<bool>
+    damped_least_squares(int c, Configuration& q, const std::vector<BranchHint>* hints,
+                         int max_iterations, bool to_round_off, int& iterations,
+                         Linearize&& linearize, SolveAndApply&& solve_and_apply) const;
     template <int N>
     bool least_squares_sized(int c, Configuration& q, const std::vector<BranchHint>* hints,
                              int max_iterations, bool to_round_off) const;
