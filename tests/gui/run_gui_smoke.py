@@ -9,27 +9,18 @@ the legacy documents of tests/data; writes a JSON result. Runs FreeCAD on it and
 
     /usr/bin/python3 tests/gui/run_gui_smoke.py      # POPUP_BUILD_DIR defaults to ./build
 
-Output (macro, result.json, screenshot.png, freecad.log) stays in <build>/sandbox/gui_smoke/.
+Output (macro, result.json, screenshot.png, freecad.log) stays in <build>/sandbox/gui_smoke/; the
+macro runs through tests/gui/gui_harness.py.
 """
 
-import json
 import os
-import shutil
-import subprocess
 import sys
-import uuid
 
-SOURCE_DIR = os.environ.get("POPUP_SOURCE_DIR") or os.path.dirname(
-    os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-)
-BUILD_DIR = os.environ.get("POPUP_BUILD_DIR") or os.path.join(SOURCE_DIR, "build")
-SANDBOX = os.path.join(BUILD_DIR, "sandbox")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from gui_harness import HEIGHT, SANDBOX, SOURCE_DIR, WIDTH, WORKBENCH_DIR, run_macro  # noqa: E402
+
 OUT_DIR = os.path.join(SANDBOX, "gui_smoke")
-# A home of its own, fresh every run: no remembered window state, and no clash with the headless
-# tests that ctest runs in parallel in sandbox/home.
-GUI_HOME = os.path.join(SANDBOX, "gui_home")
 SAMPLE = os.path.join(SOURCE_DIR, "resources", "samples", "demo_card.json")
-WORKBENCH_DIR = os.path.join(SOURCE_DIR, "Workbench")
 COMMANDS = [
     "PopUp_Card",
     "PopUp_TentFold",
@@ -55,56 +46,11 @@ OTHER_COMMANDS = [
     "PopUp_CuttingSheet",
     "PopUp_ExportSheets",
 ]
-WIDTH, HEIGHT = 800, 600
 LEGACY = ("legacy_card.FCStd", "legacy_card_gui.FCStd")
 
-MACRO = r"""
-import json
-import os
-import re
-import traceback
-
-import FreeCAD
-import FreeCADGui as Gui
-from PySide import QtCore, QtGui
-
-CONFIG = json.loads(%(config)r)
-result = {"errors": [], "workbench": None, "command_ran": False}
-
-
-def count_non_white(path, prefix="", target=None):
-    target = result if target is None else target
-    image = QtGui.QImage(path)
-    target[prefix + "image_size"] = [image.width(), image.height()]
-    non_white = tinted = 0
-    for y in range(image.height()):
-        for x in range(image.width()):
-            rgb = image.pixel(x, y) & 0xFFFFFF
-            if rgb != 0xFFFFFF:
-                non_white += 1
-                red, green, blue = rgb >> 16, (rgb >> 8) & 0xFF, rgb & 0xFF
-                tinted += max(red, green, blue) - min(red, green, blue) > 12
-    target[prefix + "non_white_pixels"] = non_white
-    target[prefix + "tinted_pixels"] = tinted  # not grey: role colours reached the screen
-
-
-def report_view_text():
-    window = Gui.getMainWindow()
-    dock = window.findChild(QtGui.QDockWidget, "Report view")
-    widget = dock.widget() if dock else None
-    return widget.toPlainText() if hasattr(widget, "toPlainText") else ""
-
-
-def wait_until(condition, timeout_ms=60000):
-    # Runs the event loop (timers, repaints) until condition() or the timeout; True if met.
-    timer = QtCore.QElapsedTimer()
-    timer.start()
-    while not condition():
-        if timer.elapsed() > timeout_ms:
-            return False
-        QtCore.QCoreApplication.processEvents(QtCore.QEventLoop.AllEvents, 50)
-    return True
-
+# Runs in the GUI after gui_harness.PRELUDE (CONFIG, result, count_non_white, report_view_text,
+# wait_until); run() is called with the workbench active.
+BODY = r"""
 
 def mechanisms():
     # The card commands, the task panel, the validity check and the animation.
@@ -166,7 +112,7 @@ def mechanisms():
     panel = mechanism_panel.last_panel
     out["panel_open"] = Gui.Control.activeDialog() and panel is not None and panel.obj is tent
     wait_until(lambda: False, 200)  # the report view appends queued messages on events
-    log_before_error = report_view_text()  # the bad value's traceback is expected
+    log_before_error = report_view_text()  # the bad value's one-line error is expected
     panel.set_value("Foot", -3.0)
     out["panel_error"] = panel.status_text()
     panel.set_value("Foot", 9.0)
@@ -368,7 +314,7 @@ def legacy_documents():
         FreeCAD.closeDocument(doc.Name)
 
 
-def main():
+def run():
     # "Show script commands in python console" (off by default): what a user turns on to see them.
     FreeCAD.ParamGet("User parameter:BaseApp/Preferences/Macro").SetBool("ScriptToPyConsole", True)
     Gui.activateWorkbench("PopUpWorkbench")
@@ -490,33 +436,11 @@ def motion_mechanisms():
         )
         FreeCAD.closeDocument(doc.Name)
 
-
-try:
-    main()
-except Exception:
-    result["errors"].append(traceback.format_exc())
-finally:
-    with open(CONFIG["result"], "w") as stream:
-        json.dump(result, stream, indent=1)
-    QtCore.QTimer.singleShot(0, Gui.getMainWindow().close)
 """
 
 
-def install_mod(home):
-    mod_dir = os.path.join(home, "Mod")
-    os.makedirs(mod_dir, exist_ok=True)
-    link = os.path.join(mod_dir, "PopUp")
-    temporary = f"{link}.{uuid.uuid4().hex}"
-    os.symlink(WORKBENCH_DIR, temporary)
-    os.replace(temporary, link)
-
-
 def run_freecad():
-    """Writes the macro, runs the GUI on it, returns (exit code, result dict or None)."""
-    shutil.rmtree(OUT_DIR, ignore_errors=True)
-    shutil.rmtree(GUI_HOME, ignore_errors=True)
-    os.makedirs(OUT_DIR)
-    install_mod(GUI_HOME)
+    """Runs the GUI on BODY; returns (exit code, result dict or None)."""
     config = {
         "sample": SAMPLE,
         "fold_angle": 120.0,
@@ -526,28 +450,11 @@ def run_freecad():
         "other_commands": OTHER_COMMANDS,
         "png": os.path.join(OUT_DIR, "screenshot.png"),
         "card_png": os.path.join(OUT_DIR, "card.png"),
-        "result": os.path.join(OUT_DIR, "result.json"),
         "width": WIDTH,
         "height": HEIGHT,
     }
-    macro = os.path.join(OUT_DIR, "gui_smoke.FCMacro")
-    with open(macro, "w") as stream:
-        stream.write(MACRO % {"config": json.dumps(config)})
-    env = dict(os.environ)
-    env.update(
-        QTWEBENGINE_DISABLE_SANDBOX="1",  # the GUI aborts as root without it
-        FREECAD_USER_HOME=GUI_HOME,
-        HOME=GUI_HOME,
-        POPUP_BUILD_DIR=BUILD_DIR,  # the GUI clears PYTHONPATH; popupwb.core looks here
-    )
-    command = ["timeout", "180", "xvfb-run", "-a", "-s", "-screen 0 1280x1024x24", "freecad"]
-    with open(os.path.join(OUT_DIR, "freecad.log"), "w") as log:
-        code = subprocess.call(command + [macro], env=env, stdout=log, stderr=subprocess.STDOUT)
-    try:
-        with open(config["result"]) as stream:
-            return code, json.load(stream)
-    except (OSError, ValueError):
-        return code, None
+    code, result, _ = run_macro("gui_smoke", BODY, config)
+    return code, result
 
 
 def check_mechanisms(check, m):
