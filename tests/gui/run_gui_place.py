@@ -42,14 +42,16 @@ OWN = [1.0, 0.5, 0.0]
 OVERLAP = [0.85, 0.0, 0.0]
 
 BODY = r'''
-def actions_of(widget):
-    """[(command name or text, is separator)] of a toolbar or menu."""
+def actions_of(widget, nested=False):
+    """[command name or text, "Separator", "menu:TITLE"] of a toolbar or menu; with `nested`,
+    submenus as {TITLE: their entries}."""
     found = []
     for action in widget.actions():
         if action.isSeparator():
             found.append("Separator")
         elif action.menu() is not None:
-            found.append("menu:" + action.menu().title().replace("&", ""))
+            title = action.menu().title().replace("&", "")
+            found.append({title: actions_of(action.menu(), True)} if nested else "menu:" + title)
         else:
             found.append(action.objectName() or action.text().replace("&", ""))
     return found
@@ -60,23 +62,12 @@ def grab_context_menu(widget, position):
     submenus as {title: entries}; the menu is closed again."""
     grabbed = {}
 
-    def entries(menu):
-        found = []
-        for action in menu.actions():
-            if action.isSeparator():
-                found.append("Separator")
-            elif action.menu() is not None:
-                found.append({action.menu().title().replace("&", ""): entries(action.menu())})
-            else:
-                found.append(action.objectName() or action.text().replace("&", ""))
-        return found
-
     def grab():
         menu = QtGui.QApplication.activePopupWidget()
         if menu is None:
             QtCore.QTimer.singleShot(100, grab)
             return
-        grabbed["entries"] = entries(menu)
+        grabbed["entries"] = actions_of(menu, nested=True)
         menu.close()
 
     QtCore.QTimer.singleShot(300, grab)

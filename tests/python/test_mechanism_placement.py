@@ -6,6 +6,8 @@ Offset + Width + DepthGround closed, its end panels standing out; a step from Of
 Width), against the card's width and against the core's placement_conflicts, and the placed card
 must pass popupcore's validity check."""
 
+import types
+
 import pytest
 
 from test_freecad_scaffold import in_error, recompute_ok
@@ -21,13 +23,13 @@ def popup(freecad):
     import popupwb.validity as validity
     from popupwb.core import popupcore
 
-    class Modules:
-        pass
-
-    modules = Modules()
-    modules.make, modules.placement, modules.validity = make, placement, validity
-    modules.card_scaffold, modules.core = card_scaffold, popupcore
-    return modules
+    return types.SimpleNamespace(
+        make=make,
+        placement=placement,
+        validity=validity,
+        card_scaffold=card_scaffold,
+        core=popupcore,
+    )
 
 
 def box_span(box):

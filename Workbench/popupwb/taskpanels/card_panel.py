@@ -18,6 +18,7 @@ import FreeCADGui
 from PySide import QtCore, QtGui
 
 from popupwb import card_scaffold
+from popupwb.taskpanels.mechanism_panel import in_error
 
 SPEEDS = (("Slow", 1.5), ("Normal", 3.0), ("Fast", 6.0))  # degrees per frame of PopUp_Animate
 DEFAULT_SPEED = "Normal"
@@ -31,10 +32,6 @@ def finish_panel_of(card):
     """Ends the session of the open panel of `card`, if any (the view provider's unsetEdit)."""
     if last_panel is not None and last_panel.card is card:
         last_panel.finish()
-
-
-def in_error(obj):
-    return "Invalid" in obj.State or "Error" in obj.State
 
 
 class CardPanel:
