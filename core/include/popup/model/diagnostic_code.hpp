@@ -57,6 +57,17 @@ namespace popup {
     X(intersection)                                                                                \
     X(not_enclosed)                                                                                \
     X(enclosure_unknown)                                                                           \
+    /* models and automatic design (fitting) */                                                    \
+    X(unreadable_model)                                                                            \
+    X(empty_model)                                                                                 \
+    X(non_finite_model)                                                                            \
+    X(degenerate_model)                                                                            \
+    X(bad_model_size)                                                                              \
+    X(mechanism_dropped)                                                                           \
+    X(no_design_found)                                                                             \
+    /* profiles: outlines on patches */                                                            \
+    X(bad_profile)                                                                                 \
+    X(profile_misses_hinge)                                                                        \
     /* pieces and cutting sheets */                                                                \
     X(empty_piece)                                                                                 \
     X(unknown_patch)                                                                               \

@@ -1,0 +1,75 @@
+#pragma once
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "popup/fitting/model_mesh.hpp"
+#include "popup/model/cancel_flag.hpp"
+#include "popup/model/card.hpp"
+#include "popup/model/result.hpp"
+#include "popup/model/scaffold.hpp"
+
+namespace popup {
+
+/// What the maker chooses for an automatic design from a model (thesis §5.1).
+struct FitOptions {
+    std::optional<Vec3> up;     ///< model direction that becomes the card's z; default: NPCA
+    std::optional<Vec3> facing; ///< model direction that faces the viewer (card's −x side)
+    double card_width = 210.0;  ///< card along its central fold (mm), from the paper
+    double card_depth = 148.0;  ///< each page (mm)
+    double margin = 0.1;        ///< free border of the card, fraction of each card dimension
+    int max_mechanisms = 8;
+    double min_shape = 0.05;   ///< smallest primitive, fraction of the model's diagonal (τ)
+    double probability = 0.99; ///< stop when no better primitive was overlooked with this P
+    double threshold = 0.02;   ///< point-to-primitive tolerance, fraction of the diagonal
+    int samples = 20000;       ///< pseudo-vertices spread over the surface
+    std::uint64_t seed = 1;
+};
+
+/// One fitted primitive, in the card's frame at the design state (mm), for previews.
+struct FittedPrimitive {
+    std::string kind;          ///< "rectangular" or "triangular"
+    std::vector<Vec3> corners; ///< 8 for a rectangular prism, 6 for a triangular one
+    std::string host;          ///< base patch pair it stands on
+    int inliers = 0;
+};
+
+/// One mechanism of the result: what a FreeCAD feature of `type` needs to be made.
+struct FittedMechanism {
+    std::string type; ///< core generator kind: "box_fold", "step_fold", "v_fold", "tent_fold"
+    std::string name; ///< its name; offered pairs are "<name>.<part>"
+    std::string host; ///< "central fold" or "<other name>.<part>"
+    std::map<std::string, double> parameters; ///< params struct field -> value (mm, radians)
+    std::string primitive;                    ///< what it maps, e.g. "rectangular prism 2"
+    double coverage_error = 0.0;              ///< thesis eq. 5.1 for its primitive
+};
+
+/// A mechanism the pipeline left out or changed, and why.
+struct FitRepair {
+    std::string mechanism;
+    std::string action; ///< "dropped", "trimmed", "remapped"
+    std::string reason;
+};
+
+struct FitResult {
+    CardParams card;
+    Eigen::Matrix4d model_to_card = Eigen::Matrix4d::Identity(); ///< model units to card mm
+    std::vector<FittedPrimitive> primitives;
+    std::vector<FittedMechanism> mechanisms; ///< hosts before the mechanisms they carry
+    std::vector<FitRepair> repairs;
+    Scaffold scaffold;     ///< card plus mechanisms at the design state (180°)
+    bool valid = false;    ///< the simulator's full validity check passed on `scaffold`
+    double coverage = 0.0; ///< fraction of the pseudo-vertices within threshold of the pop-up
+    std::vector<std::pair<std::string, double>> timings_s; ///< stage -> seconds, in order
+};
+
+/// The automatic design of thesis §5.1: align the model, spread pseudo-vertices, fit prisms on
+/// base patch pairs by RANSAC, map each to the mechanism of lowest coverage error, refit, and
+/// repair or drop what the simulator refuses. Deterministic for a given seed. Bad options give
+/// errors naming the option and its range; `cancel` stops it with Cancelled.
+Result<FitResult> fit_design(const ModelMesh& model, const FitOptions& options,
+                             const CancelFlag* cancel = nullptr);
+
+} // namespace popup
