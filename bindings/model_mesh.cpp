@@ -1,0 +1,101 @@
+// Binding of ModelMesh, the model every fitting step takes: declarations and conversions only.
+#include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "binding_support.hpp"
+#include "popup/fitting/model_mesh.hpp"
+
+namespace py = pybind11;
+using namespace popup;
+
+namespace {
+
+using Rows3d = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+using Rows3i = Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor>;
+using Rows2d = Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor>;
+
+Rows3d rows_of(const std::vector<Vec3>& points)
+{
+    Rows3d m(points.size(), 3);
+    for (size_t i = 0; i < points.size(); ++i)
+        m.row(i) = points[i].transpose();
+    return m;
+}
+
+std::vector<Vec3> points_of(const Rows3d& m)
+{
+    std::vector<Vec3> points(m.rows());
+    for (Eigen::Index i = 0; i < m.rows(); ++i)
+        points[i] = m.row(i).transpose();
+    return points;
+}
+
+} // namespace
+
+void bind_model_mesh(py::module_& m)
+{
+    py::class_<ModelMesh>(m, "ModelMesh",
+                          "A triangle mesh given as the model of a pop-up (model units taken as "
+                          "mm); colours and texture coordinates are per vertex")
+        .def(py::init([](const Rows3d& vertices, const Rows3i& triangles, std::string source) {
+                 ModelMesh mesh;
+                 mesh.vertices = points_of(vertices);
+                 mesh.triangles.resize(triangles.rows());
+                 for (Eigen::Index i = 0; i < triangles.rows(); ++i)
+                     mesh.triangles[i] = {triangles(i, 0), triangles(i, 1), triangles(i, 2)};
+                 mesh.source = std::move(source);
+                 return mesh;
+             }),
+             py::arg("vertices"), py::arg("triangles"), py::arg("source") = "")
+        .def_property(
+            "vertices", [](const ModelMesh& mesh) { return rows_of(mesh.vertices); },
+            [](ModelMesh& mesh, const Rows3d& v) { mesh.vertices = points_of(v); })
+        .def_property(
+            "triangles",
+            [](const ModelMesh& mesh) {
+                Rows3i t(mesh.triangles.size(), 3);
+                for (size_t i = 0; i < mesh.triangles.size(); ++i)
+                    t.row(i) << mesh.triangles[i][0], mesh.triangles[i][1], mesh.triangles[i][2];
+                return t;
+            },
+            [](ModelMesh& mesh, const Rows3i& t) {
+                mesh.triangles.resize(t.rows());
+                for (Eigen::Index i = 0; i < t.rows(); ++i)
+                    mesh.triangles[i] = {t(i, 0), t(i, 1), t(i, 2)};
+            })
+        .def_property(
+            "colours", [](const ModelMesh& mesh) { return rows_of(mesh.colours); },
+            [](ModelMesh& mesh, const Rows3d& c) { mesh.colours = points_of(c); },
+            "RGB in [0, 1], one row per vertex, or no rows")
+        .def_property(
+            "uvs",
+            [](const ModelMesh& mesh) {
+                Rows2d uv(mesh.uvs.size(), 2);
+                for (size_t i = 0; i < mesh.uvs.size(); ++i)
+                    uv.row(i) = mesh.uvs[i].transpose();
+                return uv;
+            },
+            [](ModelMesh& mesh, const Rows2d& uv) {
+                mesh.uvs.resize(uv.rows());
+                for (Eigen::Index i = 0; i < uv.rows(); ++i)
+                    mesh.uvs[i] = uv.row(i).transpose();
+            },
+            "texture coordinates, one row per vertex, or no rows")
+        .def_readwrite("texture", &ModelMesh::texture, "path of the base colour image, or ''")
+        .def_readwrite("base_colour", &ModelMesh::base_colour)
+        .def_readwrite("source", &ModelMesh::source, "file or object name, for messages")
+        .def("area", &ModelMesh::area)
+        .def("diagonal", &ModelMesh::diagonal, "bounding-box diagonal (model units)")
+        .def("__repr__", [](const ModelMesh& mesh) {
+            return "<ModelMesh " + mesh.source + ": " + std::to_string(mesh.vertices.size()) +
+                   " vertices, " + std::to_string(mesh.triangles.size()) + " triangles>";
+        });
+    m.def(
+        "check_model",
+        [](ModelMesh mesh) { return bindings::unwrap(check_model(std::move(mesh))); },
+        py::arg("mesh"),
+        "The mesh unchanged, or DesignError naming what makes it unusable (no triangles, a "
+        "non-finite coordinate, a bad index, no extent or area, a size outside 1e-6..1e6)");
+}
