@@ -4,6 +4,8 @@
     popup check card.FCStd [--card NAME]    # every PopUpCard and Scaffold, or the one named
     popup sheet card.FCStd --out DIR [--card NAME] [--paper A4] [--kerf 0.1] [--force] [--json]
     popup verify card.FCStd DIR|sheets.dxf [--card NAME] [--printed-side P1=back] [--kerf MM]
+    popup fit model.stl --out DIR [--max-mechanisms N] [--seed S] [--paper A4] [--up X,Y,Z]
+              [--facing X,Y,Z] [--detail D]    # cli_fit.py: the card designed from a 3D model
     popup --version
 
 Exit status: 0 the design is valid (check; for a document every card checked), its sheets are
@@ -621,6 +623,12 @@ def cmd_verify(args):
     return EXIT_INVALID
 
 
+def cmd_fit(args):
+    from popupwb import cli_fit
+
+    return cli_fit.run(args, sys.modules[__name__])
+
+
 def _version():
     try:
         import popupwb
@@ -755,6 +763,11 @@ def build_parser():
     )
     verify.add_argument("--json", action="store_true", help="print the result as one JSON object")
     verify.set_defaults(run=cmd_verify)
+
+    from popupwb import cli_fit
+    from popupwb.fitting.fit_run import MAX_MECHANISMS
+
+    cli_fit.add_parser(sub, MAX_MECHANISMS).set_defaults(run=cmd_fit)
     return parser
 
 

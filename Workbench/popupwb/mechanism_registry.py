@@ -130,6 +130,9 @@ STRUCTURE_COMMAND_IDS = [m.command_id for m in MECHANISMS if not m.motion]
 MOTION_COMMAND_IDS = [m.command_id for m in MECHANISMS if m.motion]
 _BY_COMMAND = {m.command_id: m for m in MECHANISMS}
 _BY_TYPE = {m.type_name: m for m in MECHANISMS}
+# The core's generator kind ("box_fold", as popupcore.fit_design names a FittedMechanism's type):
+# the feature's GENERATOR is "add_<kind>".
+_BY_CORE_KIND = {m.feature.GENERATOR[len("add_") :]: m for m in MECHANISMS}
 
 
 def by_command(command_id):
@@ -140,3 +143,8 @@ def by_command(command_id):
 def by_type(type_name):
     """The Mechanism whose feature has TYPE `type_name`, or None."""
     return _BY_TYPE.get(type_name)
+
+
+def by_core_kind(kind):
+    """The Mechanism whose core generator is add_<kind> ("box_fold", "tent_fold"...), or None."""
+    return _BY_CORE_KIND.get(kind)

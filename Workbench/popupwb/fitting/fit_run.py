@@ -1,0 +1,174 @@
+"""The stages of a design from a model, in order and timed, shared by `popup fit` (cli.py) and the
+PopUp_FromModel command: read, clean, fit (popupcore), build the card's features, check, measure.
+
+Each stage is one function; Stages records (stage, seconds) and says what it starts through a
+`say(text)` callable (stderr for the CLI, the report view in the GUI). Bad input is ValueError
+(popupcore.DesignError is one) naming the file and what is wrong.
+"""
+
+import contextlib
+import math
+import os
+import time
+
+import numpy as np
+
+# Detail level 0 (coarse) .. 1 (fine) sets the smallest primitive, as a fraction of the model's
+# diagonal: 0.08 .. 0.02, the core's default 0.05 at 0.5.
+COARSEST_SHAPE = 0.08
+FINEST_SHAPE = 0.02
+DEFAULT_DETAIL = 0.5
+MAX_MECHANISMS = 32
+# The card fits on the paper with the cutting sheet's margin and this much more on each side.
+CARD_CLEARANCE_MM = 2.0
+
+
+class Stages:
+    """(stage, seconds) of every stage run, in order; `say` hears what each starts."""
+
+    def __init__(self, say=None):
+        self.timings = []
+        self.say = say or (lambda text: None)
+        self.started = time.perf_counter()
+
+    @contextlib.contextmanager
+    def stage(self, name, text):
+        self.say(text)
+        start = time.perf_counter()
+        try:
+            yield
+        finally:
+            self.timings.append((name, time.perf_counter() - start))
+
+    def add(self, timings):
+        """Adds stages timed elsewhere (the core's [(stage, seconds)])."""
+        self.timings.extend((str(name), float(seconds)) for name, seconds in timings)
+
+    def total(self):
+        return time.perf_counter() - self.started
+
+
+def read_model(path):
+    """(popupcore.ModelMesh, what was read) of a model file or an .FCStd's meshes and shapes."""
+    from popupwb.core import popupcore
+    from popupwb.fitting import model_source
+
+    if path.lower().endswith(".fcstd"):
+        model, labels = model_source.model_of_document(path)
+        return model, f"{', '.join(labels)} of {os.path.basename(path)}"
+    model = popupcore.load_model(path)
+    return model, os.path.basename(path)
+
+
+def clean_model(model):
+    """(cleaned ModelMesh, {repair: count}) through popupcore.clean_model."""
+    from popupwb.core import popupcore
+
+    cleaned, repairs = popupcore.clean_model(model)
+    return cleaned, {str(k): int(v) for k, v in dict(repairs).items()}
+
+
+def min_shape_of_detail(detail):
+    if not (math.isfinite(detail) and 0.0 <= detail <= 1.0):
+        raise ValueError(f"detail = {detail:g}, must be from 0 (coarse) to 1 (fine)")
+    return COARSEST_SHAPE + (FINEST_SHAPE - COARSEST_SHAPE) * detail
+
+
+def card_size_for_paper(paper):
+    """(width along the fold, depth of each page) in mm of the largest card that, open flat, fits
+    on `paper` (a name or WxH) inside the cutting sheet's margin."""
+    from popupwb.core import popupcore
+
+    _, width, height = popupcore.paper_size(paper)
+    margin = popupcore.SheetOptions().margin + CARD_CLEARANCE_MM
+    short, long_ = sorted((float(width), float(height)))
+    return short - 2 * margin, 0.5 * (long_ - 2 * margin)
+
+
+def direction(text, flag):
+    """A 3-vector from "X,Y,Z"; ValueError naming `flag` for anything else or a zero vector."""
+    parts = [p.strip() for p in str(text).split(",")]
+    try:
+        values = [float(p) for p in parts]
+    except ValueError:
+        values = []
+    if len(values) != 3 or not all(math.isfinite(v) for v in values):
+        raise ValueError(f"{flag} {text}: must be three finite numbers X,Y,Z (e.g. 0,0,1)")
+    if math.sqrt(sum(v * v for v in values)) < 1e-12:
+        raise ValueError(f"{flag} {text}: must not be the zero vector")
+    return tuple(values)
+
+
+def fit_options(
+    max_mechanisms=8,
+    seed=1,
+    up=None,
+    facing=None,
+    detail=DEFAULT_DETAIL,
+    card_size=None,
+):
+    """A popupcore.FitOptions; ValueError naming the option for a value out of range."""
+    from popupwb.core import popupcore
+
+    if not 1 <= int(max_mechanisms) <= MAX_MECHANISMS:
+        raise ValueError(f"max_mechanisms = {max_mechanisms}, must be 1 to {MAX_MECHANISMS}")
+    if int(seed) < 0:
+        raise ValueError(f"seed = {seed}, must be >= 0")
+    options = popupcore.FitOptions()
+    options.max_mechanisms = int(max_mechanisms)
+    options.seed = int(seed)
+    options.min_shape = min_shape_of_detail(float(detail))
+    if up is not None:
+        options.up = tuple(up)
+    if facing is not None:
+        options.facing = tuple(facing)
+    if card_size is not None:
+        options.card_width, options.card_depth = card_size
+    return options
+
+
+def options_dict(options):
+    """The FitOptions as plain JSON values (for the report)."""
+    names = (
+        "card_width",
+        "card_depth",
+        "margin",
+        "max_mechanisms",
+        "min_shape",
+        "probability",
+        "threshold",
+        "samples",
+        "seed",
+        "up",
+        "facing",
+    )
+    values = {}
+    for name in names:
+        value = getattr(options, name, None)
+        values[name] = list(value) if isinstance(value, (tuple, list, np.ndarray)) else value
+    return values
+
+
+def fit(model, options, cancel=None):
+    """popupcore.fit_design (GIL released; `cancel` a popupcore.CancelFlag or None)."""
+    from popupwb.core import popupcore
+
+    return popupcore.fit_design(model, options, cancel)
+
+
+def uniform_scale(matrix):
+    """The scale of a similarity 4x4 `matrix` (cube root of |det| of its 3x3 block)."""
+    return abs(float(np.linalg.det(np.asarray(matrix, dtype=float)[:3, :3]))) ** (1.0 / 3.0)
+
+
+def measure(model, result, scaffold, options):
+    """popupcore.fit_metrics of the delivered pop-up (`scaffold`, the card's at 180°) against the
+    model, with the fit's own threshold in mm."""
+    from popupwb.core import popupcore
+
+    matrix = np.asarray(result.model_to_card, dtype=float)
+    diagonal_mm = float(model.diagonal()) * uniform_scale(matrix)
+    prisms = [np.asarray(p.corners, dtype=float).reshape(-1, 3) for p in result.primitives]
+    return popupcore.fit_metrics(
+        model, matrix, scaffold, prisms, float(options.threshold) * diagonal_mm
+    )
