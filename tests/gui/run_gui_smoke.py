@@ -35,6 +35,7 @@ COMMANDS = [
     "PopUp_CheckValidity",
     "PopUp_Animate",
     "PopUp_LoadDesign",
+    "PopUp_FromModel",
     "PopUp_CuttingSheet",
     "PopUp_ExportSheets",
 ]
@@ -43,6 +44,7 @@ OTHER_COMMANDS = [
     "PopUp_CheckValidity",
     "PopUp_Animate",
     "PopUp_LoadDesign",
+    "PopUp_FromModel",
     "PopUp_CuttingSheet",
     "PopUp_ExportSheets",
 ]

@@ -13,13 +13,14 @@ from popupwb.commands import (
     create_cutting_sheet,
     create_mechanism,
     export_sheets,
+    from_model,
     load_design,
 )
 from popupwb.mechanism_registry import MOTION_COMMAND_IDS, STRUCTURE_COMMAND_IDS
 
 SEPARATOR = "Separator"
 
-CARD_COMMANDS = [create_card.COMMAND_ID, load_design.COMMAND_ID]
+CARD_COMMANDS = [create_card.COMMAND_ID, load_design.COMMAND_ID, from_model.COMMAND_ID]
 MECHANISM_COMMANDS = list(STRUCTURE_COMMAND_IDS)
 MOTION_COMMANDS = list(MOTION_COMMAND_IDS)
 CHECK_COMMANDS = [check_validity.COMMAND_ID, animate.COMMAND_ID]

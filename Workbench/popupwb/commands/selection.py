@@ -94,3 +94,19 @@ def selected_designs(doc):
     if not everything:
         raise SelectionError("select a Scaffold or a card (the document has none)")
     return everything
+
+
+def selected_model(doc):
+    """The first selected Mesh::Feature or Part shape (not a PopUp object), else the document's
+    only one: what PopUp_FromModel designs a card from."""
+    from popupwb.fitting.model_source import is_model_object, top_level_models
+
+    for obj in selected_objects(doc):
+        if is_model_object(obj):
+            return obj
+    return _the_only(
+        doc,
+        top_level_models(doc) if doc is not None else [],
+        "mesh or Part shape",
+        "a mesh or a Part shape",
+    )

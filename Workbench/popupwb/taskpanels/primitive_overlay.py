@@ -1,0 +1,136 @@
+"""PrimitiveOverlay: the prisms popupcore.fit_design fitted, drawn over the model in the 3D view
+while the PopUp_FromModel panel waits for the maker to accept them.
+
+The prisms come in the card's frame (mm); the overlay maps them back through the inverse of the
+fit's model_to_card so that they sit on the selected model where it stands (its own Placement is
+already in the model's coordinates). Faces are translucent orange, edges dark: the model shows
+through. An SoSeparator under the view's scene graph, removed when the panel closes.
+"""
+
+import itertools
+
+import FreeCADGui
+import numpy as np
+from pivy import coin
+
+NODE_NAME = "PopUpPrimitiveOverlay"  # scripts and the GUI test find the overlay by this name
+FACE_COLOUR = (1.0, 0.55, 0.1)
+EDGE_COLOUR = (0.25, 0.1, 0.0)
+TRANSPARENCY = 0.45
+
+
+def hull_faces(points):
+    """Faces of the convex hull of a few points (a prism's 6 or 8 corners, in any order), each a
+    list of point indices counter-clockwise seen from outside: the planes through three points
+    with every other point on their inner side, each plane once, its points ordered by angle."""
+    p = np.asarray(points, dtype=float)
+    scale = float(np.max(np.ptp(p, axis=0))) or 1.0
+    tolerance = 1e-9 * scale
+    centre = p.mean(axis=0)
+    faces, planes = [], []
+    for i, j, k in itertools.combinations(range(len(p)), 3):
+        normal = np.cross(p[j] - p[i], p[k] - p[i])
+        length = np.linalg.norm(normal)
+        if length <= tolerance * scale:
+            continue  # three points on a line
+        normal /= length
+        if normal @ (centre - p[i]) > 0:
+            normal = -normal
+        distances = (p - p[i]) @ normal
+        if np.any(distances > tolerance):
+            continue  # points on both sides: not a face
+        if any(
+            abs(normal @ n - 1) < 1e-9 and abs(normal @ (p[i] - q)) < tolerance for n, q in planes
+        ):
+            continue  # this face's plane is already met
+        planes.append((normal, p[i]))
+        on = [m for m in range(len(p)) if abs(distances[m]) <= tolerance]
+        middle = p[on].mean(axis=0)
+        u = p[on[0]] - middle
+        u /= np.linalg.norm(u)
+        v = np.cross(normal, u)
+        angles = [np.arctan2((p[m] - middle) @ v, (p[m] - middle) @ u) for m in on]
+        faces.append([on[m] for m in np.argsort(angles)])
+    return faces
+
+
+def to_model(corners, model_to_card):
+    """Corners (card mm) back in the model's coordinates."""
+    inverse = np.linalg.inv(np.asarray(model_to_card, dtype=float))
+    c = np.asarray(corners, dtype=float).reshape(-1, 3)
+    return c @ inverse[:3, :3].T + inverse[:3, 3]
+
+
+class PrimitiveOverlay:
+    def __init__(self, doc):
+        self.doc = doc
+        self.node = None
+        self.prisms = []  # corners in model coordinates, as drawn last
+
+    def _view_root(self):
+        gui_doc = FreeCADGui.getDocument(self.doc.Name)
+        view = gui_doc.ActiveView if gui_doc is not None else None
+        if view is None or not hasattr(view, "getSceneGraph"):
+            return None
+        return view.getSceneGraph()
+
+    def show(self, primitives, model_to_card):
+        """Draws the fitted `primitives` (each with .corners in card mm)."""
+        self.remove()
+        self.prisms = [to_model(p.corners, model_to_card) for p in primitives]
+        root = self._view_root()
+        if not self.prisms or root is None:
+            return
+        self.node = coin.SoSeparator()
+        self.node.setName(NODE_NAME)
+        for corners in self.prisms:
+            self.node.addChild(_prism_node(corners))
+        root.addChild(self.node)
+
+    def remove(self):
+        if self.node is not None:
+            try:
+                root = self._view_root()
+            except (RuntimeError, ReferenceError):  # the document is closing or gone
+                root = None
+            if root is not None and root.findChild(self.node) >= 0:
+                root.removeChild(self.node)
+        self.node = None
+        self.prisms = []
+
+
+def _prism_node(corners):
+    faces_of_hull = hull_faces(corners)
+    group = coin.SoSeparator()
+    coords = coin.SoCoordinate3()
+    coords.point.setValues(0, len(corners), [tuple(map(float, c)) for c in corners])
+    group.addChild(coords)
+
+    faces = coin.SoSeparator()
+    material = coin.SoMaterial()
+    material.diffuseColor = FACE_COLOUR
+    material.transparency = TRANSPARENCY
+    faces.addChild(material)
+    face_set = coin.SoIndexedFaceSet()
+    indices = []
+    for face in faces_of_hull:
+        indices.extend([int(i) for i in face] + [-1])
+    face_set.coordIndex.setValues(0, len(indices), indices)
+    faces.addChild(face_set)
+    group.addChild(faces)
+
+    edges = coin.SoSeparator()
+    colour = coin.SoBaseColor()
+    colour.rgb = EDGE_COLOUR
+    style = coin.SoDrawStyle()
+    style.lineWidth = 2
+    edges.addChild(colour)
+    edges.addChild(style)
+    line_set = coin.SoIndexedLineSet()
+    indices = []
+    for face in faces_of_hull:
+        indices.extend([int(i) for i in face] + [int(face[0]), -1])
+    line_set.coordIndex.setValues(0, len(indices), indices)
+    edges.addChild(line_set)
+    group.addChild(edges)
+    return group
