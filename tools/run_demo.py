@@ -1,9 +1,16 @@
 #!/usr/bin/python3
-"""`make demo`: the issue-3 pop-up card built from mechanism features, and the bundled design file.
+"""`make demo`: a pop-up designed from the bundled 3D model, then the issue-3 card built from
+mechanism features and the bundled design file.
 
     /usr/bin/python3 tools/run_demo.py --build build --out out/demo
 
-Steps: (a) copy resources/samples/demo_card.json into the output folder, (b) check its validity
+First the shape from a model (issue 12): (1) `popup fit resources/samples/truck.stl --out
+out/demo/fit` writes design.FCStd (a PopUpCard with its mechanism features and the truck linked),
+report.json, preview.png and the cutting sheets in fit/sheets/ (as `popup sheet` writes them);
+(2) `popup verify fit/design.FCStd fit/sheets` proves the cutting file against the design. The
+truck was made by tools/make_models.py (see resources/samples/README.md).
+
+Then the hand-made card: (a) copy resources/samples/demo_card.json into the output folder, (b) check its validity
 (validity_report.json / .txt), (c) build demo_card.FCStd with three Scaffold objects of it at fold
 angles 180, 90 and 30 degrees side by side, (d) build card.FCStd: an A4 PopUpCard carrying a box
 fold with a tent fold and a floating layer on its top and a step fold on its side, and a v-fold
@@ -30,6 +37,8 @@ REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PYTHON = "/usr/bin/python3"
 FREECAD_LIB = "/usr/lib/freecad-python3/lib"
 DEMO_DESIGN = os.path.join(REPO, "resources", "samples", "demo_card.json")
+DEMO_MODEL = os.path.join(REPO, "resources", "samples", "truck.stl")
+FIT_TIMEOUT = 300  # seconds
 FOLD_ANGLES = (180.0, 90.0, 30.0)
 SPACING = 1.3  # distance between the cards, in card sizes
 IMAGE_SIZE = (1200, 800)
@@ -440,6 +449,22 @@ def verify_sheets(build, card_fcstd, sheets_folder, env):
     return result["ok"] and proc.returncode == 0, verdict, errors
 
 
+def fit_model(build, model, out, env):
+    """(1) `popup fit` of the bundled model into out/fit: (the fit's report.json, its stdout).
+    The model's z is up and its front faces -y (tools/make_models.py)."""
+    folder = os.path.join(out, "fit")
+    command = [os.path.join(build, "bin", "popup"), "fit", model, "--out", folder]
+    command += ["--up", "0,0,1", "--facing", "0,-1,0", "--seed", "1"]
+    proc = subprocess.run(command, env=env, capture_output=True, text=True, timeout=FIT_TIMEOUT)
+    if proc.returncode not in (0, 1) or not os.path.isfile(os.path.join(folder, "report.json")):
+        raise DemoError(f"(1) popup fit: exit {proc.returncode}: {proc.stderr.strip()}")
+    with open(os.path.join(folder, "report.json")) as f:
+        report = json.load(f)
+    if proc.returncode != 0 or not report["valid"]:
+        raise DemoError(f"(1) popup fit found no valid design; see {folder}/report.json")
+    return report, proc.stdout
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--build", default="build", help="CMake build folder (default: build)")
@@ -449,12 +474,29 @@ def main(argv=None):
         default=DEMO_DESIGN,
         help="design to show (default: resources/samples/demo_card.json)",
     )
+    parser.add_argument(
+        "--model",
+        default=DEMO_MODEL,
+        help="3D model to design a pop-up from (default: resources/samples/truck.stl)",
+    )
     args = parser.parse_args(argv)
     build = os.path.abspath(args.build)
     out = os.path.abspath(args.out)
     os.makedirs(out, exist_ok=True)
     try:
         env = sandbox_env(build)
+        fit_report, fit_summary = fit_model(build, os.path.abspath(args.model), out, env)
+        fit_files = fit_report["files"]
+        print(f"(1) popup fit {os.path.basename(args.model)}: {fit_files['design']}", flush=True)
+        print(textwrap.indent(fit_summary.strip(), "      "), flush=True)
+        fit_verified, fit_verdict, fit_findings = verify_sheets(
+            build, fit_files["design"], fit_files["sheets"], env
+        )
+        for d in fit_findings:
+            print(f"      error: {d['code']}: {d['message']}", flush=True)
+        print(f"(2) popup verify fit/sheets against fit/design.FCStd: {fit_verdict}", flush=True)
+        if not fit_verified:
+            raise DemoError("(2) popup verify: the fitted card's cutting file does not make it")
         design = copy_design(os.path.abspath(args.design), out)
         print(f"(a) design copied: {design}", flush=True)
         report, report_files = check_design(build, design, out)
@@ -485,6 +527,8 @@ def main(argv=None):
         return 1
 
     print("\nOutputs:")
+    print(f"  {os.path.join(out, 'fit')}/  (the pop-up from {os.path.basename(args.model)}:")
+    print("      design.FCStd, report.json, preview.png, sheets/)")
     for path in [design, *report_files, fcstd, *card_files, *pngs, *sheet_files]:
         print(f"  {path}")
     failed = False

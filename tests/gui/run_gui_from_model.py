@@ -46,7 +46,8 @@ def run():
     Gui.SendMsgToActiveView("ViewFit")
     Gui.Selection.clearSelection()
     Gui.Selection.addSelection(house)
-    result["command_active"] = Gui.Command.get("PopUp_FromModel").isActive()
+    from popupwb.commands.from_model import FromModelCommand
+    result["command_active"] = FromModelCommand().IsActive()
     Gui.runCommand("PopUp_FromModel")
     settle()
     panel = from_model_panel.last_panel
