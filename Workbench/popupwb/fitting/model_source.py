@@ -98,17 +98,27 @@ def model_of_document(path):
         check_fcstd(path)
     except ValueError as e:
         raise ValueError(f"{path}: {e}")
-    try:
-        doc = FreeCAD.openDocument(os.path.abspath(path))
-    except Exception as e:  # FreeCAD raises plain Exception/OSError on a damaged file
-        raise ValueError(f"{path}: cannot open as a FreeCAD document ({e})")
+    wanted = os.path.realpath(path)
+    already = [
+        d
+        for d in FreeCAD.listDocuments().values()
+        if d.FileName and os.path.realpath(d.FileName) == wanted
+    ]
+    if already:  # open in this session: read it, and leave it open
+        doc = already[0]
+    else:
+        try:
+            doc = FreeCAD.openDocument(os.path.abspath(path))
+        except Exception as e:  # FreeCAD raises plain Exception/OSError on a damaged file
+            raise ValueError(f"{path}: cannot open as a FreeCAD document ({e})")
     try:
         objects = top_level_models(doc)
         if not objects:
             raise ValueError(f"{path}: no Mesh or Part object with faces in this document")
         return model_of_objects(objects, path), [obj.Label for obj in objects]
     finally:
-        FreeCAD.closeDocument(doc.Name)
+        if not already:
+            FreeCAD.closeDocument(doc.Name)
 
 
 def transformed(vertices, matrix):
