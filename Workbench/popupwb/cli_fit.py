@@ -150,7 +150,7 @@ def run(args, cli):
             model, repairs = fit_run.clean_model(model)
         except ValueError as e:
             raise cli.InputError(_named(args.model, e, cli))
-    done = {k: v for k, v in repairs.items() if v}
+    done = {k: v for k, v in repairs.items() if v and not isinstance(v, bool)}
     if done:
         say("repaired: " + ", ".join(f"{k} {v}" for k, v in sorted(done.items())))
 

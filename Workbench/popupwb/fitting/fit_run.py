@@ -65,7 +65,8 @@ def clean_model(model):
     from popupwb.core import popupcore
 
     cleaned, repairs = popupcore.clean_model(model)
-    return cleaned, {str(k): int(v) for k, v in dict(repairs).items()}
+    # Counts stay ints; a flag such as "closed" stays a bool.
+    return cleaned, {str(k): v if isinstance(v, bool) else int(v) for k, v in dict(repairs).items()}
 
 
 def min_shape_of_detail(detail):
