@@ -46,6 +46,8 @@ BOXES = {
     ],
     "tent": [("prism", (0, 0, 0), (60, 40, 30))],
     "l_building": [("box", (0, 0, 0), (60, 20, 30)), ("box", (0, 0, 0), (20, 50, 30))],
+    # A slab 0.4 mm thick: nothing on it stands up far enough to be a mechanism (no design).
+    "plate": [("box", (0, 0, 0), (80, 60, 0.4))],
 }
 
 
@@ -126,6 +128,7 @@ SOLIDS = {
     "truck": lambda: blocky("truck"),
     "tent": lambda: blocky("tent"),
     "l_building": lambda: blocky("l_building"),
+    "plate": lambda: blocky("plate"),
     "blob": blob,
     "figure": figure,
     "truck_with_wheels": truck_with_wheels,
