@@ -74,6 +74,7 @@ def models(tmp_path_factory):
         ("house", "obj"),
         ("tent", "ply"),
         ("defective", "obj"),
+        ("plate", "off"),
     ):
         paths[name] = make_models.write_model(name, str(folder / f"{name}.{extension}"))
     return paths
@@ -233,6 +234,15 @@ def test_a_freecad_document_with_a_part_solid_is_a_model(tmp_path, home, freecad
     assert proc.returncode == 0, proc.stdout + proc.stderr
     assert "Block of block.FCStd" in proc.stderr
     assert read_report(tmp_path / "out")["number_of_mechanisms"] >= 1
+
+
+def test_a_model_with_nothing_to_pop_up_exits_1_with_a_report(models, tmp_path, home):
+    proc = fit(models["plate"], tmp_path, *UPRIGHT, home=home)
+    assert proc.returncode == 1, proc.stdout + proc.stderr
+    report = read_report(tmp_path)
+    assert report["valid"] is False
+    assert not os.path.exists(tmp_path / "sheets")
+    assert "no valid design" in proc.stdout.lower() + proc.stderr.lower()
 
 
 def assert_named_error(proc, *fragments):
