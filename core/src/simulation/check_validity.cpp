@@ -5,6 +5,8 @@
 #include <map>
 #include <sstream>
 
+#include <tbb/parallel_for.h>
+
 #include "../geometry/indexed_loops.hpp"
 #include "../geometry/polygon_2d.hpp"
 #include "../model/millimetres.hpp"
@@ -258,22 +260,47 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
     const FoldSolver solver(s, graph.value, simulation);
 
     // Stable: no free motion with the base held still, at every sampled angle strictly between.
+    // Components are independent and each owns its solver buffers: one thread per component,
+    // every sample in turn; the verdicts are merged in sample order.
+    std::vector<size_t> between;
+    for (size_t k = 0; k < sweep.states.size(); ++k)
+        if (sweep.states[k].angle > 0.0 && sweep.states[k].angle < M_PI)
+            between.push_back(k);
+    std::vector<Configuration> configurations(between.size());
+    tbb::parallel_for(size_t(0), between.size(), [&](size_t k) {
+        configurations[k] = solver.configuration(sweep.states[between[k]]);
+    });
+    const size_t components = graph.value.components.size();
+    std::vector<std::vector<ComponentMotion>> motions(components);
+    tbb::parallel_for(size_t(0), components, [&](size_t c) {
+        motions[c].resize(between.size());
+        for (size_t k = 0; k < between.size(); ++k) {
+            stop_if_cancelled(options.cancel, "the validity check");
+            motions[c][k] = component_free_motion(solver, int(c), configurations[k]);
+        }
+    });
     int unstable_samples = 0;
-    for (const FoldState& st : sweep.states) {
-        if (st.angle <= 0.0 || st.angle >= M_PI)
-            continue;
-        stop_if_cancelled(options.cancel, "the validity check");
-        const FreeMotion motion = free_motion_of(s, solver, solver.configuration(st));
-        if (motion.dimension == 0)
+    for (size_t k = 0; k < between.size(); ++k) {
+        int dimension = 0;
+        std::vector<int> bodies;
+        for (size_t c = 0; c < components; ++c) {
+            dimension += motions[c][k].dimension;
+            bodies.insert(bodies.end(), motions[c][k].moving_bodies.begin(),
+                          motions[c][k].moving_bodies.end());
+        }
+        if (dimension == 0)
             continue;
         if (unstable_samples++ == 0) {
+            std::sort(bodies.begin(), bodies.end());
+            const std::vector<int> moving = patches_of_bodies(s, graph.value, bodies);
+            const FoldState& st = sweep.states[between[k]];
             std::ostringstream names;
-            for (size_t k = 0; k < motion.moving_patches.size(); ++k)
-                names << (k ? ", " : "") << describe(*s.find_patch(motion.moving_patches[k]));
+            for (size_t i = 0; i < moving.size(); ++i)
+                names << (i ? ", " : "") << describe(*s.find_patch(moving[i]));
             add(DiagnosticCode::unstable,
-                std::to_string(motion.dimension) + " free motion(s) besides the fold angle at " +
+                std::to_string(dimension) + " free motion(s) besides the fold angle at " +
                     deg(st.angle) + ": " + names.str() + " can move while the base is held still",
-                about_patches(motion.moving_patches, st.angle * 180.0 / M_PI));
+                about_patches(moving, st.angle * 180.0 / M_PI));
         }
     }
     report.stable = unstable_samples == 0 && !sweep.states.empty();

@@ -5,6 +5,8 @@
 #include <numeric>
 #include <sstream>
 
+#include <tbb/parallel_for.h>
+
 #include "body_graph.hpp"
 #include "fold_solver.hpp"
 
@@ -83,8 +85,18 @@ Result<FoldSweep> sweep_from(const Scaffold& s, const BodyGraph& g, const FoldSo
     std::vector<Configuration> configs(angles.size(), start.configuration);
     std::vector<bool> reached(angles.size(), true);
     FoldSweep& sweep = result.value;
+    // Components move independently: each is followed by one thread, writing only its own
+    // bodies' poses, and the findings are merged in component order, so the result does not
+    // depend on the scheduling.
+    struct Track {
+        size_t reached = 0; ///< how many angles of the run it reached
+        double locked_at = -1.0;
+        bool branch_followed = true;
+    };
+    const size_t components = g.components.size();
     for (const std::vector<int>* run : {&closing, &opening}) {
-        for (size_t c = 0; c < g.components.size(); ++c) {
+        std::vector<Track> tracks(components);
+        tbb::parallel_for(size_t(0), components, [&](size_t c) {
             ComponentTrack track(solver, int(c), start.angle, start.configuration, start.design);
             size_t k = 0;
             for (; k < run->size(); ++k) {
@@ -95,10 +107,14 @@ Result<FoldSweep> sweep_from(const Scaffold& s, const BodyGraph& g, const FoldSo
                 for (int b : g.components[c])
                     configs[i][b] = track.configuration()[b];
             }
-            if (k < run->size()) {
-                for (; k < run->size(); ++k)
+            tracks[c] = {k, k < run->size() ? track.locked_angle() : -1.0, track.branch_followed()};
+        });
+        for (size_t c = 0; c < components; ++c) {
+            const Track& t = tracks[c];
+            if (t.reached < run->size()) {
+                for (size_t k = t.reached; k < run->size(); ++k)
                     reached[(*run)[k]] = false;
-                const double at = track.locked_angle();
+                const double at = t.locked_at;
                 const bool closer = run == &closing;
                 if (sweep.locked_at < 0.0 || (closer ? at > sweep.locked_at : at < sweep.locked_at))
                     sweep.locked_at = at;
@@ -110,7 +126,7 @@ Result<FoldSweep> sweep_from(const Scaffold& s, const BodyGraph& g, const FoldSo
                                 patch_list(s, ids),
                             about_patches(ids, at * 180.0 / M_PI));
             }
-            if (!track.branch_followed())
+            if (!t.branch_followed)
                 result.warn(DiagnosticCode::branch_not_followed,
                             "a flat fold left the design state against its fold direction" +
                                 patch_list(s, component_patches(s, g, int(c))),
@@ -118,12 +134,16 @@ Result<FoldSweep> sweep_from(const Scaffold& s, const BodyGraph& g, const FoldSo
         }
     }
     sweep.complete = std::all_of(reached.begin(), reached.end(), [](bool r) { return r; });
-    for (size_t i = 0; i < angles.size(); ++i) {
-        if (!reached[i])
-            continue;
+    std::vector<size_t> posed;
+    for (size_t i = 0; i < angles.size(); ++i)
+        if (reached[i])
+            posed.push_back(i);
+    sweep.states.resize(posed.size());
+    tbb::parallel_for(size_t(0), posed.size(), [&](size_t k) {
+        const size_t i = posed[k];
         solver.drive_base(angles[i], configs[i]);
-        sweep.states.push_back(solver.state(angles[i], configs[i]));
-    }
+        sweep.states[k] = solver.state(angles[i], configs[i]);
+    });
     return result;
 }
 

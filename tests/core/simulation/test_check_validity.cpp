@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include <tbb/task_arena.h>
+
 #include "generated_scaffolds.hpp"
 #include "popup/simulation/check_validity.hpp"
 #include "sheet_designs.hpp"
@@ -296,4 +298,28 @@ TEST(CheckValidity, SparseAndDenseSolversGiveTheSameReport)
     EXPECT_EQ(da->message, db->message);
     EXPECT_NE(db->message.find("5 free motion"), std::string::npos) << db->message;
     EXPECT_EQ(db->patches.size(), 7u);
+}
+
+// Components are followed on all cores: the report must be the one a single thread writes, to
+// the bit, whatever the scheduling (an unstable chain and a crossing design included).
+TEST(CheckValidity, AllCoresGiveTheOneThreadReport)
+{
+    const std::vector<Scaffold> cards = {fixtures::generated_scaffold(60), fixtures::chain_card(7),
+                                         fixtures::nested_boxes(2)};
+    for (const Scaffold& card : cards) {
+        ValidityReport serial;
+        tbb::task_arena(1).execute([&] { serial = check_validity(card); });
+        for (int run = 0; run < 3; ++run) {
+            const ValidityReport parallel = check_validity(card);
+            EXPECT_EQ(parallel.valid(), serial.valid());
+            EXPECT_EQ(parallel.stable, serial.stable);
+            EXPECT_EQ(parallel.max_hinge_residual, serial.max_hinge_residual);
+            EXPECT_EQ(parallel.flatness_at_zero, serial.flatness_at_zero);
+            ASSERT_EQ(parallel.diagnostics.size(), serial.diagnostics.size());
+            for (size_t k = 0; k < serial.diagnostics.size(); ++k) {
+                EXPECT_EQ(parallel.diagnostics[k].message, serial.diagnostics[k].message);
+                EXPECT_EQ(parallel.diagnostics[k].patches, serial.diagnostics[k].patches);
+            }
+        }
+    }
 }
