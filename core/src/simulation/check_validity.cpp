@@ -308,27 +308,44 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
     // Intersection-free: no transversal cut at a sample and no pass-through between samples.
     const std::vector<PatchMesh> meshes = mesh_patches(s);
     const Checker checker{s, graph.value, solver, meshes, flat_tolerance, options.clearance};
-    std::map<std::pair<int, int>, PairFinding> findings;
-    std::map<std::pair<int, int>, bool> was_crossing;
-    const FoldState* previous = nullptr;
-    for (const FoldState& st : sweep.states) {
+    // Each sample (and the gap before it) is judged on its own, on all cores; only a pair's
+    // onset depends on whether it crossed at the sample before, so that is done in order.
+    struct PairAtSample {
+        int i, j;
+        double depth;   ///< > 0: crossing at the sample
+        double through; ///< > 0: passed through between the previous sample and this one
+    };
+    const double margin = flat_tolerance + options.clearance;
+    std::vector<std::vector<PairAtSample>> samples(sweep.states.size());
+    tbb::parallel_for(size_t(0), sweep.states.size(), [&](size_t k) {
         stop_if_cancelled(options.cancel, "the validity check");
-        const double margin = flat_tolerance + options.clearance;
+        const FoldState& st = sweep.states[k];
+        const FoldState* previous = k ? &sweep.states[k - 1] : nullptr;
         for (const auto& [i, j] : candidate_pairs(meshes, graph.value.body_of_patch, st, margin)) {
             stop_if_cancelled(options.cancel, "the validity check"); // a pair may be refined
-            const std::pair<int, int> key{i, j};
-            double depth = checker.depth(st, i, j);
-            double at = st.angle;
-            if (depth > 0.0 && previous && !was_crossing[key])
-                at = checker.onset(*previous, st, i, j, options.refine_depth);
-            else if (depth <= 0.0 && previous) {
-                const double through =
+            PairAtSample p{i, j, checker.depth(st, i, j), 0.0};
+            if (p.depth <= 0.0 && previous)
+                p.through =
                     std::max(checker.passes_through(*previous, st, i, j, options.refine_depth),
                              checker.passes_through(*previous, st, j, i, options.refine_depth));
-                if (through > 0.0) {
-                    depth = through;
-                    at = 0.5 * (previous->angle + st.angle);
-                }
+            samples[k].push_back(p);
+        }
+    });
+    std::map<std::pair<int, int>, PairFinding> findings;
+    std::map<std::pair<int, int>, bool> was_crossing;
+    for (size_t k = 0; k < sweep.states.size(); ++k) {
+        const FoldState& st = sweep.states[k];
+        const FoldState* previous = k ? &sweep.states[k - 1] : nullptr;
+        for (const PairAtSample& p : samples[k]) {
+            const std::pair<int, int> key{p.i, p.j};
+            double depth = p.depth;
+            double at = st.angle;
+            if (depth > 0.0 && previous && !was_crossing[key]) {
+                stop_if_cancelled(options.cancel, "the validity check");
+                at = checker.onset(*previous, st, p.i, p.j, options.refine_depth);
+            } else if (depth <= 0.0 && p.through > 0.0) {
+                depth = p.through;
+                at = 0.5 * (previous->angle + st.angle);
             }
             was_crossing[key] = depth > 0.0;
             if (depth <= 0.0)
@@ -337,7 +354,6 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
             if (!fresh)
                 it->second.depth = std::max(it->second.depth, depth);
         }
-        previous = &st;
     }
     for (const auto& [key, f] : findings) {
         const Patch& a = s.patches[key.first];

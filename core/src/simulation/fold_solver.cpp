@@ -115,8 +115,11 @@ bool FoldSolver::uses_sparse(int c) const
 
 FoldSolver::SparseSystem& FoldSolver::sparse_system(int c) const
 {
-    if (sparse_[c])
-        return *sparse_[c];
+    std::vector<std::unique_ptr<SparseSystem>>& systems = sparse_.local();
+    if (systems.empty())
+        systems.resize(graph_.components.size());
+    if (systems[c])
+        return *systems[c];
     auto s = std::make_unique<SparseSystem>();
     const int nb = int(graph_.components[c].size());
     // Local body index of a body of this component, -1 for the base (no unknowns).
@@ -197,8 +200,8 @@ FoldSolver::SparseSystem& FoldSolver::sparse_system(int c) const
         s->slits.push_back({s->slot(t, t), s->slot(u, u), s->slot(t, u), s->slot(u, t)});
     }
     s->ldlt.analyzePattern(s->A);
-    sparse_[c] = std::move(s);
-    return *sparse_[c];
+    systems[c] = std::move(s);
+    return *systems[c];
 }
 
 FoldSolver::FoldSolver(const Scaffold& scaffold, const BodyGraph& graph,
@@ -217,7 +220,6 @@ FoldSolver::FoldSolver(const Scaffold& scaffold, const BodyGraph& graph,
             {scaffold.patch_index(h.patch_a), scaffold.patch_index(h.patch_b)});
     hints_.resize(graph.components.size());
     undirected_.resize(graph.components.size());
-    sparse_.resize(graph.components.size());
     const Configuration design = design_configuration();
     for (const Joint& joint : graph.joints) {
         const Hinge& h = scaffold.hinges[joint.hinge];

@@ -8,6 +8,8 @@
 #include <optional>
 #include <vector>
 
+#include <tbb/enumerable_thread_specific.h>
+
 #include "body_graph.hpp"
 #include "popup/simulation/simulate_fold.hpp"
 
@@ -137,8 +139,9 @@ private:
     std::vector<std::vector<int>> undirected_;
     std::vector<int> column_of_body_; ///< first unknown of each free body within its component
     std::vector<std::array<int, 2>> hinge_patches_; ///< patch indices of each hinge
-    /// Per component, built on first use by sparse_system().
-    mutable std::vector<std::unique_ptr<SparseSystem>> sparse_;
+    /// Per thread and component, built on first use by sparse_system(): the validity check
+    /// solves on all cores, and a system holds the factorisation it is working on.
+    mutable tbb::enumerable_thread_specific<std::vector<std::unique_ptr<SparseSystem>>> sparse_;
 };
 
 /// Continuation of one component from the design state toward a sequence of angles.

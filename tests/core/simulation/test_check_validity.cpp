@@ -304,8 +304,9 @@ TEST(CheckValidity, SparseAndDenseSolversGiveTheSameReport)
 // the bit, whatever the scheduling (an unstable chain and a crossing design included).
 TEST(CheckValidity, AllCoresGiveTheOneThreadReport)
 {
-    const std::vector<Scaffold> cards = {fixtures::generated_scaffold(60), fixtures::chain_card(7),
-                                         fixtures::nested_boxes(2)};
+    const std::vector<Scaffold> cards = {
+        fixtures::generated_scaffold(60), fixtures::chain_card(7), fixtures::nested_boxes(2),
+        fixtures::colliding_walls_card(), fixtures::broken_tent_card()};
     for (const Scaffold& card : cards) {
         ValidityReport serial;
         tbb::task_arena(1).execute([&] { serial = check_validity(card); });
