@@ -5,6 +5,7 @@ with a patch whose back side is printed, with registration marks. No FreeCAD nee
 
 import base64
 import io
+import json
 import math
 import os
 import re
@@ -337,3 +338,52 @@ def test_render_artwork_binding(model, scaffold):
     assert error.value.diagnostics[0]["parameter"] == "pixels_per_mm"
     with pytest.raises(popupcore.DesignError, match="depth = nan"):
         popupcore.render_artwork(model, ground, depth=float("nan"))
+
+
+def test_flat_patch_frames_cross_the_binding(scaffold):
+    from popupwb.sheets.sheet_options import core_options
+
+    core = popupcore.layout_sheets(scaffold, core_options(paper="A3"))
+    written = json.loads(core.to_json())
+    for piece, piece_dict in zip(core.pieces, written["pieces"]):
+        for flat, flat_dict in zip(piece.patches, piece_dict["patches"]):
+            assert flat.to_sheet.shape == (2, 3)
+            numpy.testing.assert_allclose(flat.to_sheet, flat_dict["to_sheet"], atol=0)
+            assert flat.normal_side_up() == normal_side_up(flat_dict)
+
+
+def test_a_png_texture_written_by_pil_is_mapped_by_its_uvs(scaffold, tmp_path):
+    # 2 x 1 texture: left texel red, right texel blue, on a 40 x 20 mm quad over the ground with
+    # u running along x; uv (0.25, 0.5) and (0.75, 0.5) are the texel centres.
+    path = tmp_path / "two.png"
+    Image.fromarray(numpy.array([[[255, 0, 0, 255], [0, 0, 255, 255]]], numpy.uint8)).save(path)
+    corners = [(60, 20, 0.2), (100, 20, 0.2), (100, 40, 0.2), (60, 40, 0.2)]
+    mesh = popupcore.ModelMesh(numpy.array(corners, float), numpy.array([[0, 1, 2], [0, 2, 3]]))
+    mesh.uvs = numpy.array([[0, 0], [1, 0], [1, 1], [0, 1]], float)
+    mesh.texture = str(path)
+    ground = scaffold.patches[scaffold.ground]
+    art = popupcore.render_artwork(mesh, ground, pixels_per_mm=1.0)
+    assert art.warnings == []
+
+    def colour_and_centre(point):
+        """The pixel holding `point`, and the design-state centre of that pixel."""
+        d = numpy.asarray(point, float) - art.frame["origin"]
+        u, v = d @ art.frame["u"], d @ art.frame["v"]
+        column = int((u - art.origin_uv[0]) // art.mm_per_pixel)
+        row = art.rgba.shape[0] - 1 - int((v - art.origin_uv[1]) // art.mm_per_pixel)
+        cu = art.origin_uv[0] + (column + 0.5) * art.mm_per_pixel
+        cv = art.origin_uv[1] + (art.rgba.shape[0] - row - 0.5) * art.mm_per_pixel
+        centre = art.frame["origin"] + cu * art.frame["u"] + cv * art.frame["v"]
+        return tuple(art.rgba[row, column]), centre
+
+    for point in ((70.5, 30.5, 0), (90.5, 30.5, 0), (79.6, 25, 0)):
+        colour, centre = colour_and_centre(point)
+        # Bilinear between texel centres (u = 0.25 red, 0.75 blue), the texture repeating.
+        t = ((centre[0] - 60) / 40) * 2 - 0.5
+        first = math.floor(t)
+        blue = (t - first) if first % 2 == 0 else 1 - (t - first)
+        assert colour == (round(255 * (1 - blue)), 0, round(255 * blue), 255), point
+    mesh.texture = str(tmp_path / "missing.png")
+    shaded = popupcore.render_artwork(mesh, ground, pixels_per_mm=1.0)
+    assert [w["code"] for w in shaded.warnings] == ["unreadable_model"]
+    assert "missing.png" in shaded.warnings[0]["message"]
