@@ -264,11 +264,15 @@ Result<PatchArtwork> render_one(const ModelMesh& mesh, const Appearance& look, c
         const double b_min = std::min({p[0].b, p[1].b, p[2].b});
         const double b_max = std::max({p[0].b, p[1].b, p[2].b});
         // Pixels whose centres can fall inside: centre_u(c) in [a_min, a_max], likewise rows.
-        const int c0 = std::max(0, int(std::ceil((a_min - lo.x()) / step - 0.5)) - 1);
-        const int c1 = std::min(width - 1, int(std::floor((a_max - lo.x()) / step - 0.5)) + 1);
-        const int r0 = std::max(0, int(std::ceil(height - 0.5 - (b_max - lo.y()) / step)) - 1);
-        const int r1 =
-            std::min(height - 1, int(std::floor(height - 0.5 - (b_min - lo.y()) / step)) + 1);
+        // Clamped as doubles first: a triangle far off the patch must not overflow an int.
+        auto index = [](double x, int n) { return int(std::clamp(x, -1.0, double(n))); };
+        const int c0 = std::max(0, index(std::ceil((a_min - lo.x()) / step - 0.5), width) - 1);
+        const int c1 =
+            std::min(width - 1, index(std::floor((a_max - lo.x()) / step - 0.5), width) + 1);
+        const int r0 =
+            std::max(0, index(std::ceil(height - 0.5 - (b_max - lo.y()) / step), height) - 1);
+        const int r1 = std::min(
+            height - 1, index(std::floor(height - 0.5 - (b_min - lo.y()) / step), height) + 1);
         for (int row = r0; row <= r1; ++row)
             for (int column = c0; column <= c1; ++column) {
                 const auto w = weights(p, twice_area, centre_u(column), centre_v(row));

@@ -423,3 +423,13 @@ TEST(RenderArtwork, JpegTextureIsDecoded)
     EXPECT_TRUE(has(decode_image(std::string("\x89PNG\r\n\x1a\nbroken", 14), "bad.png").diagnostics,
                     DiagnosticCode::unreadable_model, "bad.png: not a readable PNG"));
 }
+
+TEST(RenderArtwork, ModelFarBesideThePatchLeavesItTransparent)
+{
+    // 1e9 mm away in the patch plane: no pixel index may overflow, nothing shows.
+    const ModelMesh cube = coloured_box({1e9, 0, -10}, {1e9 + 20, 20, 10});
+    const Patch patch = patch_with({{0, 0, 0}, {40, 0, 0}, {40, 40, 0}, {0, 40, 0}});
+    const Result<PatchArtwork> r = render_artwork(cube, patch);
+    ASSERT_TRUE(r.ok);
+    EXPECT_EQ(r.value.covered_pixels, 0);
+}
