@@ -21,6 +21,7 @@ from pypdf.generic import ContentStream
 import popupcore
 from popupwb.sheets.export import export_sheets, layout
 from popupwb.sheets.pdf_writer import write_pdf
+from popupwb.sheets.print_artwork import render_sheet_artwork
 from popupwb.sheets.svg_writer import write_svg
 
 SOURCE_DIR = os.environ["POPUP_SOURCE_DIR"]
@@ -95,16 +96,12 @@ def normal_side_up(flat):
 
 def render_all(model, scaffold, sheet_set):
     """Artwork for every patch, each rendered from the side its sheet prints."""
+    artwork = render_sheet_artwork(model, scaffold, sheet_set, pixels_per_mm=PIXELS_PER_MM)
     flats = flat_patches(sheet_set)
-    return {
-        patch.id: popupcore.render_artwork(
-            model,
-            patch,
-            pixels_per_mm=PIXELS_PER_MM,
-            back_side=not normal_side_up(flats[patch.id][1]),
-        )
-        for patch in scaffold.patches
-    }
+    assert sorted(artwork) == sorted(flats)
+    for patch_id, art in artwork.items():
+        assert art.back_side == (not normal_side_up(flats[patch_id][1]))
+    return artwork
 
 
 def on_sheet(flat, art, point):

@@ -8,7 +8,14 @@ The writers take `artwork` = {patch id: image}, where an image is any object wit
     back_side     True when rendered from the side opposite the patch's normal (default False).
 popupcore.PatchArtwork is one. Each flat patch's `to_sheet` (docs/SHEET_FORMAT.md) takes the patch
 frame onto the sheet; where it is a reflection (the patch's back side faces up) the image is
-mirrored with it, and only an image of that side belongs there. No FreeCAD needed.
+mirrored with it, and only an image of that side belongs there. `render_sheet_artwork` renders
+every laid-out patch from its printed side:
+
+    sheet_set = layout(scaffold, paper="A3")
+    artwork = render_sheet_artwork(mesh, scaffold, sheet_set, pixels_per_mm=300 / 25.4)
+    export_sheets(sheet_set, "out/sheets", artwork=artwork)
+
+No FreeCAD needed.
 """
 
 import base64
@@ -19,7 +26,7 @@ from typing import Tuple
 
 import numpy
 
-from .sheet_set import FlatPatch
+from .sheet_set import FlatPatch, read_sheet_set
 
 Affine = Tuple[Tuple[float, float, float], Tuple[float, float, float]]
 
@@ -111,6 +118,36 @@ def place_artwork(sheets, artwork):
             f"{', '.join(map(str, known)) or 'none'})"
         )
     return placed
+
+
+def render_sheet_artwork(mesh, scaffold, sheet_set, **options):
+    """{patch id: popupcore.PatchArtwork} for every patch the sheet set lays out, each rendered
+    from the side its sheet prints (back_side where the flat patch's back faces up), the
+    texture read once per side. `mesh`: a popupcore.ModelMesh in card mm; `scaffold`: the
+    design at its design state; `sheet_set`: the dict export.layout gives; `options`: the
+    keywords of popupcore.render_artworks (pixels_per_mm, depth, behind, light, ambient,
+    max_pixels). popupcore.DesignError names a bad option or model."""
+    from popupwb.core import popupcore
+
+    if "back_side" in options:
+        raise ValueError("render_sheet_artwork chooses back_side per patch from the sheet set")
+    sheets = read_sheet_set(sheet_set)
+    sides = {}
+    for piece in sheets.pieces():
+        for flat in piece.patches:
+            if flat.to_sheet is None:
+                raise ValueError(
+                    f"patch {flat.id} ({flat.name}): the sheet set gives no to_sheet for it "
+                    "(written by an older PopUp); lay the sheets out again"
+                )
+            sides[flat.id] = not flat.normal_side_up()
+    artwork = {}
+    for back in (False, True):
+        patches = [p for p in scaffold.patches if sides.get(p.id) is back]
+        if patches:
+            for art in popupcore.render_artworks(mesh, patches, back_side=back, **options):
+                artwork[art.patch] = art
+    return artwork
 
 
 def pil_image(rgba):
