@@ -1,6 +1,7 @@
 // The cutting-sheet layout as bound types: SheetSet and its pieces, lines, tabs, glue areas and
 // labels, read-only, loops as (n, 2) arrays in mm. to_json() gives the file format
 // (docs/SHEET_FORMAT.md) for the writers.
+#include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -45,7 +46,12 @@ void bind_sheet_set(py::module_& m)
         .def_readonly("id", &FlatPatch::id)
         .def_readonly("name", &FlatPatch::name)
         .def_property_readonly("outer", [](const FlatPatch& p) { return loop2_array(p.outer); })
-        .def_property_readonly("holes", [](const FlatPatch& p) { return loops_list(p.holes); });
+        .def_property_readonly("holes", [](const FlatPatch& p) { return loops_list(p.holes); })
+        .def_property_readonly(
+            "to_sheet", [](const FlatPatch& p) { return Eigen::Matrix<double, 2, 3>(p.to_sheet); },
+            "2 x 3: the patch's own frame (u, v) onto the sheet, sheet = A (u, v) + t")
+        .def("normal_side_up", &FlatPatch::normal_side_up,
+             "The patch's normal side faces up (is printed); else its back side does.");
     py::class_<Region>(m, "Region", "A closed outline with holes")
         .def_property_readonly("outer", [](const Region& r) { return loop2_array(r.outer); })
         .def_property_readonly("holes", [](const Region& r) { return loops_list(r.holes); });

@@ -74,21 +74,28 @@ def remove_stale_sheet_files(out_dir):
             os.remove(os.path.join(out_dir, name))
 
 
-def export_sheets(sheet_set, out_dir, style=None, registration_marks=False, not_valid=None):
+def export_sheets(
+    sheet_set, out_dir, style=None, registration_marks=False, not_valid=None, artwork=None
+):
     """Writes the production files into out_dir (created if needed); returns {kind: path(s)}.
     `not_valid` (a not_valid_stamp.NotValid) stamps every sheet and page: the design failed the
-    validity check and the sheets were forced."""
+    validity check and the sheets were forced. `artwork` ({patch id: popupcore.PatchArtwork},
+    print_artwork.py) goes on the print layer of the PDF and SVG, with registration marks; the
+    DXF stays a cut file."""
     os.makedirs(out_dir, exist_ok=True)
     remove_stale_sheet_files(out_dir)
     paths = {
         "dxf": write_dxf(sheet_set, os.path.join(out_dir, "sheets.dxf"), style, not_valid),
-        "svg": write_svg(sheet_set, os.path.join(out_dir, "sheets.svg"), style, not_valid),
+        "svg": write_svg(
+            sheet_set, os.path.join(out_dir, "sheets.svg"), style, not_valid, artwork=artwork
+        ),
         "pdf": write_pdf(
             sheet_set,
             os.path.join(out_dir, "sheets.pdf"),
             style,
             registration_marks,
             not_valid=not_valid,
+            artwork=artwork,
         ),
         "instructions": write_instructions(
             sheet_set, os.path.join(out_dir, "instructions.pdf"), style, not_valid=not_valid

@@ -3,33 +3,48 @@ in the colours and dashes of layer_style.SheetStyle. Print it to cut by hand, or
 cut on a cutter with registration marks (print-then-cut). Sheets of a design the validity check
 rejects carry the NOT VALID stamp (not_valid_stamp.py) on every page.
 
-Registration marks (registration_marks=True): filled black squares of REGISTRATION_MARK_SIZE mm in
-the top-left, top-right and bottom-left corners, each centred in the margin band (so it stays
-clear of the pieces); the bottom-right corner is left empty so the cutter's camera can tell the
-sheet's orientation. They are printed only: the DXF and SVG cut files carry none.
+Registration marks (registration_marks=True, and always with artwork): registration_marks.py. The
+DXF carries none; the SVG has them on its print layer when it carries artwork.
+
+Artwork (print_artwork.py): each patch's image, clipped to the patch's flat outline, drawn under
+the lines, for print-then-cut.
 """
 
 from reportlab.lib.units import mm
-from reportlab.pdfgen.canvas import Canvas
+from reportlab.pdfgen.canvas import FILL_EVEN_ODD, Canvas
+
+from reportlab.lib.utils import ImageReader
 
 from .sheet_set import read_sheet_set
 from .layer_style import SheetStyle
 from .not_valid_stamp import stamp_label
+from .print_artwork import pil_image, place_artwork
+from .registration_marks import MARK_SIZE, check_room_for_marks, mark_squares
 
 FONT = "Helvetica"
 CAP_HEIGHT = 0.718  # of the font size, Helvetica
-REGISTRATION_MARK_SIZE = 5.0  # mm
-REGISTRATION_CLEARANCE = 0.5  # mm, least distance between a mark and the printable pieces
+REGISTRATION_MARK_SIZE = MARK_SIZE  # mm
 
 
-def write_pdf(sheet_set, path, style=None, registration_marks=False, compress=True, not_valid=None):
+def write_pdf(
+    sheet_set,
+    path,
+    style=None,
+    registration_marks=False,
+    compress=True,
+    not_valid=None,
+    artwork=None,
+):
     """Writes the sheets of `sheet_set` to the PDF `path`, one page each; returns `path`.
     compress=False leaves the page streams readable (tests grep them). `not_valid` (a
-    not_valid_stamp.NotValid) stamps every page."""
+    not_valid_stamp.NotValid) stamps every page. `artwork`: {patch id: popupcore.PatchArtwork}
+    (print_artwork.py), printed on the patches; registration marks come with it."""
     sheets = read_sheet_set(sheet_set)
     style = style or SheetStyle()
+    placed = place_artwork(sheets, artwork)
+    registration_marks = registration_marks or bool(artwork)
     if registration_marks:
-        _check_room_for_marks(sheets.margin)
+        check_room_for_marks(sheets.margin)
     canvas = Canvas(
         path, pagesize=(sheets.width * mm, sheets.height * mm), pageCompression=compress
     )
@@ -40,6 +55,8 @@ def write_pdf(sheet_set, path, style=None, registration_marks=False, compress=Tr
         stamp = stamp_label(sheets.width, sheets.height, sheets.margin, not_valid)
     for sheet in sheets.sheets:
         canvas.scale(mm, mm)  # from here on, user units are mm with the origin lower left
+        for item in placed.get(sheet.index, ()):
+            _draw_artwork(canvas, item)
         for piece in sheet.pieces:
             _draw_piece(canvas, piece, style)
         if stamp is not None:
@@ -50,15 +67,6 @@ def write_pdf(sheet_set, path, style=None, registration_marks=False, compress=Tr
         canvas.showPage()
     canvas.save()
     return path
-
-
-def _check_room_for_marks(margin):
-    needed = REGISTRATION_MARK_SIZE + 2 * REGISTRATION_CLEARANCE
-    if margin < needed:
-        raise ValueError(
-            f"registration marks need a margin of at least {needed:g} mm; the sheet set has "
-            f"{margin:g} mm"
-        )
 
 
 def _stroke_style(canvas, layer):
@@ -102,10 +110,26 @@ def _draw_label(canvas, label):
     canvas.restoreState()
 
 
+def _draw_artwork(canvas, item):
+    """One patch's image, clipped to its flat outline (holes cut out, even-odd)."""
+    canvas.saveState()
+    outline = canvas.beginPath()
+    for loop in (item.patch.outer,) + item.patch.holes:
+        outline.moveTo(*loop[0])
+        for point in loop[1:]:
+            outline.lineTo(*point)
+        outline.close()
+    canvas.clipPath(outline, stroke=0, fill=0, fillMode=FILL_EVEN_ODD)  # holes cut out
+    (a, c, e), (b, d, f) = item.image_to_sheet
+    canvas.transform(a, b, c, d, e, f)  # image mm (x right, y up) -> sheet mm
+    width, height = item.size_mm
+    canvas.drawImage(
+        ImageReader(pil_image(item.rgba)), 0, 0, width, height, mask="auto", anchor="sw"
+    )
+    canvas.restoreState()
+
+
 def _draw_registration_marks(canvas, width, height, margin):
-    inset = (margin - REGISTRATION_MARK_SIZE) / 2.0
-    far_x = width - inset - REGISTRATION_MARK_SIZE
-    far_y = height - inset - REGISTRATION_MARK_SIZE
     canvas.setFillColorRGB(0, 0, 0)
-    for x, y in ((inset, far_y), (far_x, far_y), (inset, inset)):
-        canvas.rect(x, y, REGISTRATION_MARK_SIZE, REGISTRATION_MARK_SIZE, stroke=0, fill=1)
+    for x, y in mark_squares(width, height, margin):
+        canvas.rect(x, y, MARK_SIZE, MARK_SIZE, stroke=0, fill=1)

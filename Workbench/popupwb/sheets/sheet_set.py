@@ -70,6 +70,24 @@ class Label:
 
 
 @dataclass(frozen=True)
+class FlatPatch:
+    """A patch laid flat on its sheet, exact (no kerf)."""
+
+    id: int
+    name: str
+    outer: Loop
+    holes: Tuple[Loop, ...]
+    # The patch's own frame (u, v) onto the sheet: ((a, b, tx), (c, d, ty)); None in sheet sets
+    # written before it existed.
+    to_sheet: Optional[Tuple[Tuple[float, float, float], Tuple[float, float, float]]]
+
+    def normal_side_up(self):
+        """The patch's normal side faces up (is printed); else its back side does."""
+        (a, b, _), (c, d, _) = self.to_sheet
+        return a * d - b * c > 0.0
+
+
+@dataclass(frozen=True)
 class Piece:
     id: str
     sheet: int
@@ -78,6 +96,7 @@ class Piece:
     tabs: Tuple[Tab, ...]
     glue: Tuple[GlueArea, ...]
     labels: Tuple[Label, ...]
+    patches: Tuple[FlatPatch, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -206,6 +225,32 @@ class _Node:
         return points
 
 
+def _to_sheet(node):
+    rows = node.items()
+    if len(rows) != 2:
+        raise node.error(f"is not a 2 x 3 matrix: {node.value!r}")
+    matrix = []
+    for row in rows:
+        values = tuple(value.number() for value in row.items())
+        if len(values) != 3:
+            raise row.error(f"has {len(values)} numbers, expected 3")
+        matrix.append(values)
+    (a, b, _), (c, d, _) = matrix
+    if abs(abs(a * d - b * c) - 1.0) > 1e-6:
+        raise node.error(f"is not a rotation or reflection: determinant {a * d - b * c:g}")
+    return tuple(matrix)
+
+
+def _flat_patch(node):
+    return FlatPatch(
+        id=node["id"].integer(),
+        name=node["name"].text(),
+        outer=node["outer"].loop(),
+        holes=tuple(hole.loop() for hole in node["holes"].items()),
+        to_sheet=_to_sheet(node["to_sheet"]) if "to_sheet" in node.value else None,
+    )
+
+
 def _region(node):
     return Region(node["outer"].loop(), tuple(hole.loop() for hole in node["holes"].items()))
 
@@ -247,6 +292,9 @@ def _piece(node):
             )
             for label in node["labels"].items()
         ),
+        patches=tuple(_flat_patch(patch) for patch in node["patches"].items())
+        if "patches" in node.value
+        else (),
     )
 
 

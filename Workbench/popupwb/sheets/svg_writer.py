@@ -3,6 +3,11 @@ imports them: the page is the paper in mm with a viewBox in mm, so one user unit
 layer of layer_style.SheetStyle is an Inkscape layer (a rejected design's NOT VALID stamp goes on
 LABEL). Styles sit on every element rather than on
 the layer groups because some cutter software ignores inherited styles.
+
+With artwork (print_artwork.py) a sheet becomes a print-then-cut file: a PRINT layer under the
+others holds each patch's image (a base64 PNG <image>, clipped by a clipPath that is the patch's
+flat outline) and the registration marks (registration_marks.py), which are also drawn when
+registration_marks=True.
 """
 
 import svgwrite
@@ -10,23 +15,41 @@ import svgwrite
 from .sheet_set import read_sheet_set, sheet_file_paths
 from .layer_style import SheetStyle
 from .not_valid_stamp import stamp_label
+from .print_artwork import place_artwork, png_data_uri
+from .registration_marks import MARK_SIZE, check_room_for_marks, mark_squares
 
 INKSCAPE_NAMESPACE = "http://www.inkscape.org/namespaces/inkscape"
 FONT_FAMILY = "Helvetica, Arial, sans-serif"
 CAP_HEIGHT = 0.716  # of the font size, Helvetica/Arial
+PRINT_LAYER = "PRINT"  # artwork and registration marks: printed, never cut
 
 
-def write_svg(sheet_set, path, style=None, not_valid=None):
+def write_svg(sheet_set, path, style=None, not_valid=None, artwork=None, registration_marks=False):
     """Writes one SVG per sheet: `path` for the first sheet, then <stem>-2.svg, <stem>-3.svg, ...;
-    returns the paths written. `not_valid` (a not_valid_stamp.NotValid) stamps every sheet."""
+    returns the paths written. `not_valid` (a not_valid_stamp.NotValid) stamps every sheet.
+    `artwork`: {patch id: popupcore.PatchArtwork} (print_artwork.py) on the PRINT layer, with
+    registration marks."""
     sheets = read_sheet_set(sheet_set)
     style = style or SheetStyle()
+    placed = place_artwork(sheets, artwork)
+    registration_marks = registration_marks or bool(artwork)
+    if registration_marks:
+        check_room_for_marks(sheets.margin)
     paths = sheet_file_paths(path, len(sheets.sheets))
     stamp = None
     if not_valid is not None:
         stamp = stamp_label(sheets.width, sheets.height, sheets.margin, not_valid)
     for sheet, sheet_path in zip(sheets.sheets, paths):
-        sheet_svg_drawing(sheets, sheet, style, sheet_path, stamp).save(pretty=True)
+        drawing = sheet_svg_drawing(
+            sheets,
+            sheet,
+            style,
+            sheet_path,
+            stamp,
+            placed.get(sheet.index, ()),
+            registration_marks,
+        )
+        drawing.save(pretty=True)
     return paths
 
 
@@ -36,10 +59,11 @@ def _number(value):
     return "0" if text == "-0" else text
 
 
-def sheet_svg_drawing(sheets, sheet, style, path, stamp=None):
+def sheet_svg_drawing(sheets, sheet, style, path, stamp=None, artwork=(), registration_marks=False):
     """One sheet as an svgwrite.Drawing in millimetres, a group per layer of `style` (glue,
     mountain, valley, label, cut) and the stamp when given; the file writer and the TechDraw page
-    marks share it."""
+    marks share it. `artwork` (print_artwork.PlacedArtwork of this sheet) and the registration
+    marks go on a PRINT layer under the others."""
     width, height = sheets.width, sheets.height
     drawing = svgwrite.Drawing(
         path,
@@ -65,6 +89,9 @@ def sheet_svg_drawing(sheets, sheet, style, path, stamp=None):
         if layer.dashes:
             attributes["stroke_dasharray"] = " ".join(_number(length) for length in layer.dashes)
         return attributes
+
+    if artwork or registration_marks:
+        _add_print_layer(drawing, artwork, registration_marks, sheets, flipped, loop_path)
 
     layers = {}
     # Drawing order, bottom to top: glue areas under the lines, cut lines over everything.
@@ -106,3 +133,41 @@ def sheet_svg_drawing(sheets, sheet, style, path, stamp=None):
     if stamp is not None:
         layers[style.label.name].add(text(stamp))
     return drawing
+
+
+def _add_print_layer(drawing, artwork, registration_marks, sheets, flipped, loop_path):
+    """The PRINT layer: each image clipped to its patch's outline, and the registration marks."""
+    group = drawing.g(id=PRINT_LAYER)
+    group.attribs["inkscape:groupmode"] = "layer"
+    group.attribs["inkscape:label"] = PRINT_LAYER
+    drawing.add(group)
+    height = sheets.height
+    for item in artwork:
+        clip_id = f"clip-patch-{item.patch.id}"
+        clip = drawing.defs.add(drawing.clipPath(id=clip_id))
+        outline = " ".join(loop_path(loop) for loop in (item.patch.outer,) + item.patch.holes)
+        clip.add(drawing.path(d=outline, clip_rule="evenodd"))
+        # Image space: mm from its top-left corner, y down. Through its lower-left corner frame
+        # (y up) onto the sheet (y up), then the SVG's y flip: F A F with F = diag(1, -1).
+        (a, c, e), (b, d, f) = item.image_to_sheet
+        width_mm, height_mm = item.size_mm
+        matrix = (a, -b, -c, d, c * height_mm + e, height - (d * height_mm + f))
+        image = drawing.image(
+            href=png_data_uri(item.rgba),
+            insert=(0, 0),
+            size=(_number(width_mm), _number(height_mm)),
+        )
+        image["preserveAspectRatio"] = "none"
+        image["transform"] = "matrix(" + " ".join(_number(value) for value in matrix) + ")"
+        image["id"] = f"artwork-patch-{item.patch.id}"
+        clipped = drawing.g(clip_path=f"url(#{clip_id})")
+        clipped.add(image)
+        group.add(clipped)
+    if registration_marks:
+        for x, y in mark_squares(sheets.width, sheets.height, sheets.margin):
+            corner = flipped((x, y + MARK_SIZE))
+            group.add(
+                drawing.rect(
+                    insert=corner, size=(_number(MARK_SIZE), _number(MARK_SIZE)), fill="#000000"
+                )
+            )

@@ -53,7 +53,10 @@ json piece_json(const SheetSet& set, const SheetPiece& p)
         patches.push_back({{"id", fp.id},
                            {"name", fp.name},
                            {"outer", loop(fp.outer)},
-                           {"holes", loops(fp.holes)}});
+                           {"holes", loops(fp.holes)},
+                           {"to_sheet",
+                            {{fp.to_sheet(0, 0), fp.to_sheet(0, 1), fp.to_sheet(0, 2)},
+                             {fp.to_sheet(1, 0), fp.to_sheet(1, 1), fp.to_sheet(1, 2)}}}});
     for (const FoldLine& f : p.folds)
         folds.push_back({{"hinge", f.hinge},
                          {"from", point(f.from)},

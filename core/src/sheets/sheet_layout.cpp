@@ -299,11 +299,17 @@ Result<SheetSet> layout_sheets(const Scaffold& input, const SheetOptions& option
         const Pose onto{place.rotation, Vec3(at.translation.x(), at.translation.y(), 0.0)};
         for (size_t i = 0; i < local.flat.patches.size(); ++i) {
             const int id = local.flat.patches[i];
-            FlatPatch fp{id, s.find_patch(id)->name, place(local.flat.outlines[i]), {}};
+            const Patch& patch = *s.find_patch(id);
+            FlatPatch fp{id, patch.name, place(local.flat.outlines[i]), {}};
             for (const Loop2& h : local.flat.holes[i])
                 fp.holes.push_back(place(h));
+            const Pose& pose = to_sheet[s.patch_index(id)] =
+                local.flat.unfold[i].then(frame).then(onto);
+            // (u, v) -> origin + u e_u + v e_v -> the sheet plane (z = 0 there).
+            fp.to_sheet.col(0) = (pose.rotation * patch.u).head<2>();
+            fp.to_sheet.col(1) = (pose.rotation * patch.v).head<2>();
+            fp.to_sheet.col(2) = pose.apply(patch.origin).head<2>();
             piece.patches.push_back(std::move(fp));
-            to_sheet[s.patch_index(id)] = local.flat.unfold[i].then(frame).then(onto);
         }
         piece.cut = place(local.cut);
         piece.cut_nominal = place(local.cut_nominal);

@@ -544,3 +544,49 @@ TEST(SheetLayout, CrowdedJointsMakeRoomForEachOther)
     for (const SheetPiece& piece : short_arm.pieces)
         EXPECT_EQ(piece.cut_nominal.size(), 1u) << piece.id;
 }
+
+TEST(SheetLayout, PatchFrameMapsOntoTheFlatOutline)
+{
+    // Each flat patch's to_sheet takes the patch's own frame (where artwork is rendered) onto
+    // its outline on the sheet: every design vertex lands on a vertex of the flat outline. It
+    // is a rotation where the normal side is printed, a reflection where the back side is.
+    const Scaffold s = fixtures::demo_card();
+    for (const bool card_back : {false, true}) {
+        SheetOptions o = a3();
+        if (card_back)
+            o.printed_sides["P1"] = PrintedSide::back;
+        const SheetSet set = layout_sheets(s, o).value;
+        int flipped = 0, upright = 0;
+        for (const SheetPiece& piece : set.pieces)
+            for (const FlatPatch& fp : piece.patches) {
+                Patch patch = *s.find_patch(fp.id);
+                patch.derive_frame();
+                const Eigen::Matrix2d linear = fp.to_sheet.leftCols<2>();
+                EXPECT_LT((linear.transpose() * linear - Eigen::Matrix2d::Identity()).norm(),
+                          1e-12);
+                ASSERT_EQ(fp.outer.size(), patch.outer.size());
+                for (const Vec3& x : patch.outer) {
+                    const Vec2 on_sheet = linear * patch.to_local(x) + fp.to_sheet.col(2);
+                    double nearest = INFINITY;
+                    for (const Vec2& y : fp.outer)
+                        nearest = std::min(nearest, (y - on_sheet).norm());
+                    EXPECT_LT(nearest, 1e-6) << piece.id << " patch " << fp.id;
+                }
+                (fp.normal_side_up() ? upright : flipped) += 1;
+                if (piece.id == "P1" && fp.id == s.ground) {
+                    EXPECT_EQ(fp.normal_side_up(), !card_back); // the ground's normal is +z
+                }
+            }
+        EXPECT_GT(upright, 0);
+        if (card_back) {
+            EXPECT_GT(flipped, 0);
+        }
+    }
+    const SheetSet set = layout_sheets(s, a3()).value;
+    const nlohmann::json j = nlohmann::json::parse(sheet_set_to_json(set));
+    const FlatPatch& first = set.pieces[0].patches[0];
+    for (int row = 0; row < 2; ++row)
+        for (int column = 0; column < 3; ++column)
+            EXPECT_DOUBLE_EQ(j["pieces"][0]["patches"][0]["to_sheet"][row][column].get<double>(),
+                             first.to_sheet(row, column));
+}

@@ -40,6 +40,14 @@ struct FlatPatch {
     std::string name;
     Loop2 outer;
     std::vector<Loop2> holes;
+    /// The patch's own 2D frame (Patch::to_local at the design state) onto the sheet: a point
+    /// (u, v) lands at to_sheet.leftCols<2>() * (u, v) + to_sheet.col(2). A rotation when the
+    /// patch's normal side faces up (is printed), a reflection when its back side does. Artwork
+    /// rendered in the patch frame is placed with it.
+    Eigen::Matrix<double, 2, 3> to_sheet = Eigen::Matrix<double, 2, 3>::Identity();
+
+    /// The normal side faces up on the sheet, the printed side (else the back side does).
+    bool normal_side_up() const { return to_sheet.leftCols<2>().determinant() > 0.0; }
 };
 
 /// A closed outline with holes (a region of one piece).

@@ -1,0 +1,164 @@
+"""Artwork on the print layer, for print-then-cut: the model's appearance rendered onto each patch
+(popupcore.render_artwork) and placed on that patch's flat outline on its sheet.
+
+The writers take `artwork` = {patch id: image}, where an image is any object with
+    rgba          height x width x 4 uint8 array, row 0 at the top (largest v), straight alpha;
+    origin_uv     (u, v) of the image's lower-left corner in the patch's own frame, mm;
+    mm_per_pixel  the side of a pixel, mm;
+    back_side     True when rendered from the side opposite the patch's normal (default False).
+popupcore.PatchArtwork is one. Each flat patch's `to_sheet` (docs/SHEET_FORMAT.md) takes the patch
+frame onto the sheet; where it is a reflection (the patch's back side faces up) the image is
+mirrored with it, and only an image of that side belongs there. `render_sheet_artwork` renders
+every laid-out patch from its printed side:
+
+    sheet_set = layout(scaffold, paper="A3")
+    artwork = render_sheet_artwork(mesh, scaffold, sheet_set, pixels_per_mm=300 / 25.4)
+    export_sheets(sheet_set, "out/sheets", artwork=artwork)
+
+No FreeCAD needed.
+"""
+
+import base64
+import io
+import math
+from dataclasses import dataclass
+from typing import Tuple
+
+import numpy
+
+from .sheet_set import FlatPatch, read_sheet_set
+
+Affine = Tuple[Tuple[float, float, float], Tuple[float, float, float]]
+
+
+@dataclass(frozen=True)
+class PlacedArtwork:
+    """One patch's image where it goes on its sheet."""
+
+    piece: str
+    patch: FlatPatch
+    rgba: numpy.ndarray  # height x width x 4 uint8
+    size_mm: Tuple[float, float]  # width, height
+    # Image mm (x right, y up, origin at its lower-left corner) onto the sheet:
+    # ((a, c, e), (b, d, f)) with sheet = (a x + c y + e, b x + d y + f).
+    image_to_sheet: Affine
+
+
+def _side(back):
+    return "back" if back else "normal"
+
+
+def _checked_rgba(patch_id, image):
+    rgba = numpy.asarray(image.rgba)
+    if rgba.dtype != numpy.uint8 or rgba.ndim != 3 or rgba.shape[2] != 4 or 0 in rgba.shape:
+        raise ValueError(
+            f"artwork for patch {patch_id}: rgba is {rgba.dtype} of shape {rgba.shape}, must be "
+            "uint8 of shape (height, width, 4) with height, width >= 1"
+        )
+    return rgba
+
+
+def _checked_number(patch_id, name, value, positive=False):
+    value = float(value)
+    if not math.isfinite(value) or (positive and value <= 0):
+        raise ValueError(
+            f"artwork for patch {patch_id}: {name} = {value!r}, must be a finite number"
+            + (" > 0" if positive else "")
+        )
+    return value
+
+
+def place(piece_id, patch, image):
+    """The PlacedArtwork of `image` on the flat `patch` of piece `piece_id`; ValueError naming the
+    patch when the image is malformed, the sheet set has no frame for the patch, or the image
+    shows the side that faces down on the sheet."""
+    rgba = _checked_rgba(patch.id, image)
+    step = _checked_number(patch.id, "mm_per_pixel", image.mm_per_pixel, positive=True)
+    u0, v0 = (_checked_number(patch.id, "origin_uv", value) for value in image.origin_uv)
+    if patch.to_sheet is None:
+        raise ValueError(
+            f"artwork for patch {patch.id} ({patch.name}): the sheet set gives no to_sheet for "
+            "it (written by an older PopUp); lay the sheets out again"
+        )
+    back = bool(getattr(image, "back_side", False))
+    if back == patch.normal_side_up():
+        raise ValueError(
+            f"artwork for patch {patch.id} ({patch.name}) shows its {_side(back)} side, but "
+            f"{piece_id} has its {_side(not back)} side up on the sheet: render it with "
+            f"back_side={not back}"
+        )
+    (a, c, tx), (b, d, ty) = patch.to_sheet
+    image_to_sheet = (
+        (a, c, a * u0 + c * v0 + tx),
+        (b, d, b * u0 + d * v0 + ty),
+    )
+    height, width = rgba.shape[:2]
+    return PlacedArtwork(piece_id, patch, rgba, (width * step, height * step), image_to_sheet)
+
+
+def place_artwork(sheets, artwork):
+    """{sheet index: [PlacedArtwork, ...]} for `artwork` {patch id: image} on the SheetSet
+    `sheets`, in the order of the pieces and their patches, leaving out images that are
+    transparent all over; ValueError for a patch id the sheets do not have, or as `place`."""
+    if not artwork:
+        return {}
+    remaining = {int(patch_id): image for patch_id, image in artwork.items()}
+    placed = {}
+    for sheet in sheets.sheets:
+        for piece in sheet.pieces:
+            for patch in piece.patches:
+                if patch.id in remaining:
+                    item = place(piece.id, patch, remaining.pop(patch.id))
+                    if item.rgba[..., 3].any():  # an image with nothing on it is left out
+                        placed.setdefault(sheet.index, []).append(item)
+    if remaining:
+        known = sorted(patch.id for piece in sheets.pieces() for patch in piece.patches)
+        raise ValueError(
+            f"artwork for patch {min(remaining)}: the sheets have no such patch (they have "
+            f"{', '.join(map(str, known)) or 'none'})"
+        )
+    return placed
+
+
+def render_sheet_artwork(mesh, scaffold, sheet_set, **options):
+    """{patch id: popupcore.PatchArtwork} for every patch the sheet set lays out, each rendered
+    from the side its sheet prints (back_side where the flat patch's back faces up), the
+    texture read once per side. `mesh`: a popupcore.ModelMesh in card mm; `scaffold`: the
+    design at its design state; `sheet_set`: the dict export.layout gives; `options`: the
+    keywords of popupcore.render_artworks (pixels_per_mm, depth, behind, light, ambient,
+    max_pixels). popupcore.DesignError names a bad option or model."""
+    from popupwb.core import popupcore
+
+    if "back_side" in options:
+        raise ValueError("render_sheet_artwork chooses back_side per patch from the sheet set")
+    sheets = read_sheet_set(sheet_set)
+    sides = {}
+    for piece in sheets.pieces():
+        for flat in piece.patches:
+            if flat.to_sheet is None:
+                raise ValueError(
+                    f"patch {flat.id} ({flat.name}): the sheet set gives no to_sheet for it "
+                    "(written by an older PopUp); lay the sheets out again"
+                )
+            sides[flat.id] = not flat.normal_side_up()
+    artwork = {}
+    for back in (False, True):
+        patches = [p for p in scaffold.patches if sides.get(p.id) is back]
+        if patches:
+            for art in popupcore.render_artworks(mesh, patches, back_side=back, **options):
+                artwork[art.patch] = art
+    return artwork
+
+
+def pil_image(rgba):
+    """The image as a PIL RGBA image (reportlab draws it, keeping the alpha as a soft mask)."""
+    from PIL import Image
+
+    return Image.fromarray(numpy.ascontiguousarray(rgba), "RGBA")
+
+
+def png_data_uri(rgba):
+    """The image as a data: URI of a PNG, for an SVG <image>."""
+    buffer = io.BytesIO()
+    pil_image(rgba).save(buffer, format="PNG")
+    return "data:image/png;base64," + base64.b64encode(buffer.getvalue()).decode("ascii")
