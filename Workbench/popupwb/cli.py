@@ -44,8 +44,10 @@ VERSION = "0.1.0"
 # Name, Label, design file; empty for a .json design). `printed_sides` is what the card's
 # CuttingSheet features say ({CuttingSheet Name: {piece: side}}), empty for anything else.
 # `patch_titles` ({patch id: maker title}, patch_titles.py) names a card's patches in findings.
+# `model` is the ModelMesh (card mm) a card was designed from (card.SourceModel, `popup fit`), whose
+# appearance the sheets print as artwork; None for anything else.
 Design = collections.namedtuple(
-    "Design", "scaffold fields printed_sides patch_titles", defaults=({}, {})
+    "Design", "scaffold fields printed_sides patch_titles model", defaults=({}, {}, None)
 )
 
 
@@ -188,7 +190,7 @@ def _select_cards(path, objects, card):
     return chosen[:1]
 
 
-def _card_design(path, card, several):
+def _card_design(path, card, several, with_model=False):
     """The assembled scaffold of a PopUpCard and its mechanisms; a part that does not build makes
     the input unusable (the message is the feature's error)."""
     from popupwb.card_scaffold import for_card, stray_features
@@ -207,7 +209,18 @@ def _card_design(path, card, several):
         {"object": card.Name, "label": card.Label},
         _cutting_sides(card),
         titles_of_card(card, built),
+        _source_model(path, card) if with_model else None,
     )
+
+
+def _source_model(path, card):
+    """The model the card was designed from, in card mm, or None (popupwb.fitting.model_source)."""
+    from popupwb.fitting.model_source import card_model
+
+    try:
+        return card_model(card)
+    except ValueError as e:
+        raise InputError(f"{path}: {card.Label}.SourceModel: {_one_line(e)}")
 
 
 def _cutting_sides(card):
@@ -249,7 +262,7 @@ def _load_json_design(popupcore, path, label):
         raise InputError(f"{label}: {_one_line(e)}")
 
 
-def _load_fcstd_designs(popupcore, path, card, one):
+def _load_fcstd_designs(popupcore, path, card, one, with_model=False):
     """The designs of the Scaffold and PopUpCard objects of an .FCStd file (or of the one named
     `card`); with `one`, several of them make the input unusable."""
     from popupwb.document_precheck import check_fcstd
@@ -284,7 +297,7 @@ def _load_fcstd_designs(popupcore, path, card, one):
                 (
                     _scaffold_design(popupcore, path, obj)
                     if "DesignFile" in obj.PropertiesList
-                    else _card_design(path, obj, len(chosen) > 1)
+                    else _card_design(path, obj, len(chosen) > 1, with_model)
                 )
                 for obj in chosen
             ]
@@ -296,9 +309,10 @@ def is_document(path):
     return path.lower().endswith(".fcstd")
 
 
-def load_designs(path, card=None, one=False):
+def load_designs(path, card=None, one=False, with_model=False):
     """(popupcore, [Design]) for a .json path (one design) or an .FCStd path (each Scaffold and
-    PopUpCard, or the one named `card`; with `one`, several are an InputError)."""
+    PopUpCard, or the one named `card`; with `one`, several are an InputError). `with_model`
+    reads the model a card was designed from (Design.model, for the sheets' artwork)."""
     why = unreadable(path)
     if why:
         raise InputError(why)
@@ -306,7 +320,7 @@ def load_designs(path, card=None, one=False):
         raise InputError(f"--card {card}: only for FreeCAD documents (.FCStd), not {path}")
     popupcore = _import_core()
     if is_document(path):
-        return popupcore, _load_fcstd_designs(popupcore, path, card, one)
+        return popupcore, _load_fcstd_designs(popupcore, path, card, one, with_model)
     return popupcore, [Design(_load_json_design(popupcore, path, path), {})]
 
 
@@ -451,7 +465,7 @@ def cmd_sheet(args):
     from popupwb.sheets.not_valid_stamp import not_valid_of
     from popupwb.sheets.paper_choice import layout_on_smallest_paper
 
-    popupcore, (design,) = load_designs(args.design, args.card, one=True)
+    popupcore, (design,) = load_designs(args.design, args.card, one=True, with_model=True)
     # Sheets are for valid designs: the check with `popup check`'s defaults comes first.
     validity = _check(popupcore, design, samples=181, clearance=0.0)
     not_valid = not_valid_of(validity)
@@ -471,6 +485,7 @@ def cmd_sheet(args):
                 sheet_set = layout(design.scaffold, paper=args.paper, **options)
         except ValueError as e:  # a bad option, or a piece too large for the paper(s)
             raise InputError(_option_message(args.design, e))
+        artwork = _artwork(args, design, sheet_set)
         try:
             paths = export_sheets(
                 sheet_set,
@@ -478,6 +493,7 @@ def cmd_sheet(args):
                 style=prefs.style,
                 registration_marks=args.registration_marks,
                 not_valid=not_valid,
+                artwork=artwork,
             )
         except OSError as e:
             raise InputError(f"--out {args.out}: {_one_line(e)}")
@@ -495,6 +511,19 @@ def cmd_sheet(args):
     else:
         _print_sheet_summary(report, paths, choice, not_valid, design.patch_titles)
     return EXIT_INVALID if report["errors"] or not_valid is not None else EXIT_VALID
+
+
+def _artwork(args, design, sheet_set):
+    """The model's appearance on each laid-out patch, for a card designed from a model (its
+    SourceModel); None otherwise. The print layer of the PDF and SVG carries it."""
+    if design.model is None:
+        return None
+    from popupwb.sheets.print_artwork import render_sheet_artwork
+
+    try:
+        return render_sheet_artwork(design.model, design.scaffold, sheet_set)
+    except ValueError as e:  # DesignError: the model cannot be rendered
+        raise InputError(f"{args.design}: artwork of the source model: {_one_line(e)}")
 
 
 VERIFY_ANGLES = 13  # fold angles verify_sheets samples by default

@@ -215,7 +215,7 @@ def _write_design(args, cli, result, model, options, stages, files, say):
         doc = FreeCAD.newDocument("PopUpFit")
         try:
             with stages.stage("document", "building the card's features"):
-                design = build_design(doc, result, model)
+                design = build_design(doc, result, model, source_file=_model_file(args.model))
             with stages.stage("check", "checking the card's validity"):
                 checked = validity.run_check(design.card)
             files["design"] = os.path.join(args.out, DESIGN_FILE)
@@ -249,6 +249,12 @@ def _write_design(args, cli, result, model, options, stages, files, say):
             }
         finally:
             FreeCAD.closeDocument(doc.Name)
+
+
+def _model_file(path):
+    """The model file the card keeps for its artwork: a mesh file, not a FreeCAD document (its
+    meshes and shapes have no colours of their own to print)."""
+    return "" if path.lower().endswith(".fcstd") else os.path.abspath(path)
 
 
 def _write_sheets(args, cli, paper, files, stages, say):

@@ -162,3 +162,53 @@ def test_a_host_made_later_or_never_is_named(doc, core):
 
     with pytest.raises(ValueError, match="T1: host 'B1.top'"):
         build_design(doc, _result(core, [TENT]))
+
+
+def _box_model(core):
+    """The box fold BOX builds, as a closed mesh in the card's frame: x -30..30, y 30..80, z 0..30."""
+    corners = np.array(
+        [[x, y, z] for x in (-30.0, 30.0) for y in (30.0, 80.0) for z in (0.0, 30.0)], dtype=float
+    )
+    # Faces of the cube with corner index 4x + 2y + z, counter-clockwise from outside.
+    quads = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)]
+    triangles = [t for a, b, c, d in quads for t in ((a, b, c), (a, c, d))]
+    return core.ModelMesh(corners, np.array(triangles), source="box.stl")
+
+
+def test_the_card_gives_back_its_model_in_the_card_frame(doc, core, tetrahedron):
+    from popupwb.fitting.design_from_fit import build_design
+    from popupwb.fitting.model_source import card_model
+
+    design = build_design(doc, _result(core, [BOX]), tetrahedron)
+    design.card.Placement.Base = (100.0, 0.0, 0.0)  # the card moved: the model moves with it
+    design.source_model.Placement = design.card.Placement
+    doc.recompute()
+    model = card_model(design.card)
+    # The tetrahedron's corners x2 and moved by (5, 7, 0), in the card's own frame.
+    expected = np.array([[0, 0, 0], [10, 0, 0], [0, 10, 0], [0, 0, 10]]) * 2.0 + [5, 7, 0]
+    assert np.asarray(model.vertices) == pytest.approx(expected)
+    assert card_model(design.card) is not None
+    assert design.card.SourceFile == ""
+
+
+def test_popup_sheet_prints_the_source_model_as_artwork(tmp_path, freecad, core):
+    from test_cli import popup
+
+    from popupwb.fitting.design_from_fit import build_design
+
+    paths = {}
+    for name, model in (("with_model", _box_model(core)), ("by_hand", None)):
+        doc = freecad.newDocument(name)
+        result = _result(core, [BOX], scale=1.0)
+        result.model_to_card = np.eye(4)
+        build_design(doc, result, model)
+        paths[name] = str(tmp_path / f"{name}.FCStd")
+        doc.saveAs(paths[name])
+        freecad.closeDocument(doc.Name)
+    svgs = {}
+    for name, path in paths.items():
+        proc = popup("sheet", path, "--out", str(tmp_path / name), "--paper", "A3")
+        assert proc.returncode == 0, proc.stdout + proc.stderr
+        with open(tmp_path / name / "sheets.svg") as f:
+            svgs[name] = f.read()
+    assert "<image" in svgs["with_model"] and "<image" not in svgs["by_hand"]

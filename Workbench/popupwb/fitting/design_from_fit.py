@@ -60,10 +60,18 @@ def _host_of(fitted, card, made):
     return host, f"{host.Label}.{part}"
 
 
-def _link_source(card, source_model, model_to_card):
+def _link_source(card, source_model, model_to_card, source_file):
     import FreeCAD
 
     have = set(card.PropertiesList)
+    if "SourceFile" not in have:
+        card.addProperty(
+            "App::PropertyString",
+            "SourceFile",
+            SOURCE_GROUP,
+            "The model file the card was designed from (its colours and texture print as "
+            "artwork on the cutting sheets while it is there)",
+        )
     if "SourceModel" not in have:
         card.addProperty(
             "App::PropertyLink",
@@ -80,13 +88,15 @@ def _link_source(card, source_model, model_to_card):
         )
         card.setEditorMode("ModelToCard", 1)
     card.SourceModel = source_model
+    card.SourceFile = source_file or ""
     card.ModelToCard = FreeCAD.Matrix(*[float(v) for v in model_to_card.reshape(-1)])
 
 
-def build_design(doc, result, model=None, name="Card"):
+def build_design(doc, result, model=None, name="Card", source_file=None):
     """Adds the card, its mechanisms and (given the ModelMesh `model`) the source model to `doc`
-    from `result` (a popupcore.FitResult); recomputes; returns a FittedDesign. The caller checks
-    validity (popupwb.validity.run_check(card))."""
+    from `result` (a popupcore.FitResult); recomputes; returns a FittedDesign. `source_file` is
+    the model file, kept on the card for the artwork. The caller checks validity
+    (popupwb.validity.run_check(card))."""
     from popupwb import make
     from popupwb.fitting.model_source import add_source_model
 
@@ -108,7 +118,7 @@ def build_design(doc, result, model=None, name="Card"):
     if model is not None:
         model_to_card = _matrix(result.model_to_card)
         source_model = add_source_model(doc, model, model_to_card, card.Placement)
-        _link_source(card, source_model, model_to_card)
+        _link_source(card, source_model, model_to_card, source_file)
     doc.recompute()
     return FittedDesign(card, list(made.values()), source_model)
 

@@ -146,3 +146,38 @@ def add_source_model(doc, model, model_to_card, placement=None, name="SourceMode
     if model.source:
         obj.Label = f"{name} ({os.path.basename(model.source)})"
     return obj
+
+
+def in_card_frame(model, model_to_card):
+    """`model` (a ModelMesh, changed in place and returned) moved into the card's frame: its
+    vertices through `model_to_card`, its faces turned back outward if the matrix mirrors."""
+    matrix = np.asarray(model_to_card, dtype=float)
+    model.vertices = transformed(model.vertices, matrix)
+    if np.linalg.det(matrix[:3, :3]) < 0:
+        model.triangles = np.asarray(model.triangles)[:, ::-1].copy()
+    return model
+
+
+def card_model(card):
+    """The ModelMesh of the model `card` was designed from, in the card's frame (mm), or None
+    for a card made by hand. The model file itself when it is still there (its texture and vertex
+    colours are what artwork prints), else the mesh kept in the document (its shape only)."""
+    from popupwb.core import popupcore
+
+    source = getattr(card, "SourceModel", None)
+    if source is None or not is_mesh_object(source):
+        return None
+    matrix = np.array(card.ModelToCard.A, dtype=float).reshape(4, 4)
+    path = getattr(card, "SourceFile", "")
+    if path and os.path.isfile(path) and not path.lower().endswith(".fcstd"):
+        try:
+            return in_card_frame(popupcore.load_model(path), matrix)
+        except (ValueError, RuntimeError, OSError, AttributeError):
+            pass  # changed or unreadable since: the kept mesh still has the shape
+    points, facets = source.Mesh.Topology  # placed where the card is placed
+    to_card = card.Placement.inverse().toMatrix()
+    local = [to_card.multVec(p) for p in points]
+    vertices = np.array([[p.x, p.y, p.z] for p in local], dtype=float).reshape(-1, 3)
+    return popupcore.ModelMesh(
+        vertices, np.array(facets, dtype=np.int64).reshape(-1, 3), source=source.Label
+    )
