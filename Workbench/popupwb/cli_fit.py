@@ -173,7 +173,7 @@ def run(args, cli):
         _write_outcome(args.out, report, files, say)
         print(f"no valid design found for {args.model}; see {files['report']}")
         return cli.EXIT_INVALID
-    stages.add(result.timings_s)
+    stages.add(result.timings)
     say(
         f"fitted {len(result.primitives)} primitive(s), {len(result.mechanisms)} mechanism(s); "
         f"{len(result.repairs)} repair(s)"
@@ -185,7 +185,9 @@ def run(args, cli):
         status = _write_sheets(args, cli, paper, files, stages, say)
     else:
         status = cli.EXIT_INVALID
-        say("the design is not valid: no sheets written")
+        for d in report.get("diagnostics") or []:
+            say(f"{d.get('severity', 'error')}: {d.get('code')}: {d.get('message')}")
+        say("no valid design found: no sheets written")
     report["timings_s"] = _report_timings(stages)
     _write_outcome(args.out, report, files, say)
     _print_summary(report, files)
@@ -327,7 +329,7 @@ def _print_summary(report, files):
                 _g(metrics.get("coverage")),
             )
         )
-    print("valid design" if report["valid"] else "NOT a valid design")
+    print("valid design" if report["valid"] else "no valid design found")
 
 
 def _g(value):

@@ -109,6 +109,16 @@ def build_report(
             else None
         ),
         "fit_coverage": float(result.coverage) if result is not None else None,
+        "fit": (
+            {
+                name: getattr(result, name)
+                for name in ("coverage", "coverage_error", "symmetry_error", "ransac_draws")
+                if hasattr(result, name)
+            }
+            if result is not None
+            else None
+        ),
+        "diagnostics": list(getattr(result, "diagnostics", None) or []) if result else [],
         "primitives": [primitive_entry(p) for p in result.primitives] if result is not None else [],
         "validity": (
             {"valid": bool(validity["valid"]), "diagnostics": list(validity["diagnostics"])}

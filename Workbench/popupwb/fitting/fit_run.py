@@ -41,7 +41,7 @@ class Stages:
             self.timings.append((name, time.perf_counter() - start))
 
     def add(self, timings):
-        """Adds stages timed elsewhere (the core's [(stage, seconds)])."""
+        """Adds stages timed elsewhere (FitResult.timings: [(stage, seconds)])."""
         self.timings.extend((str(name), float(seconds)) for name, seconds in timings)
 
     def total(self):
