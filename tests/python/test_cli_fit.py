@@ -109,7 +109,7 @@ def test_a_cuboid_writes_every_file(cuboid_fit):
     width, height = struct.unpack(">II", header[16:24])
     assert (width, height) == (1600, 800)  # model and pop-up side by side
     assert "popup fit: reading" in proc.stderr  # progress goes to stderr
-    assert "valid design" in proc.stdout
+    assert "valid design" in proc.stdout.splitlines()
     # The sheets are those `popup sheet` writes: its own report sits beside them.
     with open(os.path.join(out, "sheets", "report.json")) as f:
         assert json.load(f)["round_trip"]["ok"] is True
