@@ -71,7 +71,14 @@ def write_preview(path, model_vertices, model_triangles, patches, card_patches=(
         figure.suptitle(title)
 
     left = figure.add_subplot(1, 2, 1, projection="3d")
-    left.set_title("model (in the card's frame)")
+    left.set_title("model (in the card's frame, on the open card)")
+    pages = [patch_polygons[i] for i in card_patches]
+    if pages:  # the card under the model, as on the right: the two halves compare at a glance
+        left.add_collection3d(
+            Poly3DCollection(
+                pages, facecolors=[CARD_COLOUR] * len(pages), edgecolors=(0.2, 0.2, 0.2)
+            )
+        )
     left.add_collection3d(
         Poly3DCollection(
             list(model_polygons),
