@@ -1,0 +1,403 @@
+#include "popup/fitting/fit_design.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <set>
+#include <sstream>
+
+#include "popup/fitting/alignment.hpp"
+#include "popup/fitting/mechanism_mapping.hpp"
+#include "popup/fitting/prism_ransac.hpp"
+#include "popup/fitting/surface_samples.hpp"
+#include "popup/mechanisms/box_fold.hpp"
+#include "popup/mechanisms/step_fold.hpp"
+#include "popup/mechanisms/tent_fold.hpp"
+#include "popup/mechanisms/v_fold.hpp"
+#include "popup/simulation/check_validity.hpp"
+
+namespace popup {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+class StageTimer {
+public:
+    explicit StageTimer(FitResult& r) : r_(r), start_(Clock::now()) {}
+    void lap(const std::string& stage)
+    {
+        const auto now = Clock::now();
+        r_.timings_s.push_back({stage, std::chrono::duration<double>(now - start_).count()});
+        start_ = now;
+    }
+
+private:
+    FitResult& r_;
+    Clock::time_point start_;
+};
+
+void range(Diagnostics& out, const std::string& option, double value, bool ok,
+           const std::string& allowed)
+{
+    if (ok)
+        return;
+    std::ostringstream m;
+    m << "FitOptions." << option << " = " << value << ", must be " << allowed;
+    out.push_back(Diagnostic::error(DiagnosticCode::bad_option, m.str(), about_parameter(option)));
+}
+
+/// The scaffold of some plans: card first, then each plan on the pair its host offered.
+struct Built {
+    Scaffold scaffold;
+    std::vector<MechanismParts> parts; ///< per plan; empty name when not built
+    std::vector<std::string> refused;  ///< per plan: why the generator refused it, or empty
+};
+
+Built build(const CardParams& card, const std::vector<MechanismPlan>& plans,
+            const std::vector<bool>& keep)
+{
+    Built b;
+    auto made = make_card(card);
+    b.scaffold = made.value;
+    b.parts.resize(plans.size());
+    b.refused.resize(plans.size());
+    std::map<std::string, BasePatchPair> pairs{{"central fold", central_fold(b.scaffold)}};
+    for (size_t i = 0; i < plans.size(); ++i) {
+        if (!keep[i])
+            continue;
+        const MechanismPlan& p = plans[i];
+        const auto host = pairs.find(p.host);
+        if (host == pairs.end()) {
+            b.refused[i] = "its host " + p.host + " is not in the design";
+            continue;
+        }
+        const auto& q = p.parameters;
+        Result<MechanismParts> added;
+        if (p.type == "box_fold") {
+            BoxFoldParams bp;
+            bp.offset = q.at("offset");
+            bp.width = q.at("width");
+            bp.depth_ground = q.at("depth_ground");
+            bp.depth_backdrop = q.at("depth_backdrop");
+            bp.height = q.at("height");
+            bp.panel_pairs = int(q.at("panel_pairs"));
+            bp.front = q.at("front") > 0;
+            bp.back = q.at("back") > 0;
+            added = add_box_fold(b.scaffold, host->second, bp, p.name);
+        } else if (p.type == "tent_fold") {
+            TentFoldParams tp;
+            tp.offset = q.at("offset");
+            tp.width = q.at("width");
+            tp.foot = q.at("foot");
+            tp.foot_backdrop = q.at("foot_backdrop");
+            tp.slope = q.at("slope");
+            added = add_tent_fold(b.scaffold, host->second, tp, p.name);
+        } else if (p.type == "step_fold") {
+            StepFoldParams sp;
+            sp.offset = q.at("offset");
+            sp.width = q.at("width");
+            sp.run_ground = q.at("run_ground");
+            sp.run_backdrop = q.at("run_backdrop");
+            added = add_step_fold(b.scaffold, host->second, sp, p.name);
+        } else {
+            VFoldParams vp;
+            vp.offset = q.at("offset");
+            vp.run = q.at("run");
+            vp.hinge_angle = q.at("hinge_angle");
+            vp.spine = q.at("spine");
+            vp.spine_angle = q.at("spine_angle");
+            added = add_v_fold(b.scaffold, host->second, vp, p.name);
+        }
+        if (!added.ok) {
+            b.refused[i] = added.diagnostics.empty() ? "its generator refused it"
+                                                     : added.diagnostics.front().message;
+            continue;
+        }
+        for (const BasePatchPair& offered : added.value.offered)
+            pairs[offered.name] = offered;
+        b.parts[i] = added.value;
+    }
+    return b;
+}
+
+/// Distance from x to a planar patch (its outline, holes ignored: a patch covers its face).
+double distance_to_patch(const Patch& patch, const std::vector<Vec2>& outline, const Vec3& x)
+{
+    const double off = (x - patch.origin).dot(patch.normal);
+    const Vec2 q = patch.to_local(x);
+    bool inside = false;
+    double edge = 1e300;
+    for (size_t i = 0, j = outline.size() - 1; i < outline.size(); j = i++) {
+        const Vec2 &a = outline[j], &b = outline[i];
+        if ((a.y() > q.y()) != (b.y() > q.y()) &&
+            q.x() < a.x() + (q.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y()))
+            inside = !inside;
+        const Vec2 d = b - a;
+        const double t = std::clamp((q - a).dot(d) / std::max(d.squaredNorm(), 1e-300), 0.0, 1.0);
+        edge = std::min(edge, (a + t * d - q).norm());
+    }
+    return inside ? std::abs(off) : std::hypot(off, edge);
+}
+
+double coverage_of(const Scaffold& scaffold, const SurfaceSamples& samples, double eps)
+{
+    std::vector<Patch> patches = scaffold.patches;
+    std::vector<std::vector<Vec2>> outlines;
+    for (Patch& p : patches) {
+        p.derive_frame();
+        std::vector<Vec2> o;
+        for (const Vec3& v : p.outer)
+            o.push_back(p.to_local(v));
+        outlines.push_back(o);
+    }
+    size_t near = 0;
+    for (const Vec3& x : samples.points)
+        for (size_t k = 0; k < patches.size(); ++k)
+            if (distance_to_patch(patches[k], outlines[k], x) <= eps) {
+                ++near;
+                break;
+            }
+    return samples.points.empty() ? 0.0 : double(near) / double(samples.points.size());
+}
+
+/// The plan a patch belongs to, or -1 for the card.
+int owner_of(const Built& b, int patch)
+{
+    for (size_t i = 0; i < b.parts.size(); ++i)
+        for (int id : b.parts[i].patches)
+            if (id == patch)
+                return int(i);
+    return -1;
+}
+
+} // namespace
+
+Diagnostics check_fit_options(const FitOptions& o)
+{
+    Diagnostics d;
+    range(d, "card_width", o.card_width, o.card_width >= 20 && o.card_width <= 2000,
+          ">= 20 and <= 2000 mm");
+    range(d, "card_depth", o.card_depth, o.card_depth >= 20 && o.card_depth <= 2000,
+          ">= 20 and <= 2000 mm");
+    range(d, "margin", o.margin, o.margin >= 0 && o.margin < 0.4, ">= 0 and < 0.4");
+    range(d, "max_mechanisms", o.max_mechanisms, o.max_mechanisms >= 1 && o.max_mechanisms <= 32,
+          "1 to 32");
+    range(d, "min_shape", o.min_shape, o.min_shape > 0 && o.min_shape < 1,
+          "> 0 and < 1 (a fraction of the model's diagonal)");
+    range(d, "probability", o.probability, o.probability > 0 && o.probability < 1, "> 0 and < 1");
+    range(d, "threshold", o.threshold, o.threshold > 0 && o.threshold <= 0.2,
+          "> 0 and <= 0.2 (a fraction of the model's diagonal)");
+    range(d, "samples", o.samples, o.samples >= 500 && o.samples <= 2000000, "500 to 2000000");
+    return d;
+}
+
+Result<FitResult> fit_design(const ModelMesh& model, const FitOptions& options,
+                             const CancelFlag* cancel)
+{
+    Result<FitResult> result;
+    Diagnostics bad = check_fit_options(options);
+    if (!bad.empty()) {
+        result.fail_with(bad);
+        return result;
+    }
+    const Result<ModelMesh> checked = check_model(model);
+    if (!checked.ok) {
+        result.fail_with(checked.diagnostics);
+        return result;
+    }
+    FitResult& r = result.value;
+    StageTimer timer(r);
+
+    // Alignment (§5.1.1): NPCA up, the mirror plane, the bounding box and the scale.
+    const SurfaceSamples coarse =
+        sample_surface(model, std::min(options.samples, 4000), options.seed);
+    CardRoom room{options.card_width, options.card_depth, options.margin};
+    const Result<Alignment> aligned = align_model(model, coarse, options.up, options.facing, room);
+    if (!aligned.ok) {
+        result.fail_with(aligned.diagnostics);
+        return result;
+    }
+    const Alignment& a = aligned.value;
+    r.model_to_card = a.model_to_card;
+    r.symmetry_error = a.symmetry_error;
+    r.card.width = options.card_width;
+    r.card.depth = options.card_depth;
+    timer.lap("align");
+    stop_if_cancelled(cancel, "fit_design: alignment");
+
+    // Pseudo-vertices, in the card's frame.
+    const SurfaceSamples samples =
+        transformed(sample_surface(model, options.samples, options.seed + 1), a.model_to_card);
+    timer.lap("sample");
+    stop_if_cancelled(cancel, "fit_design: sampling");
+
+    // Volumetric RANSAC on the base patch pairs, from the central fold.
+    const double diagonal = a.scale * model.diagonal();
+    PrismHost card;
+    card.name = "central fold";
+    card.origin = Vec3::Zero();
+    card.length = options.card_width;
+    card.across_min = -options.card_depth;
+    card.across_max = options.card_depth;
+    RansacOptions ro;
+    ro.threshold = options.threshold * diagonal;
+    // τ in samples: the five visible faces of a cube of edge min_shape·diagonal.
+    const double tau = options.min_shape * diagonal;
+    ro.min_points =
+        std::max(8.0, 5 * tau * tau / std::max(samples.spacing * samples.spacing, 1e-300));
+    ro.probability = options.probability;
+    ro.seed = options.seed;
+    ro.max_primitives = options.max_mechanisms;
+    ro.cancel = cancel;
+    const RansacResult fit = fit_prisms(samples, card, ro);
+    r.ransac_draws = fit.draws;
+    timer.lap("fit_primitives");
+    stop_if_cancelled(cancel, "fit_design: fitting primitives");
+
+    // Table 5.1 mapping by coverage error, then the §4.2.2 refit.
+    Mapping mapping = map_mechanisms(fit);
+    for (int k : mapping.unmapped) {
+        const std::string name = "primitive " + std::to_string(k + 1);
+        r.repairs.push_back({name, "dropped", "no mechanism of Table 5.1 fits its host"});
+    }
+    std::vector<MechanismPlan> plans = mapping.plans;
+    for (const auto& [name, why] : refit_for_foldability(plans))
+        r.repairs.push_back({name, "trimmed", why});
+    timer.lap("map");
+    stop_if_cancelled(cancel, "fit_design: mapping");
+
+    // Validity: build, check everything, drop what the simulator refuses, check again.
+    CardParams cp = r.card;
+    std::vector<bool> keep(plans.size(), true);
+    auto drop = [&](size_t i, const std::string& why) {
+        // What stands on it goes with it.
+        std::vector<size_t> gone{i};
+        keep[i] = false;
+        for (size_t k = i + 1; k < plans.size(); ++k)
+            if (plans[k].parent >= 0 && !keep[size_t(plans[k].parent)] && keep[k]) {
+                keep[k] = false;
+                gone.push_back(k);
+            }
+        for (size_t k : gone) {
+            const std::string reason =
+                k == i ? why : "it stood on " + plans[i].name + ", which was dropped";
+            r.repairs.push_back({plans[k].name, "dropped", reason});
+            const std::string msg = plans[k].name + " (" + plans[k].type + ") dropped: " + reason;
+            r.diagnostics.push_back(Diagnostic::warning(DiagnosticCode::mechanism_dropped, msg,
+                                                        about_parameter(plans[k].name)));
+        }
+    };
+    Built built;
+    ValidityReport report;
+    ValidityOptions vo;
+    vo.cancel = cancel;
+    for (;;) {
+        built = build(cp, plans, keep);
+        bool refused = false;
+        for (size_t i = 0; i < plans.size(); ++i)
+            if (keep[i] && !built.refused[i].empty()) {
+                drop(i, built.refused[i]);
+                refused = true;
+                break;
+            }
+        if (refused)
+            continue;
+        std::vector<MechanismParts> present;
+        for (const auto& p : built.parts)
+            if (!p.name.empty())
+                present.push_back(p);
+        const auto conflicts = placement_conflicts(present);
+        if (!conflicts.empty()) {
+            for (size_t i = plans.size(); i-- > 0;)
+                if (keep[i] && (plans[i].name == conflicts.front().second ||
+                                plans[i].name == conflicts.front().first)) {
+                    drop(i, "it sweeps into " +
+                                (plans[i].name == conflicts.front().second
+                                     ? conflicts.front().first
+                                     : conflicts.front().second) +
+                                " along their hinge when the card closes (§4.2.2)");
+                    break;
+                }
+            continue;
+        }
+        if (present.empty())
+            break;
+        report = check_validity(built.scaffold, vo);
+        if (report.valid())
+            break;
+        // The mechanism the findings point at, most nested first; the last one otherwise.
+        int culprit = -1;
+        std::string why;
+        for (const Diagnostic& d : report.diagnostics) {
+            if (d.severity != Severity::error)
+                continue;
+            for (int id : d.patches) {
+                const int o = owner_of(built, id);
+                if (o > culprit) {
+                    culprit = o;
+                    why = d.message;
+                }
+            }
+            if (why.empty())
+                why = d.message;
+        }
+        if (culprit < 0)
+            for (size_t i = plans.size(); i-- > 0;)
+                if (keep[i]) {
+                    culprit = int(i);
+                    break;
+                }
+        drop(size_t(culprit), "the validity check failed: " + why);
+    }
+    timer.lap("validate");
+
+    r.scaffold = built.scaffold;
+    r.valid = false;
+    std::vector<MechanismPlan> kept;
+    for (size_t i = 0; i < plans.size(); ++i)
+        if (keep[i] && !built.parts[i].name.empty())
+            kept.push_back(plans[i]);
+    if (!kept.empty() && report.valid())
+        r.valid = true;
+    for (const auto& p : kept) {
+        FittedMechanism m;
+        m.type = p.type;
+        m.name = p.name;
+        m.host = p.host;
+        m.parameters = p.parameters;
+        m.primitive =
+            std::string(fit.prisms[p.prism].kind_name()) + " prism " + std::to_string(p.prism + 1);
+        m.coverage_error = p.coverage_error();
+        r.mechanisms.push_back(m);
+    }
+    r.coverage_error = coverage_error(kept);
+    // Primitives for previews, named by the pairs their mechanisms offer where mapped.
+    std::map<int, std::string> host_names;
+    for (const auto& p : plans)
+        host_names[p.prism] = p.host;
+    for (size_t k = 0; k < fit.prisms.size(); ++k) {
+        const Prism& m = fit.prisms[k];
+        FittedPrimitive fp;
+        fp.kind = m.kind_name();
+        fp.corners = m.corners(fit.hosts[m.host]);
+        fp.host = host_names.count(int(k)) ? host_names[int(k)] : fit.hosts[m.host].name;
+        fp.inliers = m.inliers;
+        r.primitives.push_back(fp);
+    }
+    r.coverage = coverage_of(r.scaffold, samples, ro.threshold);
+    for (const Diagnostic& d : r.diagnostics)
+        result.diagnostics.push_back(d);
+    if (!r.valid) {
+        for (const Diagnostic& d : report.diagnostics)
+            r.diagnostics.push_back(d);
+        result.fail(DiagnosticCode::no_design_found,
+                    (model.source.empty() ? std::string("the model") : model.source) +
+                        ": no valid design found (" + std::to_string(fit.prisms.size()) +
+                        " primitives fitted, " + std::to_string(plans.size()) +
+                        " mapped, every one dropped; see the repairs)");
+    }
+    timer.lap("report");
+    return result;
+}
+
+} // namespace popup
