@@ -71,7 +71,16 @@ Built build(const CardParams& card, const std::vector<MechanismPlan>& plans,
             b.refused[i] = "its host " + p.host + " is not in the design";
             continue;
         }
-        const auto& q = p.parameters;
+        // Round-off between the fitted host and the built one must not push a mechanism that
+        // spans its whole host off its end.
+        std::map<std::string, double> q = p.parameters;
+        const double length = host->second.length;
+        q["offset"] = std::clamp(q.at("offset"), 0.0, length);
+        if (q.count("width") && q["offset"] + q["width"] > length &&
+            q["offset"] + q["width"] < length * 1.01) {
+            q["offset"] = std::max(0.0, length - q["width"]);
+            q["width"] = std::min(q["width"], length - q["offset"]);
+        }
         Result<MechanismParts> added;
         if (p.type == "box_fold") {
             BoxFoldParams bp;
@@ -205,6 +214,7 @@ Result<FitResult> fit_design(const ModelMesh& model, const FitOptions& options,
         result.fail_with(checked.diagnostics);
         return result;
     }
+    stop_if_cancelled(cancel, "fit_design");
     FitResult& r = result.value;
     StageTimer timer(r);
 

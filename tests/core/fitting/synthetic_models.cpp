@@ -144,7 +144,7 @@ ModelMesh cuboid_model()
 
 ModelMesh house_model()
 {
-    ModelMesh m = extrude_section({{-20, 0}, {20, 0}, {20, 30}, {0, 50}, {-20, 30}}, 0, 100);
+    ModelMesh m = extrude_section({{-30, 0}, {30, 0}, {30, 24}, {0, 42}, {-30, 24}}, 0, 100);
     m.source = "house";
     return m;
 }

@@ -24,7 +24,7 @@ ModelMesh moved(const ModelMesh& mesh, const Mat3& rotation, double scale, const
 
 /// 40 (x) by 120 (y) by 30 (z).
 ModelMesh cuboid_model();
-/// A 40 by 100 body 30 high under a ridge roof 20 high, ridge along y.
+/// A 60 by 100 body 24 high under a ridge roof 18 high, ridge along y.
 ModelMesh house_model();
 /// Chassis 40 x 140 x 14; cargo box 40 x 80 x 36 and cab 40 x 36 x 24 on it, 16 apart.
 ModelMesh truck_model();

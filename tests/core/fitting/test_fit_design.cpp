@@ -5,6 +5,7 @@
 
 #include "fitting/synthetic_models.hpp"
 #include "popup/fitting/fit_design.hpp"
+#include "popup/fitting/prism_ransac.hpp"
 #include "popup/simulation/check_validity.hpp"
 
 using namespace popup;
@@ -138,4 +139,217 @@ TEST(FitDesign, TentPrismIsATentFold)
     EXPECT_NEAR(q.at("foot"), 30 * s, 0.02 * 60 * s);
     EXPECT_NEAR(q.at("foot_backdrop"), 30 * s, 0.02 * 60 * s);
     EXPECT_NEAR(q.at("slope"), std::hypot(30, 36) * s, 0.02 * 36 * s);
+}
+
+/// Expected dimensions of a model of bounding box length x half depth x height, in card mm,
+/// and the 2 % tolerance of each along its own axis.
+struct Frame {
+    double s, length, depth, height;
+    Frame(double l, double half, double h, const FitOptions& o)
+        : s(expected_scale(l, half, h, o)), length(l * s), depth(2 * half * s), height(h * s)
+    {
+    }
+    double along(double model) const { return model * s; }
+};
+
+#define EXPECT_ALONG(value, model, frame) EXPECT_NEAR(value, (model)*frame.s, 0.02 * frame.length)
+#define EXPECT_ACROSS(value, model, frame) EXPECT_NEAR(value, (model)*frame.s, 0.02 * frame.depth)
+#define EXPECT_UP(value, model, frame) EXPECT_NEAR(value, (model)*frame.s, 0.02 * frame.height)
+
+FitResult fitted(const ModelMesh& m, const FitOptions& o = {})
+{
+    auto r = fit_design(m, o);
+    EXPECT_TRUE(r.ok) << (r.diagnostics.empty() ? "" : r.diagnostics[0].message);
+    EXPECT_TRUE(r.value.valid);
+    if (!r.value.scaffold.patches.empty()) {
+        EXPECT_TRUE(check_validity(r.value.scaffold).valid());
+    }
+    return r.value;
+}
+
+TEST(FitDesign, HouseIsABoxWithATentOnItsTop)
+{
+    const FitOptions o;
+    const FitResult r = fitted(house_model(), o);
+    ASSERT_EQ(r.mechanisms.size(), 2u) << describe(r);
+    const Frame f(100, 30, 42, o);
+    const FittedMechanism* box = find_type(r, "box_fold");
+    const FittedMechanism* roof = find_type(r, "tent_fold");
+    ASSERT_TRUE(box && roof) << describe(r);
+    EXPECT_EQ(box->host, "central fold");
+    EXPECT_EQ(roof->host, box->name + ".top");
+    EXPECT_ALONG(box->parameters.at("width"), 100, f);
+    EXPECT_ACROSS(box->parameters.at("depth_ground"), 30, f);
+    EXPECT_UP(box->parameters.at("height"), 24, f);
+    EXPECT_ALONG(roof->parameters.at("width"), 100, f);
+    EXPECT_ACROSS(roof->parameters.at("foot"), 30, f);
+    EXPECT_ACROSS(roof->parameters.at("foot_backdrop"), 30, f);
+    EXPECT_UP(roof->parameters.at("slope"), std::hypot(30, 18), f);
+}
+
+TEST(FitDesign, TruckIsAStackOfBoxFolds)
+{
+    const FitOptions o;
+    const FitResult r = fitted(truck_model(), o);
+    ASSERT_EQ(r.mechanisms.size(), 3u) << describe(r);
+    const Frame f(140, 20, 50, o);
+    for (const auto& m : r.mechanisms)
+        EXPECT_EQ(m.type, "box_fold") << describe(r);
+    const auto& chassis = r.mechanisms[0].parameters;
+    EXPECT_EQ(r.mechanisms[0].host, "central fold");
+    EXPECT_ALONG(chassis.at("width"), 140, f);
+    EXPECT_UP(chassis.at("height"), 14, f);
+    EXPECT_ACROSS(chassis.at("depth_ground"), 20, f);
+    // Cargo (y 0..80, 36 high) and cab (y 96..132, 24 high) on the chassis's top.
+    const FittedMechanism* cargo = &r.mechanisms[1];
+    const FittedMechanism* cab = &r.mechanisms[2];
+    if (cargo->parameters.at("offset") > cab->parameters.at("offset"))
+        std::swap(cargo, cab);
+    EXPECT_EQ(cargo->host, r.mechanisms[0].name + ".top");
+    EXPECT_EQ(cab->host, r.mechanisms[0].name + ".top");
+    EXPECT_ALONG(cargo->parameters.at("offset"), 0, f);
+    EXPECT_ALONG(cargo->parameters.at("width"), 80, f);
+    EXPECT_UP(cargo->parameters.at("height"), 36, f);
+    EXPECT_ALONG(cab->parameters.at("offset"), 96, f);
+    EXPECT_ALONG(cab->parameters.at("width"), 36, f);
+    EXPECT_UP(cab->parameters.at("height"), 24, f);
+}
+
+TEST(FitDesign, LBuildingIsAWingBoxCarryingTheTower)
+{
+    const FitOptions o;
+    const FitResult r = fitted(l_building_model(), o);
+    ASSERT_EQ(r.mechanisms.size(), 2u) << describe(r);
+    const Frame f(100, 20, 60, o);
+    EXPECT_EQ(r.mechanisms[0].type, "box_fold");
+    EXPECT_EQ(r.mechanisms[1].type, "box_fold");
+    EXPECT_EQ(r.mechanisms[1].host, r.mechanisms[0].name + ".top");
+    const auto& wing = r.mechanisms[0].parameters;
+    const auto& tower = r.mechanisms[1].parameters;
+    EXPECT_ALONG(wing.at("width"), 100, f);
+    EXPECT_UP(wing.at("height"), 24, f);
+    EXPECT_ACROSS(wing.at("depth_ground"), 20, f);
+    EXPECT_ALONG(tower.at("width"), 30, f);
+    EXPECT_UP(tower.at("height"), 36, f);
+    // The tower stands at one end of the wing (which end is the card's y = 0 is the skew's).
+    const double end =
+        std::min(tower.at("offset"), wing.at("width") - tower.at("offset") - tower.at("width"));
+    EXPECT_NEAR(end, 0.0, 0.02 * f.length);
+}
+
+TEST(FitDesign, TurnedMovedScaledCopyGivesTheSameDesign)
+{
+    const FitOptions o;
+    const FitResult a = fitted(house_model(), o);
+    const Mat3 turn =
+        (Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()) * Eigen::AngleAxisd(2.1, Vec3::UnitX()))
+            .toRotationMatrix();
+    const FitResult b = fitted(moved(house_model(), turn, 3.7, Vec3(120, -45, 1000)), o);
+    ASSERT_EQ(a.mechanisms.size(), b.mechanisms.size()) << describe(a) << describe(b);
+    for (size_t i = 0; i < a.mechanisms.size(); ++i) {
+        EXPECT_EQ(a.mechanisms[i].type, b.mechanisms[i].type);
+        EXPECT_EQ(a.mechanisms[i].host, b.mechanisms[i].host);
+        for (const auto& [k, v] : a.mechanisms[i].parameters)
+            EXPECT_NEAR(b.mechanisms[i].parameters.at(k), v, 0.01 * 105) << k;
+    }
+    // model_to_card of the copy, composed with the move, is the original's.
+    Eigen::Matrix4d move = Eigen::Matrix4d::Identity();
+    move.topLeftCorner<3, 3>() = 3.7 * turn;
+    move.topRightCorner<3, 1>() = Vec3(120, -45, 1000);
+    const Eigen::Matrix4d composed = b.model_to_card * move;
+    for (const Vec3& v : house_model().vertices) {
+        const Vec3 pa = (a.model_to_card * v.homogeneous()).head<3>();
+        const Vec3 pb = (composed * v.homogeneous()).head<3>();
+        EXPECT_LT((pa - pb).norm(), 0.01 * 105);
+    }
+}
+
+TEST(FitDesign, UpAndFacingOverrideTheAlignment)
+{
+    // The cuboid lying on its side (its 30 along model x, 40 along model z): told which way is
+    // up and which side faces the viewer, it comes back as the same box.
+    const Mat3 lie = Eigen::AngleAxisd(M_PI / 2, Vec3::UnitY()).toRotationMatrix();
+    FitOptions o;
+    o.up = lie * Vec3::UnitZ();
+    o.facing = lie * Vec3::UnitX();
+    const FitResult r = fitted(moved(cuboid_model(), lie, 1.0, Vec3::Zero()), o);
+    ASSERT_EQ(r.mechanisms.size(), 1u) << describe(r);
+    const Frame f(120, 20, 30, o);
+    EXPECT_UP(r.mechanisms[0].parameters.at("height"), 30, f);
+    EXPECT_ACROSS(r.mechanisms[0].parameters.at("depth_ground"), 20, f);
+    // model_to_card takes the given up to +z and facing to +x.
+    const Mat3 linear = r.model_to_card.topLeftCorner<3, 3>();
+    EXPECT_GT((linear * *o.up).normalized().z(), 0.999);
+    EXPECT_GT((linear * *o.facing).normalized().x(), 0.999);
+}
+
+TEST(FitDesign, SameSeedSameDesign)
+{
+    FitOptions o;
+    o.seed = 42;
+    const FitResult a = fitted(truck_model(), o);
+    const FitResult b = fitted(truck_model(), o);
+    ASSERT_EQ(a.mechanisms.size(), b.mechanisms.size());
+    for (size_t i = 0; i < a.mechanisms.size(); ++i)
+        EXPECT_EQ(a.mechanisms[i].parameters, b.mechanisms[i].parameters);
+    EXPECT_EQ(a.ransac_draws, b.ransac_draws);
+    EXPECT_EQ(a.model_to_card, b.model_to_card);
+}
+
+TEST(FitDesign, BadOptionsAreNamedWithTheirRange)
+{
+    FitOptions o;
+    o.probability = 1.5;
+    o.samples = 10;
+    o.threshold = -1;
+    const auto r = fit_design(cuboid_model(), o);
+    EXPECT_FALSE(r.ok);
+    std::vector<std::string> named;
+    for (const auto& d : r.diagnostics) {
+        EXPECT_EQ(d.code, DiagnosticCode::bad_option);
+        named.push_back(d.parameter.value_or(""));
+    }
+    EXPECT_EQ(named, (std::vector<std::string>{"probability", "threshold", "samples"}));
+    EXPECT_NE(r.diagnostics[0].message.find("1.5"), std::string::npos);
+    EXPECT_NE(r.diagnostics[0].message.find("> 0 and < 1"), std::string::npos);
+
+    FitOptions zero_up;
+    zero_up.up = Vec3::Zero();
+    const auto u = fit_design(cuboid_model(), zero_up);
+    ASSERT_FALSE(u.ok);
+    EXPECT_EQ(u.diagnostics[0].parameter.value_or(""), "up");
+
+    FitOptions parallel;
+    parallel.up = Vec3::UnitZ();
+    parallel.facing = Vec3(0, 0, -2);
+    const auto p = fit_design(cuboid_model(), parallel);
+    ASSERT_FALSE(p.ok);
+    EXPECT_EQ(p.diagnostics[0].parameter.value_or(""), "facing");
+}
+
+TEST(FitDesign, EmptyModelIsRefusedByName)
+{
+    ModelMesh empty;
+    empty.source = "nothing.obj";
+    const auto r = fit_design(empty, FitOptions());
+    ASSERT_FALSE(r.ok);
+    EXPECT_EQ(r.diagnostics[0].code, DiagnosticCode::empty_model);
+}
+
+TEST(FitDesign, CancelledBeforeItStartsThrowsCancelled)
+{
+    CancelFlag flag;
+    flag.cancel();
+    EXPECT_THROW(fit_design(cuboid_model(), FitOptions(), &flag), Cancelled);
+}
+
+TEST(FitDesign, StoppingProbabilityFollowsSchnabel)
+{
+    // One draw finds a shape of n of N samples with n / (N · hosts · levels · 2^(k−1)).
+    EXPECT_DOUBLE_EQ(draw_probability(100, 1000, 2, 1, 5), 100.0 / (1000 * 5 * 2));
+    EXPECT_DOUBLE_EQ(draw_probability(100, 1000, 4, 2, 5), 100.0 / (1000 * 2 * 5 * 8));
+    // P(n, s) = 1 − (1 − P)^s.
+    const double p = 500.0 / (1000 * 5 * 2);
+    EXPECT_NEAR(found_probability(500, 1000, 2, 1, 5, 300), 1 - std::pow(1 - p, 300), 1e-12);
+    EXPECT_DOUBLE_EQ(found_probability(500, 1000, 2, 1, 5, 0), 0.0);
 }
