@@ -82,6 +82,41 @@ Vec3 orient_by_skew(const Vec3& axis, const std::vector<Vec3>& points, const Vec
     return axis;
 }
 
+/// The sign of the up axis a model stands on: the end with more flat area facing out of it at
+/// its extreme (a house's floor, not its ridge); the skew decides a tie (a box).
+Vec3 standing_way(const ModelMesh& model, const Vec3& axis, const std::vector<Vec3>& points,
+                  const Vec3& centre)
+{
+    double lo = 1e300, hi = -1e300;
+    for (const Vec3& v : model.vertices) {
+        lo = std::min(lo, v.dot(axis));
+        hi = std::max(hi, v.dot(axis));
+    }
+    const double tolerance = 1e-3 * (hi - lo);
+    double low_area = 0, high_area = 0;
+    for (const auto& t : model.triangles) {
+        const Vec3 c = (model.vertices[t[1]] - model.vertices[t[0]])
+                           .cross(model.vertices[t[2]] - model.vertices[t[0]]);
+        const double area = 0.5 * c.norm();
+        if (!(area > 0))
+            continue;
+        const double along = c.dot(axis) / c.norm();
+        double far = -1e300, near = 1e300;
+        for (int k = 0; k < 3; ++k) {
+            far = std::max(far, model.vertices[t[k]].dot(axis));
+            near = std::min(near, model.vertices[t[k]].dot(axis));
+        }
+        if (along < -0.99 && near < lo + tolerance)
+            low_area += area;
+        if (along > 0.99 && far > hi - tolerance)
+            high_area += area;
+    }
+    const double total = low_area + high_area;
+    if (total > 0 && std::abs(low_area - high_area) > 1e-6 * total)
+        return low_area > high_area ? axis : Vec3(-axis);
+    return orient_by_skew(axis, points, centre);
+}
+
 bool usable_direction(const Vec3& v)
 {
     return v.allFinite() && v.norm() > 1e-12;
@@ -138,7 +173,8 @@ Result<Alignment> align_model(const ModelMesh& model, const SurfaceSamples& samp
     centre /= double(pts.size());
 
     const Mat3 axes = normal_principal_axes(model);
-    Vec3 up = up_option ? Vec3(up_option->normalized()) : orient_by_skew(axes.col(0), pts, centre);
+    Vec3 up =
+        up_option ? Vec3(up_option->normalized()) : standing_way(model, axes.col(0), pts, centre);
     if (facing_option) {
         const Vec3 f = *facing_option - facing_option->dot(up) * up;
         if (f.norm() < 1e-6 * facing_option->norm()) {
@@ -207,6 +243,15 @@ Result<Alignment> align_model(const ModelMesh& model, const SurfaceSamples& samp
             best_theta = t;
         }
     }
+    // A mirror plane of a made object is usually across one of its NPCA axes: snap to it when
+    // it scores as well (the scan's noise would tilt the card by a tenth of a degree).
+    for (double axis_theta : {0.0, M_PI / 2}) {
+        const double d = std::remainder(best_theta - axis_theta, M_PI);
+        if (std::abs(d) < 2 * M_PI / 180 && score(axis_theta) <= best * 1.05 + 1e-12) {
+            best = std::min(best, score(axis_theta));
+            best_theta = axis_theta;
+        }
+    }
     const Vec3 mirror_normal = std::cos(best_theta) * e1 + std::sin(best_theta) * e2;
     a.symmetry_error = best / diagonal;
 
@@ -230,6 +275,11 @@ Result<Alignment> align_model(const ModelMesh& model, const SurfaceSamples& samp
     Eigen::AlignedBox3d box;
     for (const Vec3& v : model.vertices)
         box.extend(rotation * (v - centre));
+    // The fold at the middle of the model's extent across it: on a mirror-symmetric model its
+    // mirror plane, exactly (the samples' centroid is only near it).
+    const double middle = box.center().x();
+    centre += middle * x;
+    box.translate(Vec3(-middle, 0, 0));
     const double half_x = std::max(-box.min().x(), box.max().x());
     const double length = box.sizes().y(), height = box.sizes().z();
     const double usable_w = room.width * (1 - 2 * room.margin);
