@@ -480,12 +480,16 @@ RansacResult fit_prisms(const SurfaceSamples& samples, const PrismHost& card,
     // another's top) are the paper itself: no prism needs to explain them.
     auto mark_base = [&](int host) {
         const PrismHost& h = r.hosts[host];
-        if (!h.flat)
-            return;
         for (size_t i = 0; i < total; ++i) {
             const Local& l = locals[host][i];
-            if (std::abs(l.t) < eps && l.nt < -kNormalAgreement && l.a > -eps &&
-                l.a < h.length + eps && l.s > h.across_min - eps && l.s < h.across_max + eps)
+            if (l.a < -eps || l.a > h.length + eps)
+                continue;
+            const bool on_page = std::abs(l.t) < eps && l.nt < -kNormalAgreement &&
+                                 l.s > h.across_min - eps && l.s < h.across_max + eps;
+            // A right-angle pair's wall too: a part built against a box's side.
+            const bool on_wall = !h.flat && std::abs(l.s) < eps && l.ns < -kNormalAgreement &&
+                                 l.t > -eps && l.t < h.up_max + eps;
+            if (on_page || on_wall)
                 r.on_base[i] = true;
         }
     };

@@ -164,6 +164,14 @@ ModelMesh tent_model()
     return m;
 }
 
+ModelMesh annexed_model()
+{
+    ModelMesh m = join({box_mesh({-20, 0, 0}, {20, 100, 30}), box_mesh({20, 20, 0}, {35, 70, 12}),
+                        box_mesh({-35, 20, 0}, {-20, 70, 12})});
+    m.source = "annexed box";
+    return m;
+}
+
 ModelMesh l_building_model()
 {
     ModelMesh m = extrude_elevation({{0, 0}, {100, 0}, {100, 24}, {30, 24}, {30, 60}, {0, 60}}, 20);

@@ -30,6 +30,9 @@ ModelMesh house_model();
 ModelMesh truck_model();
 /// A triangular prism: feet at x = ±30, apex 36 high, 110 long.
 ModelMesh tent_model();
+/// A box 40 x 100 x 30 with a low annex 15 deep and 12 high against each long side, over y in
+/// [20, 70].
+ModelMesh annexed_model();
 /// An L in elevation: a wing 100 long and 24 high, a tower 30 long and 60 high at y = 0;
 /// 40 deep.
 ModelMesh l_building_model();

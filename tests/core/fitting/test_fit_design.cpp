@@ -353,3 +353,59 @@ TEST(FitDesign, StoppingProbabilityFollowsSchnabel)
     EXPECT_NEAR(found_probability(500, 1000, 2, 1, 5, 300), 1 - std::pow(1 - p, 300), 1e-12);
     EXPECT_DOUBLE_EQ(found_probability(500, 1000, 2, 1, 5, 0), 0.0);
 }
+
+TEST(FitDesign, LowAnnexesOnTheSidesAreStepFolds)
+{
+    const FitOptions o;
+    const FitResult r = fitted(annexed_model(), o);
+    ASSERT_EQ(r.mechanisms.size(), 3u) << describe(r);
+    const Frame f(100, 35, 30, o);
+    const FittedMechanism* box = find_type(r, "box_fold");
+    ASSERT_TRUE(box) << describe(r);
+    EXPECT_ACROSS(box->parameters.at("depth_ground"), 20, f);
+    EXPECT_UP(box->parameters.at("height"), 30, f);
+    int sides = 0;
+    for (int k = 0; k < 2; ++k) {
+        const FittedMechanism* step = find_type(r, "step_fold", k);
+        ASSERT_TRUE(step) << describe(r);
+        const auto& q = step->parameters;
+        // On the ground side the page is the step's ground; on the backdrop side, the wall is.
+        const bool ground_side = step->host == box->name + ".side_ground";
+        EXPECT_TRUE(ground_side || step->host == box->name + ".side_backdrop") << step->host;
+        sides += ground_side ? 1 : 2;
+        EXPECT_ACROSS(q.at(ground_side ? "run_ground" : "run_backdrop"), 15, f);
+        EXPECT_UP(q.at(ground_side ? "run_backdrop" : "run_ground"), 12, f);
+        EXPECT_ALONG(q.at("width"), 50, f);
+        // Which end of the box is y = 0 is the model's skew: the annex starts 20 from one end (and
+        // ends 30 from the other).
+        const double from_end =
+            std::min(q.at("offset"), box->parameters.at("width") - q.at("offset") - q.at("width"));
+        EXPECT_ALONG(from_end, 20, f);
+    }
+    EXPECT_EQ(sides, 3);
+}
+
+/// Each mechanism's patches at the design state fill the box of the primitive it maps: the
+/// mapping's geometry checked against what the generators built.
+TEST(FitDesign, MechanismsBuildTheirPrimitives)
+{
+    for (const ModelMesh& model :
+         {cuboid_model(), tent_model(), house_model(), truck_model(), annexed_model()}) {
+        const FitResult r = fitted(model);
+        for (const FittedMechanism& m : r.mechanisms) {
+            const int index = std::stoi(m.primitive.substr(m.primitive.rfind(' ') + 1)) - 1;
+            Eigen::AlignedBox3d expected, built;
+            for (const Vec3& c : r.primitives.at(size_t(index)).corners)
+                expected.extend(c);
+            for (const Patch& p : r.scaffold.patches)
+                if (p.name.rfind(m.name + ".", 0) == 0)
+                    for (const Vec3& v : p.outer)
+                        built.extend(v);
+            const double tolerance = 1e-3 * expected.diagonal().norm();
+            EXPECT_LT((built.min() - expected.min()).cwiseAbs().maxCoeff(), tolerance)
+                << model.source << " " << m.name;
+            EXPECT_LT((built.max() - expected.max()).cwiseAbs().maxCoeff(), tolerance)
+                << model.source << " " << m.name;
+        }
+    }
+}
