@@ -127,6 +127,32 @@ ModelMesh subdivided(const ModelMesh& mesh, int levels)
     return m;
 }
 
+ModelMesh tessellated(const ModelMesh& mesh, int vertices)
+{
+    const double per_triangle =
+        double(vertices) / double(std::max<size_t>(1, mesh.triangles.size()));
+    int n = 1;
+    while ((n + 2) * (n + 3) / 2.0 <= per_triangle)
+        ++n;
+    ModelMesh m;
+    m.source = mesh.source;
+    for (const auto& t : mesh.triangles) {
+        const Vec3 a = mesh.vertices[t[0]], b = mesh.vertices[t[1]], c = mesh.vertices[t[2]];
+        const int base = int(m.vertices.size());
+        auto index = [&](int i, int j) { return base + i * (n + 1) - i * (i - 1) / 2 + j; };
+        for (int i = 0; i <= n; ++i)
+            for (int j = 0; j <= n - i; ++j)
+                m.vertices.push_back(a + (b - a) * (double(j) / n) + (c - a) * (double(i) / n));
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n - i; ++j) {
+                m.triangles.push_back({index(i, j), index(i, j + 1), index(i + 1, j)});
+                if (j + 1 < n - i)
+                    m.triangles.push_back({index(i, j + 1), index(i + 1, j + 1), index(i + 1, j)});
+            }
+    }
+    return m;
+}
+
 ModelMesh moved(const ModelMesh& mesh, const Mat3& rotation, double scale, const Vec3& shift)
 {
     ModelMesh m = mesh;

@@ -19,6 +19,9 @@ ModelMesh box_mesh(const Vec3& lo, const Vec3& hi);
 ModelMesh join(const std::vector<ModelMesh>& parts);
 /// Splits every triangle into four, `levels` times (more vertices, same surface).
 ModelMesh subdivided(const ModelMesh& mesh, int levels);
+/// Every triangle split into an n-by-n grid of triangles, n chosen so the mesh has about
+/// `vertices` vertices (each triangle keeps its own grid: a soup, as many files are).
+ModelMesh tessellated(const ModelMesh& mesh, int vertices);
 /// The mesh moved by x -> scale * rotation * x + shift.
 ModelMesh moved(const ModelMesh& mesh, const Mat3& rotation, double scale, const Vec3& shift);
 
