@@ -252,37 +252,41 @@ public:
         return out;
     }
 
-    /// Estimated inliers of m among `subset` (remaining samples), or -1 when it encloses a
-    /// sample of `guard` (all samples) deeper than ε.
-    double score(const Prism& m, const std::vector<Local>& l, const std::vector<int>& subset,
-                 const std::vector<int>& guard, bool flat, double scale) const
+    /// Estimated inliers of m among `subset` (remaining samples above its host, in its host's
+    /// coordinates, contiguous), or -1 when it encloses a sample of `guard` (all samples above
+    /// the host) deeper than ε. Candidates not beating `to_beat` are not guarded (they cannot
+    /// become the best): most draws stop after the subset.
+    double score(const Prism& m, const std::vector<Local>& subset, const std::vector<Local>& guard,
+                 bool flat, double scale, double to_beat) const
     {
         const Section sec = section_of(m);
         const double eps = o_.threshold;
-        int inside = 0;
-        for (int i : guard)
-            if (classify(m, sec, l[i], eps, flat) == Where::inside && ++inside > 1)
-                return -1;
         int n = 0;
-        for (int i : subset)
-            n += classify(m, sec, l[i], eps, flat) == Where::face;
+        for (const Local& q : subset)
+            n += classify(m, sec, q, eps, flat) == Where::face;
+        if (n * scale <= to_beat)
+            return -1;
+        int inside = 0;
+        for (const Local& q : guard)
+            if (classify(m, sec, q, eps, flat) == Where::inside && ++inside > 1)
+                return -1;
         return n * scale;
     }
 
     /// Grows the prism along the hinge over the samples that carry its top, sides or slopes
     /// without a gap wider than `gap`: two or four points fix the section, not the length.
-    void extend_along(Prism& m, const std::vector<Local>& l, const std::vector<int>& subset,
-                      double gap, const PrismHost& h) const
+    void extend_along(Prism& m, const std::vector<Local>& subset, double gap,
+                      const PrismHost& h) const
     {
         Prism open = m;
         open.a0 = -1e300;
         open.a1 = 1e300;
         const Section sec = section_of(open);
         std::vector<double> along;
-        for (int i : subset) {
+        for (const Local& q : subset) {
             int face = -1;
-            if (classify(open, sec, l[i], o_.threshold, h.flat, &face) == Where::face && face <= 2)
-                along.push_back(l[i].a);
+            if (classify(open, sec, q, o_.threshold, h.flat, &face) == Where::face && face <= 2)
+                along.push_back(q.a);
         }
         if (along.empty())
             return;
@@ -378,6 +382,23 @@ private:
     const RansacOptions& o_;
 };
 
+/// True when the prism's box overlaps one of `taken` by more than ε along every axis: two
+/// primitives may touch (one stands on the other) but not share volume, or their mechanisms
+/// would.
+bool overlaps(const Prism& m, const PrismHost& h, const std::vector<Eigen::AlignedBox3d>& taken,
+              double eps)
+{
+    Eigen::AlignedBox3d box;
+    for (const Vec3& c : m.corners(h))
+        box.extend(c);
+    for (const auto& t : taken) {
+        const Vec3 lo = box.min().cwiseMax(t.min()), hi = box.max().cwiseMin(t.max());
+        if (((hi - lo).array() > eps).all())
+            return true;
+    }
+    return false;
+}
+
 std::vector<int> every_kth(const std::vector<int>& from, size_t at_most)
 {
     const size_t k = std::max<size_t>(1, from.size() / std::max<size_t>(1, at_most));
@@ -431,7 +452,11 @@ double draw_probability(double n, double N, int k, int hosts, int levels)
 {
     if (N <= 0)
         return 1.0;
-    return std::min(1.0, n / (N * std::max(hosts, 1) * std::max(levels, 1) * std::pow(2.0, k - 1)));
+    // Of the minimal samples inside a shape, about a quarter generate it: a box needs one point
+    // on its top and one on a side, a triangular prism two on each slope (docs/MATH.md).
+    constexpr double generating = 0.25;
+    return std::min(1.0, generating * n /
+                             (N * std::max(hosts, 1) * std::max(levels, 1) * std::pow(2.0, k - 1)));
 }
 
 double found_probability(double n, double N, int k, int hosts, int levels, long draws)
@@ -504,6 +529,7 @@ RansacResult fit_prisms(const SurfaceSamples& samples, const PrismHost& card,
     for (size_t i = 0; i < total; ++i)
         all[i] = int(i);
     const std::vector<int> guard = every_kth(all, 3000);
+    std::vector<Eigen::AlignedBox3d> taken; // boxes of the accepted prisms, card frame
 
     while (int(r.prisms.size()) < o.max_primitives) {
         stop_if_cancelled(o.cancel, "fit_design: fitting primitives");
@@ -523,6 +549,16 @@ RansacResult fit_prisms(const SurfaceSamples& samples, const PrismHost& card,
         const double gap = 4.0 * samples.spacing * std::sqrt(scale);
         Cells cells(samples.points, remaining, extent);
         const int H = int(r.hosts.size());
+        // Per host, the scoring subset and the guard above it, contiguous in its coordinates.
+        std::vector<std::vector<Local>> sub(H), grd(H);
+        for (int h = 0; h < H; ++h) {
+            for (int i : subset)
+                if (above_host(r.hosts[h], locals[h][i], eps))
+                    sub[h].push_back(locals[h][i]);
+            for (int i : guard)
+                if (above_host(r.hosts[h], locals[h][i], eps))
+                    grd[h].push_back(locals[h][i]);
+        }
         std::uniform_int_distribution<size_t> pick_point(0, remaining.size() - 1);
         std::uniform_int_distribution<int> pick_level(0, kLevels - 1);
 
@@ -559,10 +595,11 @@ RansacResult fit_prisms(const SurfaceSamples& samples, const PrismHost& card,
                 rect.a0 = std::min(l[p1].a, l[p2].a);
                 rect.a1 = std::max(l[p1].a, l[p2].a);
                 if (fit_host(host, rect, eps)) {
-                    search.extend_along(rect, l, subset, gap, host);
+                    search.extend_along(rect, sub[h], gap, host);
                     if (fit_host(host, rect, eps)) {
-                        const double sc = search.score(rect, l, subset, guard, host.flat, scale);
-                        if (sc > best_rect.score)
+                        const double sc =
+                            search.score(rect, sub[h], grd[h], host.flat, scale, best_rect.score);
+                        if (sc > best_rect.score && !overlaps(rect, host, taken, eps))
                             best_rect = {rect, sc};
                     }
                 }
@@ -584,11 +621,11 @@ RansacResult fit_prisms(const SurfaceSamples& samples, const PrismHost& card,
                 tri.a1 = std::max({l[p1].a, l[p2].a, l[p3].a, l[p4].a});
                 if (!fit_host(host, tri, eps))
                     continue;
-                search.extend_along(tri, l, subset, gap, host);
+                search.extend_along(tri, sub[h], gap, host);
                 if (!fit_host(host, tri, eps))
                     continue;
-                const double sc = search.score(tri, l, subset, guard, true, scale);
-                if (sc > best_tri.score)
+                const double sc = search.score(tri, sub[h], grd[h], true, scale, best_tri.score);
+                if (sc > best_tri.score && !overlaps(tri, host, taken, eps))
                     best_tri = {tri, sc};
             }
             r.draws += 64;
@@ -613,6 +650,10 @@ RansacResult fit_prisms(const SurfaceSamples& samples, const PrismHost& card,
                     }
                 m.inliers = n;
                 r.prisms.push_back(m);
+                Eigen::AlignedBox3d box;
+                for (const Vec3& c : m.corners(host))
+                    box.extend(c);
+                taken.push_back(box);
                 if (m.kind == Prism::Kind::rectangular && host.flat) {
                     const size_t before = r.hosts.size();
                     offer_box_pairs(m, int(r.prisms.size()) - 1, r.hosts);

@@ -205,4 +205,63 @@ ModelMesh l_building_model()
     return m;
 }
 
+ModelMesh sphere_mesh(const Vec3& centre, double radius, int segments, int rings)
+{
+    ModelMesh m;
+    m.vertices.push_back(centre + Vec3(0, 0, -radius));
+    for (int r = 1; r < rings; ++r) {
+        const double phi = M_PI * r / rings - M_PI / 2;
+        for (int k = 0; k < segments; ++k) {
+            const double theta = 2 * M_PI * k / segments;
+            m.vertices.push_back(centre + radius * Vec3(std::cos(phi) * std::cos(theta),
+                                                        std::cos(phi) * std::sin(theta),
+                                                        std::sin(phi)));
+        }
+    }
+    m.vertices.push_back(centre + Vec3(0, 0, radius));
+    const int top = int(m.vertices.size()) - 1;
+    auto at = [&](int r, int k) { return 1 + (r - 1) * segments + (k % segments); };
+    for (int k = 0; k < segments; ++k) {
+        m.triangles.push_back({0, at(1, k + 1), at(1, k)});
+        m.triangles.push_back({top, at(rings - 1, k), at(rings - 1, k + 1)});
+        for (int r = 1; r + 1 < rings; ++r) {
+            m.triangles.push_back({at(r, k), at(r, k + 1), at(r + 1, k + 1)});
+            m.triangles.push_back({at(r, k), at(r + 1, k + 1), at(r + 1, k)});
+        }
+    }
+    return m;
+}
+
+ModelMesh cylinder_mesh(const Vec3& from, const Vec3& to, double radius, int segments)
+{
+    std::vector<Vec2> circle;
+    for (int k = 0; k < segments; ++k)
+        circle.push_back(
+            radius * Vec2(std::cos(2 * M_PI * k / segments), std::sin(2 * M_PI * k / segments)));
+    const double length = (to - from).norm();
+    ModelMesh m = extrude_section(circle, 0, length); // axis along y
+    const Vec3 axis = (to - from) / length;
+    const Mat3 turn = Eigen::Quaterniond::FromTwoVectors(Vec3::UnitY(), axis).toRotationMatrix();
+    return moved(m, turn, 1.0, from);
+}
+
+ModelMesh figure_model()
+{
+    ModelMesh m = join(
+        {sphere_mesh({0, 0, 62}, 14), cylinder_mesh({0, 0, 20}, {0, 0, 50}, 12),
+         cylinder_mesh({0, -8, 0}, {0, -8, 22}, 5), cylinder_mesh({0, 8, 0}, {0, 8, 22}, 5),
+         cylinder_mesh({0, -12, 46}, {0, -34, 30}, 4), cylinder_mesh({0, 12, 46}, {0, 34, 30}, 4)});
+    m.source = "figure";
+    return m;
+}
+
+ModelMesh blob_model()
+{
+    ModelMesh m = sphere_mesh({0, 0, 0}, 1.0, 48, 24);
+    for (Vec3& v : m.vertices)
+        v = Vec3(30 * v.x(), 50 * v.y(), 20 * v.z() + 20);
+    m.source = "blob";
+    return m;
+}
+
 } // namespace popup::testing

@@ -40,4 +40,13 @@ ModelMesh annexed_model();
 /// 40 deep.
 ModelMesh l_building_model();
 
+/// A UV sphere of `radius` at `centre` (segments around, rings from pole to pole).
+ModelMesh sphere_mesh(const Vec3& centre, double radius, int segments = 32, int rings = 16);
+/// A closed cylinder between two points.
+ModelMesh cylinder_mesh(const Vec3& from, const Vec3& to, double radius, int segments = 24);
+/// A figure of spheres and cylinders: body, head, arms and legs, standing on z = 0.
+ModelMesh figure_model();
+/// A squashed sphere (an ellipsoid 60 x 100 x 40) resting on z = 0.
+ModelMesh blob_model();
+
 } // namespace popup::testing

@@ -345,11 +345,11 @@ TEST(FitDesign, CancelledBeforeItStartsThrowsCancelled)
 
 TEST(FitDesign, StoppingProbabilityFollowsSchnabel)
 {
-    // One draw finds a shape of n of N samples with n / (N · hosts · levels · 2^(k−1)).
-    EXPECT_DOUBLE_EQ(draw_probability(100, 1000, 2, 1, 5), 100.0 / (1000 * 5 * 2));
-    EXPECT_DOUBLE_EQ(draw_probability(100, 1000, 4, 2, 5), 100.0 / (1000 * 2 * 5 * 8));
+    // One draw finds a shape of n of N samples with n / (4 · N · hosts · levels · 2^(k−1)).
+    EXPECT_DOUBLE_EQ(draw_probability(100, 1000, 2, 1, 5), 100.0 / (4 * 1000 * 5 * 2));
+    EXPECT_DOUBLE_EQ(draw_probability(100, 1000, 4, 2, 5), 100.0 / (4 * 1000 * 2 * 5 * 8));
     // P(n, s) = 1 − (1 − P)^s.
-    const double p = 500.0 / (1000 * 5 * 2);
+    const double p = 500.0 / (4 * 1000 * 5 * 2);
     EXPECT_NEAR(found_probability(500, 1000, 2, 1, 5, 300), 1 - std::pow(1 - p, 300), 1e-12);
     EXPECT_DOUBLE_EQ(found_probability(500, 1000, 2, 1, 5, 0), 0.0);
 }
@@ -407,5 +407,35 @@ TEST(FitDesign, MechanismsBuildTheirPrimitives)
             EXPECT_LT((built.max() - expected.max()).cwiseAbs().maxCoeff(), tolerance)
                 << model.source << " " << m.name;
         }
+    }
+}
+
+/// Organic models (issue 12 §5): a valid design; every mechanism left out is reported twice, as
+/// a repair and as a mechanism_dropped warning naming it.
+TEST(FitDesign, OrganicModelsGiveValidDesignsAndReportWhatWasDropped)
+{
+    for (const ModelMesh& model : {figure_model(), blob_model()}) {
+        const FitResult r = fitted(model);
+        EXPECT_GE(r.mechanisms.size(), 1u) << model.source;
+        EXPECT_LE(r.mechanisms.size(), 8u) << model.source;
+        EXPECT_GT(r.coverage, 0.0) << model.source;
+        int dropped = 0;
+        for (const FitRepair& repair : r.repairs) {
+            if (repair.action != "dropped" || repair.mechanism.rfind("primitive", 0) == 0)
+                continue;
+            ++dropped;
+            bool warned = false;
+            for (const Diagnostic& d : r.diagnostics)
+                warned |= d.code == DiagnosticCode::mechanism_dropped &&
+                          d.severity == Severity::warning &&
+                          d.message.rfind(repair.mechanism + " ", 0) == 0;
+            EXPECT_TRUE(warned) << repair.mechanism << ": " << repair.reason;
+            for (const FittedMechanism& m : r.mechanisms)
+                EXPECT_NE(m.name, repair.mechanism);
+        }
+        int warnings = 0;
+        for (const Diagnostic& d : r.diagnostics)
+            warnings += d.code == DiagnosticCode::mechanism_dropped;
+        EXPECT_EQ(warnings, dropped) << model.source;
     }
 }

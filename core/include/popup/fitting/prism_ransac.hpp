@@ -57,7 +57,7 @@ struct RansacOptions {
     double threshold = 1.0;    ///< ε: point-to-face tolerance (mm)
     std::uint64_t seed = 1;
     int max_primitives = 8;
-    long max_draws = 400000; ///< safety bound on minimal samples drawn in one search
+    long max_draws = 100000; ///< safety bound on minimal samples drawn in one search
     const CancelFlag* cancel = nullptr;
 };
 
@@ -81,7 +81,8 @@ RansacResult fit_prisms(const SurfaceSamples& samples, const PrismHost& card,
                         const RansacOptions& options);
 
 /// The probability that one localised minimal sample of k points draws a given shape of n of
-/// the N remaining samples when the search runs over `hosts` hosts and `levels` cell sizes.
+/// the N remaining samples when the search runs over `hosts` hosts and `levels` cell sizes:
+/// n / (4 · N · hosts · levels · 2^(k−1)) (a quarter of the samples inside a shape generate it).
 double draw_probability(double n, double N, int k, int hosts, int levels);
 /// P(n, s) = 1 − (1 − draw_probability)^s: the shape was drawn at least once in s draws.
 double found_probability(double n, double N, int k, int hosts, int levels, long draws);
