@@ -542,13 +542,21 @@ RansacResult fit_prisms(const SurfaceSamples& samples, const PrismHost& card,
             r.stopped_by_probability = true;
             break;
         }
-        const std::vector<int> subset = every_kth(remaining, 1500);
+        const std::vector<int> subset = every_kth(remaining, 1000);
         const double scale = N / double(subset.size());
         // Gap allowed along the hinge between samples of one face: a few sample spacings of
         // the scoring subset.
         const double gap = 4.0 * samples.spacing * std::sqrt(scale);
         Cells cells(samples.points, remaining, extent);
         const int H = int(r.hosts.size());
+        // A draw picks its host among those its first sample stands on: at most this many.
+        int hosts_per_sample = 1;
+        for (int i : remaining) {
+            int count = 0;
+            for (int h = 0; h < H; ++h)
+                count += above_host(r.hosts[h], locals[h][i], eps);
+            hosts_per_sample = std::max(hosts_per_sample, count);
+        }
         // Per host, the scoring subset and the guard above it, contiguous in its coordinates.
         std::vector<std::vector<Local>> sub(H), grd(H);
         for (int h = 0; h < H; ++h) {
@@ -637,7 +645,7 @@ RansacResult fit_prisms(const SurfaceSamples& samples, const PrismHost& card,
             const int k = rect_better ? 2 : 4;
             const long s = rect_better ? draws : tri_draws;
             if (best.score >= o.min_points &&
-                found_probability(best.score, N, k, H, kLevels, s) > o.probability) {
+                found_probability(best.score, N, k, hosts_per_sample, kLevels, s) > o.probability) {
                 Prism m = best.prism;
                 const PrismHost& host = r.hosts[m.host];
                 search.refit(m, locals[m.host], remaining, host);
@@ -663,8 +671,8 @@ RansacResult fit_prisms(const SurfaceSamples& samples, const PrismHost& card,
                     }
                 }
                 accepted = true;
-            } else if (found_probability(o.min_points, N, 2, H, kLevels, draws) > o.probability &&
-                       found_probability(o.min_points, N, 4, H, kLevels, tri_draws) >
+            } else if (found_probability(o.min_points, N, 2, hosts_per_sample, kLevels, draws) > o.probability &&
+                       found_probability(o.min_points, N, 4, hosts_per_sample, kLevels, tri_draws) >
                            o.probability) {
                 r.stopped_by_probability = true;
                 return r;
