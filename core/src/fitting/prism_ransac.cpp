@@ -671,7 +671,8 @@ RansacResult fit_prisms(const SurfaceSamples& samples, const PrismHost& card,
                     }
                 }
                 accepted = true;
-            } else if (found_probability(o.min_points, N, 2, hosts_per_sample, kLevels, draws) > o.probability &&
+            } else if (found_probability(o.min_points, N, 2, hosts_per_sample, kLevels, draws) >
+                           o.probability &&
                        found_probability(o.min_points, N, 4, hosts_per_sample, kLevels, tri_draws) >
                            o.probability) {
                 r.stopped_by_probability = true;

@@ -213,6 +213,17 @@ TEST(FitDesign, TruckIsAStackOfBoxFolds)
     EXPECT_ALONG(cab->parameters.at("offset"), 96, f);
     EXPECT_ALONG(cab->parameters.at("width"), 36, f);
     EXPECT_UP(cab->parameters.at("height"), 24, f);
+    // §4.2.2: closed, each box's end creases stand out by its half depth (20): the 16 between
+    // cargo and cab is too little for both, so the panels facing each other come off.
+    EXPECT_EQ(cargo->parameters.at("back"), 0.0);
+    EXPECT_EQ(cargo->parameters.at("front"), 1.0);
+    EXPECT_EQ(cab->parameters.at("front"), 0.0);
+    EXPECT_EQ(cab->parameters.at("back"), 1.0);
+    int trimmed = 0;
+    for (const FitRepair& repair : r.repairs)
+        trimmed += repair.action == "trimmed" &&
+                   (repair.mechanism == cargo->name || repair.mechanism == cab->name);
+    EXPECT_EQ(trimmed, 2);
 }
 
 TEST(FitDesign, LBuildingIsAWingBoxCarryingTheTower)
