@@ -251,27 +251,30 @@ TEST(FitDesign, LBuildingIsAWingBoxCarryingTheTower)
 TEST(FitDesign, TurnedMovedScaledCopyGivesTheSameDesign)
 {
     const FitOptions o;
-    const FitResult a = fitted(house_model(), o);
     const Mat3 turn =
         (Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()) * Eigen::AngleAxisd(2.1, Vec3::UnitX()))
             .toRotationMatrix();
-    const FitResult b = fitted(moved(house_model(), turn, 3.7, Vec3(120, -45, 1000)), o);
-    ASSERT_EQ(a.mechanisms.size(), b.mechanisms.size()) << describe(a) << describe(b);
-    for (size_t i = 0; i < a.mechanisms.size(); ++i) {
-        EXPECT_EQ(a.mechanisms[i].type, b.mechanisms[i].type);
-        EXPECT_EQ(a.mechanisms[i].host, b.mechanisms[i].host);
-        for (const auto& [k, v] : a.mechanisms[i].parameters)
-            EXPECT_NEAR(b.mechanisms[i].parameters.at(k), v, 0.01 * 105) << k;
-    }
-    // model_to_card of the copy, composed with the move, is the original's.
-    Eigen::Matrix4d move = Eigen::Matrix4d::Identity();
-    move.topLeftCorner<3, 3>() = 3.7 * turn;
-    move.topRightCorner<3, 1>() = Vec3(120, -45, 1000);
-    const Eigen::Matrix4d composed = b.model_to_card * move;
-    for (const Vec3& v : house_model().vertices) {
-        const Vec3 pa = (a.model_to_card * v.homogeneous()).head<3>();
-        const Vec3 pb = (composed * v.homogeneous()).head<3>();
-        EXPECT_LT((pa - pb).norm(), 0.01 * 105);
+    for (const ModelMesh& model : {house_model(), l_building_model(), truck_model()}) {
+        const FitResult a = fitted(model, o);
+        const FitResult b = fitted(moved(model, turn, 3.7, Vec3(120, -45, 1000)), o);
+        ASSERT_EQ(a.mechanisms.size(), b.mechanisms.size()) << describe(a) << describe(b);
+        for (size_t i = 0; i < a.mechanisms.size(); ++i) {
+            EXPECT_EQ(a.mechanisms[i].type, b.mechanisms[i].type);
+            EXPECT_EQ(a.mechanisms[i].host, b.mechanisms[i].host);
+            for (const auto& [k, v] : a.mechanisms[i].parameters)
+                EXPECT_NEAR(b.mechanisms[i].parameters.at(k), v, 0.01 * 105)
+                    << model.source << " " << a.mechanisms[i].name << " " << k;
+        }
+        // model_to_card of the copy, composed with the move, is the original's.
+        Eigen::Matrix4d move = Eigen::Matrix4d::Identity();
+        move.topLeftCorner<3, 3>() = 3.7 * turn;
+        move.topRightCorner<3, 1>() = Vec3(120, -45, 1000);
+        const Eigen::Matrix4d composed = b.model_to_card * move;
+        for (const Vec3& v : model.vertices) {
+            const Vec3 pa = (a.model_to_card * v.homogeneous()).head<3>();
+            const Vec3 pb = (composed * v.homogeneous()).head<3>();
+            EXPECT_LT((pa - pb).norm(), 0.01 * 105) << model.source;
+        }
     }
 }
 
