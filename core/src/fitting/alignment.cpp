@@ -197,8 +197,10 @@ Result<Alignment> align_model(const ModelMesh& model, const SurfaceSamples& samp
     const double diagonal = std::max(model.diagonal(), 1e-300);
     const double cell = std::max(2.0 * samples.spacing, 1e-3 * diagonal);
     NearGrid grid(pts, cell);
-    const size_t stride = std::max<size_t>(1, pts.size() / 1500);
-    auto score = [&](double theta) {
+    // The coarse scan mirrors 500 samples, the fine one 1500.
+    const size_t fine_stride = std::max<size_t>(1, pts.size() / 1500);
+    const size_t coarse_stride = std::max<size_t>(1, pts.size() / 500);
+    auto score = [&](double theta, size_t stride) {
         const Vec3 n = std::cos(theta) * e1 + std::sin(theta) * e2;
         double sum = 0;
         size_t count = 0;
@@ -213,7 +215,7 @@ Result<Alignment> align_model(const ModelMesh& model, const SurfaceSamples& samp
     // than deep).
     std::vector<double> scores(180);
     for (int k = 0; k < 180; ++k)
-        scores[k] = score(k * M_PI / 180);
+        scores[k] = score(k * M_PI / 180, coarse_stride);
     const double lowest = *std::min_element(scores.begin(), scores.end());
     auto extent_along = [&](double theta) {
         const Vec3 n = std::cos(theta) * e1 + std::sin(theta) * e2;
@@ -236,8 +238,9 @@ Result<Alignment> align_model(const ModelMesh& model, const SurfaceSamples& samp
         }
     }
     const double coarse = best_theta;
+    best = score(coarse, fine_stride);
     for (int k = -10; k <= 10; ++k) {
-        const double t = coarse + k * M_PI / 1800, s = score(t);
+        const double t = coarse + k * M_PI / 1800, s = score(t, fine_stride);
         if (s < best - 1e-12) {
             best = s;
             best_theta = t;
@@ -247,8 +250,8 @@ Result<Alignment> align_model(const ModelMesh& model, const SurfaceSamples& samp
     // it scores as well (the scan's noise would tilt the card by a tenth of a degree).
     for (double axis_theta : {0.0, M_PI / 2}) {
         const double d = std::remainder(best_theta - axis_theta, M_PI);
-        if (std::abs(d) < 2 * M_PI / 180 && score(axis_theta) <= best * 1.05 + 1e-12) {
-            best = std::min(best, score(axis_theta));
+        if (std::abs(d) < 2 * M_PI / 180 && score(axis_theta, fine_stride) <= best * 1.05 + 1e-12) {
+            best = std::min(best, score(axis_theta, fine_stride));
             best_theta = axis_theta;
         }
     }
