@@ -6,6 +6,7 @@
 #include "fitting/synthetic_models.hpp"
 #include "popup/fitting/fit_design.hpp"
 #include "popup/fitting/prism_ransac.hpp"
+#include "popup/fitting/surface_samples.hpp"
 #include "popup/simulation/check_validity.hpp"
 
 using namespace popup;
@@ -495,4 +496,27 @@ TEST(FitDesign, BlockyModelsAreCloserThanTheThesisBestMean)
                     model.source.c_str(), r.mechanisms.size(), mean);
         EXPECT_LT(mean, 0.0128) << model.source;
     }
+}
+
+TEST(FitDesign, PrimitiveSearchStopsAtItsCancelFlag)
+{
+    const SurfaceSamples samples = sample_surface(cuboid_model(), 2000, 1);
+    PrismHost card;
+    card.length = 210;
+    card.across_min = -148;
+    card.across_max = 148;
+    CancelFlag flag;
+    flag.cancel();
+    RansacOptions o;
+    o.cancel = &flag;
+    EXPECT_THROW(fit_prisms(samples, card, o), Cancelled);
+    o.cancel = nullptr;
+    // Not cancelled, the same search finds the box (the model is in its own frame here: x in
+    // [-20, 20], y in [0, 120], z in [0, 30] stands on the card's pair as it is).
+    const RansacResult r = fit_prisms(samples, card, o);
+    ASSERT_GE(r.prisms.size(), 1u);
+    EXPECT_EQ(r.prisms[0].kind, Prism::Kind::rectangular);
+    EXPECT_NEAR(r.prisms[0].height, 30, 0.02 * 30);
+    EXPECT_NEAR(r.prisms[0].s1, 20, 0.02 * 40);
+    EXPECT_NEAR(r.prisms[0].a1 - r.prisms[0].a0, 120, 0.02 * 120);
 }
