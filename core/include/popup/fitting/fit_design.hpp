@@ -23,7 +23,9 @@ struct FitOptions {
     double card_depth = 148.0; ///< each page (mm)
     double margin = 0.1;       ///< free border of the card, fraction of each card dimension
     int max_mechanisms = 8;
-    double min_shape = 0.05;   ///< smallest primitive, fraction of the model's diagonal (τ)
+    /// Smallest primitive worth finding: a cube of this edge, as a fraction of the model's
+    /// diagonal (τ; in samples, its five visible faces: docs/MATH.md, Fitting).
+    double min_shape = 0.05;
     double probability = 0.99; ///< stop when no better primitive was overlooked with this P
     double threshold = 0.02;   ///< point-to-primitive tolerance, fraction of the diagonal
     int samples = 20000;       ///< pseudo-vertices spread over the surface
