@@ -90,9 +90,8 @@ void mark_nesting(Cdt& cdt)
 /// The patch's area (outline minus holes) as triangles, posed.
 void triangulate_patch(Patch patch, const Pose& pose, Triangles& out)
 {
-    if (patch.outer.size() < 3 || patch.area() <= 0.0)
+    if (patch.outer.size() < 3 || !std::isfinite(patch.derive_frame()) || patch.area() <= 0.0)
         return;
-    patch.derive_frame();
     Cdt cdt;
     auto insert_loop = [&](const Loop2& loop) {
         std::vector<Cdt::Point> ring;
