@@ -363,7 +363,10 @@ Result<FitMetrics> fit_metrics(const ModelMesh& model, const Eigen::Matrix4d& mo
             for (int k = 0; k < n.z(); ++k) {
                 const Point p(grid_lo.x() + (i + 0.5) * h, grid_lo.y() + (j + 0.5) * h,
                               grid_lo.z() + (k + 0.5) * h);
-                const bool a = inside && (*inside)(p) == CGAL::ON_BOUNDED_SIDE;
+                // Outside the model's box no ray needs shooting.
+                const bool in_box = p.x() >= lo.x() && p.x() <= hi.x() && p.y() >= lo.y() &&
+                                    p.y() <= hi.y() && p.z() >= lo.z() && p.z() <= hi.z();
+                const bool a = inside && in_box && (*inside)(p) == CGAL::ON_BOUNDED_SIDE;
                 const bool b = in_prisms(p);
                 in_model += a;
                 in_popup += b;
