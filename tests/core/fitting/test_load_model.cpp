@@ -410,7 +410,7 @@ TEST(FitLoadModel, TruncatedFilesFailWithoutCrashing)
             const fs::path cut =
                 dir / ("cut_" + std::to_string(int(keep * 10)) + "_" + file.filename().string());
             std::ofstream(cut, std::ios::binary) << bytes.substr(0, size_t(keep * bytes.size()));
-            const Result<ModelMesh> read = load_model(cut.string(), LoadModelOptions{2.0});
+            const Result<ModelMesh> read = load_model(cut.string(), LoadModelOptions{1.0});
             // A truncated text file may still hold whole triangles; what comes back is then a
             // checked mesh, else a named error.
             if (read.ok) {
@@ -449,4 +449,17 @@ TEST(FitLoadModel, NonFiniteCoordinatesAndNoFacesAreNamedErrors)
     const Result<ModelMesh> tiny_read = load_model(tiny.string());
     ASSERT_FALSE(tiny_read.ok);
     EXPECT_EQ(tiny_read.diagnostics.front().code, DiagnosticCode::bad_model_size);
+}
+
+TEST(FitLoadModel, AReaderThatNeverReturnsIsStoppedAndNamed)
+{
+    // assimp 5.2's PLY reader loops forever on a header cut short.
+    const fs::path file = scratch("hang") / "cut.ply";
+    std::ofstream(file, std::ios::binary) << "ply\nformat ascii 1.0\ncomment Created b";
+    const Result<ModelMesh> read = load_model(file.string(), LoadModelOptions{0.5});
+    ASSERT_FALSE(read.ok);
+    EXPECT_EQ(read.diagnostics.front().code, DiagnosticCode::unreadable_model);
+    EXPECT_NE(read.diagnostics.front().message.find("did not finish"), std::string::npos)
+        << read.diagnostics.front().message;
+    EXPECT_NE(read.diagnostics.front().message.find(file.string()), std::string::npos);
 }
