@@ -79,3 +79,4 @@ void bind_sheets(pybind11::module_& m);
 void bind_sheet_drawing(pybind11::module_& m);
 void bind_sheet_set(pybind11::module_& m);
 void bind_model_mesh(pybind11::module_& m);
+void bind_profiles(pybind11::module_& m);

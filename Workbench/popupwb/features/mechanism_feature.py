@@ -19,7 +19,7 @@ import contextlib
 import math
 
 
-from popupwb import card_scaffold
+from popupwb import card_scaffold, profiles
 from popupwb.features.no_stale_shape import clears_shape_on_error
 from popupwb.features.one_line_errors import one_line_errors
 from popupwb.stateless_proxy import StatelessProxy
@@ -117,6 +117,7 @@ class MechanismFeature(StatelessProxy):
                 obj.addProperty("App::PropertyDistance", name, self.GROUP, doc)
                 obj.setEditorMode(name, 1)
                 obj.setPropertyStatus(name, "Output")
+        profiles.add_properties(obj)
         if "Version" not in have:
             obj.addProperty(
                 "App::PropertyString", "Version", "Base", "Version of this object's properties"
@@ -188,12 +189,30 @@ class MechanismFeature(StatelessProxy):
             self.follow_host(obj)
             if old_card is not None and old_card is not obj.Card:
                 old_card.touch()  # its other mechanisms move and its verdict is stale
-        if prop in ("Host", "HostPair", "Label") or prop in {p.name for p in self.PARAMETERS}:
+        if prop in ("ProfileSketch", "ProfilePart", "ProfileMode"):
+            self.remember_profile_reference(obj)
+        if (
+            prop in ("Host", "HostPair", "Label")
+            or prop in {p.name for p in self.PARAMETERS}
+            or prop in profiles.PROPERTIES
+        ):
             # Every mechanism after this one may move, and the card's verdict is for another design:
             # recompute the card, and through the Card links all its mechanisms.
             card = obj.Card
             if card is not None:
                 card.touch()
+
+    def remember_profile_reference(self, obj):
+        """The sketch's part without a reference size gets its current one: Scale mode scales
+        from the size the outline was drawn for."""
+        part = (obj.ProfilePart or "").strip()
+        if obj.ProfileSketch is None or not part or obj.Card is None:
+            return
+        try:
+            if profiles.stored(obj).get(part, {}).get("reference") is None:
+                profiles.record_reference(obj, part, card_scaffold.for_card(obj.Card))
+        except ValueError:
+            pass  # a broken Profiles property: execute() reports it
 
     def unsetupObject(self, obj):
         # Removed from the document: the mechanisms after it move, the card's verdict is stale.

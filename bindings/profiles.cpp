@@ -1,0 +1,115 @@
+// Bindings of profiles (outlines cut into patches) and the model silhouettes that make them:
+// declarations and conversions only.
+#include <pybind11/eigen.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "binding_support.hpp"
+#include "popup/model/apply_profile.hpp"
+
+namespace py = pybind11;
+using namespace popup;
+
+namespace {
+
+using Rows2d = Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor>;
+
+Rows2d rows_of(const Loop2& loop)
+{
+    Rows2d m(loop.size(), 2);
+    for (size_t i = 0; i < loop.size(); ++i)
+        m.row(i) = loop[i].transpose();
+    return m;
+}
+
+Loop2 loop_of(const Rows2d& m)
+{
+    Loop2 loop(m.rows());
+    for (Eigen::Index i = 0; i < m.rows(); ++i)
+        loop[i] = m.row(i).transpose();
+    return loop;
+}
+
+std::vector<Rows2d> rows_of(const std::vector<Loop2>& loops)
+{
+    std::vector<Rows2d> out;
+    for (const Loop2& loop : loops)
+        out.push_back(rows_of(loop));
+    return out;
+}
+
+std::vector<Loop2> loops_of(const std::vector<Rows2d>& rows)
+{
+    std::vector<Loop2> out;
+    for (const Rows2d& m : rows)
+        out.push_back(loop_of(m));
+    return out;
+}
+
+} // namespace
+
+void bind_profiles(py::module_& m)
+{
+    py::class_<Profile>(m, "Profile",
+                        "An outline to cut a patch to: outer loop and holes (Nx2, either "
+                        "winding) in the patch's profile frame, mm (docs/DESIGN.md, Profiles)")
+        .def(py::init([](const Rows2d& outer, const std::vector<Rows2d>& holes, std::string name) {
+                 Profile p;
+                 p.outer = loop_of(outer);
+                 p.holes = loops_of(holes);
+                 p.name = std::move(name);
+                 return p;
+             }),
+             py::arg("outer"), py::arg("holes") = std::vector<Rows2d>{},
+             py::arg("name") = "profile")
+        .def_readwrite("name", &Profile::name)
+        .def_property(
+            "outer", [](const Profile& p) { return rows_of(p.outer); },
+            [](Profile& p, const Rows2d& m) { p.outer = loop_of(m); })
+        .def_property(
+            "holes", [](const Profile& p) { return rows_of(p.holes); },
+            [](Profile& p, const std::vector<Rows2d>& h) { p.holes = loops_of(h); });
+
+    py::class_<ProfileFrame>(m, "ProfileFrame",
+                             "A patch's profile frame: origin mid base hinge, u along it, v "
+                             "across the patch, design-state world coordinates (mm)")
+        .def_readonly("patch", &ProfileFrame::patch)
+        .def_readonly("hinge", &ProfileFrame::hinge)
+        .def_property_readonly("origin", [](const ProfileFrame& f) { return Vec3(f.origin); })
+        .def_property_readonly("u", [](const ProfileFrame& f) { return Vec3(f.u); })
+        .def_property_readonly("v", [](const ProfileFrame& f) { return Vec3(f.v); })
+        .def_property_readonly("normal", [](const ProfileFrame& f) { return Vec3(f.normal); });
+
+    py::class_<ProfileApplied>(m, "ProfileApplied")
+        .def_readonly("patch", &ProfileApplied::patch)
+        .def_readonly("frame", &ProfileApplied::frame)
+        .def_readonly("area_before", &ProfileApplied::area_before)
+        .def_readonly("area_after", &ProfileApplied::area_after)
+        .def_readonly("hinges", &ProfileApplied::hinges)
+        .def_readonly("dropped_pieces", &ProfileApplied::dropped_pieces);
+
+    m.def(
+        "profile_frame",
+        [](const Scaffold& s, int patch) { return bindings::unwrap(profile_frame(s, patch)); },
+        py::arg("scaffold"), py::arg("patch"), "The profile frame of patch id `patch`.");
+    m.def(
+        "check_profile", [](const Profile& p) { return bindings::unwrap(checked_profile(p)); },
+        py::arg("profile"),
+        "The profile without repeated points; DesignError (bad_profile) names a bad loop.");
+    m.def(
+        "apply_profile",
+        [](Scaffold& s, int patch, const Profile& p) {
+            return bindings::unwrap(apply_profile(s, patch, p));
+        },
+        py::arg("scaffold"), py::arg("patch"), py::arg("profile"),
+        "Cuts patch id `patch` of `scaffold` (in place) to its outline ∩ the profile and clips "
+        "its folds and slits to the paper left. DesignError (bad_profile, profile_misses_hinge, "
+        "unknown_patch) leaves the scaffold unchanged.");
+    m.def(
+        "apply_profile",
+        [](Scaffold& s, const std::string& mechanism, const std::string& part, const Profile& p) {
+            return bindings::unwrap(apply_profile(s, mechanism, part, p));
+        },
+        py::arg("scaffold"), py::arg("mechanism"), py::arg("part"), py::arg("profile"),
+        "The same for the patch named '<mechanism>.<part>' (e.g. 'B1', 'FL').");
+}
