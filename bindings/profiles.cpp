@@ -5,6 +5,8 @@
 #include <pybind11/stl.h>
 
 #include "binding_support.hpp"
+#include "popup/fitting/depth_layers.hpp"
+#include "popup/fitting/silhouette.hpp"
 #include "popup/model/apply_profile.hpp"
 
 namespace py = pybind11;
@@ -112,4 +114,49 @@ void bind_profiles(py::module_& m)
         },
         py::arg("scaffold"), py::arg("mechanism"), py::arg("part"), py::arg("profile"),
         "The same for the patch named '<mechanism>.<part>' (e.g. 'B1', 'FL').");
+
+    py::class_<Silhouette>(m, "Silhouette",
+                           "A model's orthographic silhouette on a patch, in its profile frame")
+        .def_readonly("profile", &Silhouette::profile, "The largest piece, ready for apply_profile")
+        .def_readonly("area", &Silhouette::area, "mm², of that piece")
+        .def_readonly("left_out", &Silhouette::left_out, "mm², of the smaller pieces")
+        .def_readonly("pieces", &Silhouette::pieces)
+        .def_readonly("triangles", &Silhouette::triangles);
+    m.def(
+        "silhouette_profile",
+        [](const ModelMesh& model, const Scaffold& s, int patch, std::optional<double> depth_near,
+           std::optional<double> depth_far, bool facing_only) {
+            SilhouetteOptions o;
+            o.depth_near = depth_near;
+            o.depth_far = depth_far;
+            o.facing_only = facing_only;
+            return bindings::unwrap(silhouette_profile(model, s, patch, o));
+        },
+        py::arg("model"), py::arg("scaffold"), py::arg("patch"), py::arg("depth_near") = py::none(),
+        py::arg("depth_far") = py::none(), py::arg("facing_only") = false,
+        py::call_guard<py::gil_scoped_release>(),
+        "Orthographic silhouette of `model` (card frame, mm) on patch id `patch`, optionally "
+        "only between depth_near and depth_far (mm along the patch normal); exact union of the "
+        "projected triangles (Clipper).");
+
+    py::class_<DepthLayer>(m, "DepthLayer")
+        .def_readonly("depth", &DepthLayer::depth, "area-weighted mean depth of its faces (mm)")
+        .def_readonly("depth_near", &DepthLayer::depth_near)
+        .def_readonly("depth_far", &DepthLayer::depth_far)
+        .def_readonly("silhouette", &DepthLayer::silhouette);
+    m.def(
+        "depth_layers",
+        [](const ModelMesh& model, const Scaffold& s, int patch, double min_gap, int max_layers,
+           double min_area_fraction) {
+            DepthLayerOptions o;
+            o.min_gap = min_gap;
+            o.max_layers = max_layers;
+            o.min_area_fraction = min_area_fraction;
+            return bindings::unwrap(depth_layers(model, s, patch, o));
+        },
+        py::arg("model"), py::arg("scaffold"), py::arg("patch"), py::arg("min_gap") = 0.0,
+        py::arg("max_layers") = 4, py::arg("min_area_fraction") = 0.02,
+        py::call_guard<py::gil_scoped_release>(),
+        "The model's faces facing patch id `patch`, clustered by depth (1-D gaps wider than "
+        "min_gap, default 2 % of the model's diagonal), nearest first, one silhouette each.");
 }

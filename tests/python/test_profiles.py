@@ -294,3 +294,34 @@ print(json.dumps(dict(proxy=proxy_loaded, before=before, after=after,
     assert result["mode"] == "Scale" and result["sketch"] == "Tree"
     assert result["before"] == pytest.approx(TREE_AREA, abs=1e-5)
     assert result["after"] == pytest.approx(TREE_AREA / 2, abs=1e-5), result["state"]
+
+
+def test_the_silhouette_of_a_meshed_cylinder_is_round(freecad, popup):
+    """A FreeCAD cylinder (r = 10, axis z) meshed with 0.01 mm deviation, seen from above on the
+    card's ground: its silhouette is the inscribed polygon of the meshed circle."""
+    import MeshPart
+    import numpy
+    import Part
+
+    solid = Part.makeCylinder(10, 15, freecad.Vector(50, 100, 5))
+    mesh = MeshPart.meshFromShape(Shape=solid, LinearDeflection=0.01, AngularDeflection=0.05)
+    points, facets = mesh.Topology
+    model = popup.core.ModelMesh(
+        numpy.array([(p.x, p.y, p.z) for p in points]), numpy.array(facets), "cylinder"
+    )
+    card = popup.core.make_card(popup.core.CardParams())
+    silhouette = popup.core.silhouette_profile(model, card, card.ground, facing_only=True)
+    assert silhouette.pieces == 1 and len(silhouette.profile.holes) == 0
+    assert silhouette.area == pytest.approx(math.pi * 100, abs=2 * math.pi * 10 * 0.01)
+    assert silhouette.area < math.pi * 100  # inscribed
+    # The profile frame of the ground: u = W/2 - y, v = x; the centre at (W/2 - 100, 50).
+    outer = numpy.asarray(silhouette.profile.outer)
+    width = popup.core.CardParams().width
+    centre = outer.mean(axis=0)
+    assert centre == pytest.approx([width / 2 - 100, 50], abs=0.05)
+    radii = numpy.linalg.norm(outer - centre, axis=1)
+    assert radii.max() == pytest.approx(10, abs=0.02)
+    layers = popup.core.depth_layers(model, card, card.ground)
+    assert len(layers) == 1 and layers[0].depth == pytest.approx(20, abs=1e-9)  # the top face
+    with pytest.raises(ValueError, match="depth_near must be below depth_far"):
+        popup.core.silhouette_profile(model, card, card.ground, depth_near=3, depth_far=1)
