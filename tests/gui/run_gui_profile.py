@@ -46,7 +46,10 @@ def run():
     normal = riser.normalAt(*riser.Surface.parameter(riser.CenterOfMass))
     result["plain_area"] = riser.Area
     card.ViewObject.Visibility = False  # only the step: its riser and tread
-    view.setViewDirection((-normal.x, -normal.y, -normal.z))
+    # Square to the riser's printed side, world z (away from the ground fold) up on the screen.
+    up = FreeCAD.Vector(0, 0, 1)
+    up = (up - normal * up.dot(normal)).normalize()
+    view.setCameraOrientation(FreeCAD.Rotation(up.cross(normal), up, normal, "ZYX"))
     view.fitAll()
     plain = os.path.join(CONFIG["out_dir"], "plain_square.png")
     save_screenshot(plain)
