@@ -234,8 +234,6 @@ def fitted_outline(profile, mode, size):
 def apply_profiles(obj, scaffold, sizes):
     """Cuts obj's parts to its profiles in `scaffold` (just generated; `sizes` from part_sizes).
     ValueError names the feature, the part and the profile."""
-    import numpy
-
     from popupwb.core import popupcore
 
     for part, profile in sorted(profiles_of(obj).items()):
@@ -245,10 +243,17 @@ def apply_profiles(obj, scaffold, sizes):
                 f"{obj.Label}: profile part = '{part}', must be one of its parts ({choices})"
             )
         outer, holes = fitted_outline(profile, obj.ProfileMode, sizes[part])
+        loops = [outer] + list(holes)
+        short = next((i for i, loop in enumerate(loops) if len(loop) < 3), None)
+        if short is not None:
+            which = "outer loop" if short == 0 else f"hole {short}"
+            raise ValueError(
+                f"{obj.Label}: profile of {part}: its {which} has {len(loops[short])} points, "
+                "needs 3 or more"
+            )
+        # Lists of (u, v) pairs convert to the core's Nx2 arrays.
         core_profile = popupcore.Profile(
-            numpy.array(outer, dtype=float).reshape(-1, 2),
-            [numpy.array(h, dtype=float).reshape(-1, 2) for h in holes],
-            profile["name"],
+            [list(q) for q in outer], [[list(q) for q in h] for h in holes], profile["name"]
         )
         try:
             popupcore.apply_profile(scaffold, obj.Label, part, core_profile)
