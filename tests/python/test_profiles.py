@@ -156,6 +156,8 @@ def test_editing_the_sketch_recomputes_the_riser(doc, popup, tree_on_step):
     import FreeCAD
 
     card, step, sketch = tree_on_step
+    assert popup.validity.run_check(card)["valid"] is True
+    assert card.Validity == "Valid"
     # Move the apex down to v = 26: the crown is 40 mm wide at v = 6, 12 mm at v = 20.
     apex = TREE.index((0, 36))
     sketch.movePoint(apex - 1, 2, FreeCAD.Vector(0, 26, 0))
@@ -163,6 +165,8 @@ def test_editing_the_sketch_recomputes_the_riser(doc, popup, tree_on_step):
     doc.recompute()
     assert not in_error(step), step.getStatusString()
     assert riser_face(step).Area == pytest.approx(TRUNK + (40 + 12) / 2 * 14, abs=1e-5)
+    assert card.Validity == "NotChecked"  # the verdict was for the tree before the edit
+    assert "Touched" not in card.State
 
 
 def round_sketch(doc, popup, radius, name):
@@ -256,6 +260,17 @@ def test_a_stored_profile_on_a_box_top(doc, popup):
     popup.profiles.set_profile(box, "mast", [(0, 0), (1, 0), (0, 1)])
     doc.recompute()
     assert in_error(box) and "must be one of its parts" in box.getStatusString()
+
+
+def test_a_broken_profiles_property_is_named(doc, popup):
+    card, step = stepped_card(doc, popup)
+    step.Profiles = '{"riser": {"outer": [[0, 0], [1]]}}'
+    doc.recompute()
+    assert in_error(step)
+    assert "Step: Profiles['riser'].outer must be a list of [u, v] pairs" in step.getStatusString()
+    step.Profiles = "{not json"
+    doc.recompute()
+    assert in_error(step) and "Step: Profiles is not JSON" in step.getStatusString()
 
 
 def test_old_documents_get_empty_profiles(doc, popup):

@@ -202,6 +202,17 @@ class MechanismFeature(StatelessProxy):
             if card is not None:
                 card.touch()
 
+    @staticmethod
+    def drop_stale_verdict(card, built):
+        """An edited ProfileSketch changes the design through this mechanism, without touching
+        the card: its verdict, for the design before, is dropped here as the card would."""
+        from popupwb import validity
+
+        checked = getattr(card, "CheckedDesign", None)
+        if checked is not None and checked != built.digest:
+            if getattr(card, "Validity", validity.NOT_CHECKED) != validity.NOT_CHECKED:
+                validity.record_verdict(card, validity.NOT_CHECKED)
+
     def remember_profile_reference(self, obj):
         """The sketch's part without a reference size gets its current one: Scale mode scales
         from the size the outline was drawn for."""
@@ -249,6 +260,7 @@ class MechanismFeature(StatelessProxy):
                 f"{card.Label}, the card at the root of its Host chain (set Host again)"
             )
         built = card_scaffold.for_card(card)
+        self.drop_stale_verdict(card, built)
         if built.card_error is None and obj.Host.Name in built.offered:
             with _quiet(obj):
                 set_choices(obj, built.pair_names(obj.Host.Name))

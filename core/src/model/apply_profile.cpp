@@ -57,6 +57,12 @@ std::string title(const Scaffold& s, int id)
     return !p || p->name.empty() ? "patch " + std::to_string(id) : p->name;
 }
 
+// Profile diagnostics name the patch and the parameter at fault.
+DiagnosticSubject about_profile(int patch_id)
+{
+    return {{patch_id}, std::string("Profile"), std::nullopt};
+}
+
 // A fold or a slit of the patch, as a segment to clip.
 struct Edge {
     bool slit = false;
@@ -72,8 +78,10 @@ Result<ProfileApplied> apply_profile(Scaffold& scaffold, int patch_id, const Pro
     const Result<Profile> checked = checked_profile(raw);
     if (!checked.ok) {
         r.fail_with(checked.diagnostics);
-        for (Diagnostic& d : r.diagnostics)
+        for (Diagnostic& d : r.diagnostics) {
             d.patches = {patch_id};
+            d.parameter = "Profile";
+        }
         return r;
     }
     const Profile& profile = checked.value;
@@ -115,7 +123,7 @@ Result<ProfileApplied> apply_profile(Scaffold& scaffold, int patch_id, const Pro
         r.fail(DiagnosticCode::bad_profile,
                what + " leaves no paper: the outline and the patch do not overlap (outlines are "
                       "in the patch's profile frame, docs/DESIGN.md)",
-               about_patches({patch_id}));
+               about_profile(patch_id));
         return r;
     }
 
@@ -146,7 +154,7 @@ Result<ProfileApplied> apply_profile(Scaffold& scaffold, int patch_id, const Pro
                what + " cuts it into " + std::to_string(holding.size()) +
                    " pieces that each hold a fold; a patch is one piece of paper: join them in "
                    "the outline or leave one out",
-               about_patches({patch_id}));
+               about_profile(patch_id));
         return r;
     }
     const size_t kept = holding.empty() ? 0 : holding.front();
@@ -168,7 +176,7 @@ Result<ProfileApplied> apply_profile(Scaffold& scaffold, int patch_id, const Pro
               << title(scaffold, other) << "): the outline must run along at least " << shortest
               << " mm of it, or the patch comes loose";
         }
-        r.fail(DiagnosticCode::profile_misses_hinge, m.str(), about_patches({patch_id}));
+        r.fail(DiagnosticCode::profile_misses_hinge, m.str(), about_profile(patch_id));
         return r;
     }
 
@@ -232,7 +240,7 @@ Result<ProfileApplied> apply_profile(Scaffold& scaffold, int patch_id, const Pro
         r.warn(DiagnosticCode::bad_profile,
                what + " cut off " + std::to_string(done.dropped_pieces) +
                    " piece(s) of paper holding no fold; they were dropped",
-               about_patches({patch_id}));
+               about_profile(patch_id));
     return r;
 }
 

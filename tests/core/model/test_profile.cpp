@@ -229,6 +229,9 @@ TEST(ApplyProfile, ErrorsNameThePatchTheFoldAndTheProfile)
         if (!r.diagnostics.empty()) {
             EXPECT_NE(r.diagnostics.front().message.find(words), std::string::npos)
                 << r.diagnostics.front().message;
+            EXPECT_EQ(r.diagnostics.front().parameter.value_or(""), "Profile");
+            EXPECT_EQ(r.diagnostics.front().patches,
+                      std::vector<int>{patch_named(s, "Step.riser").id});
         }
         EXPECT_EQ(s.patches.size(), before.patches.size());
         EXPECT_NEAR(patch_named(s, "Step.riser").area(), 1200, 1e-9); // unchanged
