@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "popup/mechanisms/box_fold.hpp"
+#include "popup/mechanisms/horizontal_translation.hpp"
 #include "popup/mechanisms/step_fold.hpp"
 #include "popup/model/apply_profile.hpp"
 #include "popup/model/card.hpp"
@@ -288,4 +289,37 @@ TEST(ApplyProfile, AHoleInTheProfileIsAHoleInThePatch)
     EXPECT_NEAR(riser.area(), kTreeOnRiser - 16, 1e-5);
     EXPECT_TRUE(validate_scaffold(s).ok);
     EXPECT_TRUE(check_validity(s).valid());
+}
+
+TEST(ApplyProfile, ASlitKeepsOnlyThePaperAlongIt)
+{
+    // A horizontal translation's slit runs along its riser's nose, 5 mm short of each end
+    // (u -25..25 of the 60 mm riser). The tree leaves the nose u ∈ [-32/3, 32/3]: the slit too.
+    Scaffold s = card();
+    HorizontalTranslationParams p;
+    p.offset = 60;
+    p.width = 60;
+    p.run_ground = 30;
+    p.run_backdrop = 20;
+    p.reach = 40;
+    ASSERT_TRUE(add_horizontal_translation(s, central_fold(s), p, "H").ok);
+    ASSERT_EQ(s.slits.size(), 1u);
+    EXPECT_NEAR((s.slits[0].to - s.slits[0].from).norm(), 50, 1e-9);
+    ASSERT_TRUE(apply_profile(s, "H", "riser", tree()).ok);
+    ASSERT_EQ(s.slits.size(), 1u);
+    EXPECT_NEAR((s.slits[0].to - s.slits[0].from).norm(), 64.0 / 3, 1e-5);
+    EXPECT_NEAR(0.5 * (s.slits[0].from.y() + s.slits[0].to.y()), 90, 1e-5);
+    EXPECT_TRUE(validate_scaffold(s).ok);
+    // A trunk alone (no crown) leaves no paper along the slit: named.
+    Scaffold t = card();
+    ASSERT_TRUE(add_horizontal_translation(t, central_fold(t), p, "H").ok);
+    Profile posts;
+    posts.name = "Posts";
+    posts.outer = {{-30, -1}, {-27, -1}, {-27, 21}, {-30, 21}}; // u -30..-27: beyond the slit
+    const Result<ProfileApplied> r = apply_profile(t, "H", "riser", posts);
+    EXPECT_FALSE(r.ok);
+    ASSERT_FALSE(r.diagnostics.empty());
+    EXPECT_EQ(r.diagnostics.front().code, DiagnosticCode::profile_misses_hinge);
+    EXPECT_NE(r.diagnostics.front().message.find("along slit"), std::string::npos)
+        << r.diagnostics.front().message;
 }
