@@ -84,7 +84,7 @@ void BM_SilhouetteTriangleUnion(benchmark::State& state)
 
 } // namespace
 
-// 10k, 40k and 160k triangles for the core; the baseline only up to 10k (seconds each).
+// 2.5k to 160k triangles for the core; the baseline up to 10k.
 BENCHMARK(BM_SilhouetteBoundaryUnion)
     ->Arg(25)
     ->Arg(50)

@@ -194,3 +194,36 @@ TEST(DepthLayers, TwoTopsAtTwoHeightsAreTwoLayers)
     EXPECT_FALSE(refused.ok);
     EXPECT_EQ(refused.diagnostics.front().parameter.value_or(""), "max_layers");
 }
+
+TEST(Silhouette, OverlappingAndFlippedFacesOfASoupUniteExactly)
+{
+    // Two open squares, unshared vertices: [0, 10]² at z = 5 facing up, [5, 15] × [0, 10] at
+    // z = 8 facing down, and a triangle folded over the first (it lies inside it). Union: 150 mm²
+    // in one piece, seen from above (u = 100 - y, v = x) or below alike.
+    ModelMesh m;
+    auto square = [&](double x0, double x1, double z, bool up) {
+        const int b = int(m.vertices.size());
+        m.vertices.insert(m.vertices.end(), {{x0, 0, z}, {x1, 0, z}, {x1, 10, z}, {x0, 10, z}});
+        if (up) {
+            m.triangles.push_back({b, b + 1, b + 2});
+            m.triangles.push_back({b, b + 2, b + 3});
+        } else {
+            m.triangles.push_back({b, b + 2, b + 1});
+            m.triangles.push_back({b, b + 3, b + 2});
+        }
+    };
+    square(0, 10, 5, true);
+    square(5, 15, 8, false);
+    const int b = int(m.vertices.size());
+    m.vertices.insert(m.vertices.end(), {{1, 1, 6}, {4, 1, 6}, {1, 4, 9}});
+    m.triangles.push_back({b, b + 2, b + 1}); // facing down, over the first square
+    const Scaffold s = card();
+    const Result<Silhouette> r = silhouette_profile(m, s, s.ground);
+    ASSERT_TRUE(r.ok);
+    EXPECT_EQ(r.value.pieces, 1);
+    EXPECT_NEAR(r.value.area, 150, 1e-6);
+    EXPECT_TRUE(r.value.profile.holes.empty());
+    SilhouetteOptions facing;
+    facing.facing_only = true; // only the first square faces up
+    EXPECT_NEAR(silhouette_profile(m, s, s.ground, facing).value.area, 100, 1e-6);
+}
