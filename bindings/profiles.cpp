@@ -8,6 +8,7 @@
 #include "popup/fitting/depth_layers.hpp"
 #include "popup/fitting/silhouette.hpp"
 #include "popup/model/apply_profile.hpp"
+#include "popup/simulation/simulate_fold.hpp"
 
 namespace py = pybind11;
 using namespace popup;
@@ -46,6 +47,21 @@ std::vector<Loop2> loops_of(const std::vector<Rows2d>& rows)
     for (const Rows2d& m : rows)
         out.push_back(loop_of(m));
     return out;
+}
+
+// The pose of patch `patch` in `state` (a FoldState of the same scaffold), if one is given.
+std::optional<Pose> pose_of(const Scaffold& s, int patch, const std::optional<FoldState>& state)
+{
+    if (!state)
+        return std::nullopt;
+    if (state->poses.size() != s.patches.size())
+        throw std::invalid_argument("state has " + std::to_string(state->poses.size()) +
+                                    " poses for " + std::to_string(s.patches.size()) +
+                                    " patches: it is not a state of this scaffold");
+    const int index = s.patch_index(patch);
+    if (index < 0)
+        return std::nullopt; // the core names the unknown patch
+    return state->poses[index];
 }
 
 } // namespace
@@ -125,19 +141,21 @@ void bind_profiles(py::module_& m)
     m.def(
         "silhouette_profile",
         [](const ModelMesh& model, const Scaffold& s, int patch, std::optional<double> depth_near,
-           std::optional<double> depth_far, bool facing_only) {
+           std::optional<double> depth_far, bool facing_only, std::optional<FoldState> state) {
             SilhouetteOptions o;
             o.depth_near = depth_near;
             o.depth_far = depth_far;
             o.facing_only = facing_only;
+            o.pose = pose_of(s, patch, state);
             return bindings::unwrap(silhouette_profile(model, s, patch, o));
         },
         py::arg("model"), py::arg("scaffold"), py::arg("patch"), py::arg("depth_near") = py::none(),
         py::arg("depth_far") = py::none(), py::arg("facing_only") = false,
-        py::call_guard<py::gil_scoped_release>(),
+        py::arg("state") = py::none(), py::call_guard<py::gil_scoped_release>(),
         "Orthographic silhouette of `model` (card frame, mm) on patch id `patch`, optionally "
         "only between depth_near and depth_far (mm along the patch normal); exact union of the "
-        "projected triangles (Clipper).");
+        "projected triangles (Clipper). `state`: a FoldState of the scaffold (simulate_fold) "
+        "where the patch stands as the model does (a step at 90°); default the design state.");
 
     py::class_<DepthLayer>(m, "DepthLayer")
         .def_readonly("depth", &DepthLayer::depth, "area-weighted mean depth of its faces (mm)")
@@ -147,16 +165,18 @@ void bind_profiles(py::module_& m)
     m.def(
         "depth_layers",
         [](const ModelMesh& model, const Scaffold& s, int patch, double min_gap, int max_layers,
-           double min_area_fraction) {
+           double min_area_fraction, std::optional<FoldState> state) {
             DepthLayerOptions o;
             o.min_gap = min_gap;
             o.max_layers = max_layers;
             o.min_area_fraction = min_area_fraction;
+            o.pose = pose_of(s, patch, state);
             return bindings::unwrap(depth_layers(model, s, patch, o));
         },
         py::arg("model"), py::arg("scaffold"), py::arg("patch"), py::arg("min_gap") = 0.0,
         py::arg("max_layers") = 4, py::arg("min_area_fraction") = 0.02,
-        py::call_guard<py::gil_scoped_release>(),
+        py::arg("state") = py::none(), py::call_guard<py::gil_scoped_release>(),
         "The model's faces facing patch id `patch`, clustered by depth (1-D gaps wider than "
-        "min_gap, default 2 % of the model's diagonal), nearest first, one silhouette each.");
+        "min_gap, default 2 % of the model's diagonal), nearest first, one silhouette each; "
+        "`state` as for silhouette_profile.");
 }

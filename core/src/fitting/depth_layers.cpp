@@ -37,7 +37,7 @@ Result<std::vector<DepthLayer>> depth_layers(const ModelMesh& model, const Scaff
     const Patch* patch = scaffold.find_patch(patch_id);
     const std::string on = patch->name.empty() ? "patch " + std::to_string(patch_id) : patch->name;
     const std::vector<ProjectedFace> faces =
-        project_faces(model, frame.value, std::nullopt, std::nullopt, true);
+        project_faces(model, posed(frame.value, options.pose), std::nullopt, std::nullopt, true);
     if (faces.empty()) {
         r.fail(DiagnosticCode::bad_option, "depth layers: no face of the model faces " + on,
                about_patches({patch_id}));

@@ -67,6 +67,18 @@ void collect(const ClipperLib::PolyNode& node, std::vector<Piece>& pieces)
 
 } // namespace
 
+ProfileFrame posed(const ProfileFrame& frame, const std::optional<Pose>& pose)
+{
+    if (!pose)
+        return frame;
+    ProfileFrame f = frame;
+    f.origin = pose->apply(frame.origin);
+    f.u = pose->rotation * frame.u;
+    f.v = pose->rotation * frame.v;
+    f.normal = pose->rotation * frame.normal;
+    return f;
+}
+
 std::vector<ProjectedFace> project_faces(const ModelMesh& model, const ProfileFrame& frame,
                                          std::optional<double> near, std::optional<double> far,
                                          bool facing_only)

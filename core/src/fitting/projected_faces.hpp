@@ -17,6 +17,9 @@ struct ProjectedFace {
     double area = 0.0;  ///< projected area, mm²
 };
 
+/// The frame carried by a rigid motion (the patch posed), or itself.
+ProfileFrame posed(const ProfileFrame& frame, const std::optional<Pose>& pose);
+
 /// Every triangle cut to the depth window [near, far] and projected into the frame; faces whose
 /// projection has no area (seen edge-on) are left out. `facing_only` keeps the triangles whose
 /// normal has a positive component along the frame's normal.

@@ -29,8 +29,9 @@ Result<Silhouette> silhouette_profile(const ModelMesh& model, const Scaffold& sc
     }
     const Patch* patch = scaffold.find_patch(patch_id);
     const std::string on = patch->name.empty() ? "patch " + std::to_string(patch_id) : patch->name;
-    const std::vector<ProjectedFace> faces = project_faces(model, frame.value, options.depth_near,
-                                                           options.depth_far, options.facing_only);
+    const std::vector<ProjectedFace> faces =
+        project_faces(model, posed(frame.value, options.pose), options.depth_near,
+                      options.depth_far, options.facing_only);
     std::vector<const ProjectedFace*> all;
     for (const ProjectedFace& f : faces)
         all.push_back(&f);

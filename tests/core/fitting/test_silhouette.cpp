@@ -7,8 +7,10 @@
 
 #include "popup/fitting/depth_layers.hpp"
 #include "popup/fitting/silhouette.hpp"
+#include "popup/mechanisms/step_fold.hpp"
 #include "popup/model/apply_profile.hpp"
 #include "popup/model/card.hpp"
+#include "popup/simulation/simulate_fold.hpp"
 
 using namespace popup;
 
@@ -59,6 +61,18 @@ void add_wheel(ModelMesh& m, double cx, double cy, double r, double z0, double z
         m.triangles.push_back({bottom, b0, a0});
         m.triangles.push_back({top, a1, b1});
     }
+}
+
+Scaffold card_with_step()
+{
+    Scaffold s = card();
+    StepFoldParams p;
+    p.offset = 60;
+    p.width = 60;
+    p.run_ground = 30;
+    p.run_backdrop = 20;
+    add_step_fold(s, central_fold(s), p, "Step");
+    return s;
 }
 
 double regular_polygon_area(int n, double r)
@@ -226,4 +240,49 @@ TEST(Silhouette, OverlappingAndFlippedFacesOfASoupUniteExactly)
     SilhouetteOptions facing;
     facing.facing_only = true; // only the first square faces up
     EXPECT_NEAR(silhouette_profile(m, s, s.ground, facing).value.area, 100, 1e-6);
+}
+
+TEST(Silhouette, AStandingRiserSeesTheModelWhereItStands)
+{
+    // A step is flat at the design state and stands at 90°: the silhouette is taken with the
+    // riser's pose there (from the simulator). The model: a block 20 (along u) × 40 (along v)
+    // × 10 (along the normal) built in the posed riser's frame, so its silhouette is 20 × 40;
+    // the riser (60 × 20) keeps 20 × 20 of it.
+    Scaffold s = card();
+    StepFoldParams p;
+    p.offset = 60;
+    p.width = 60;
+    p.run_ground = 30;
+    p.run_backdrop = 20;
+    const Result<MechanismParts> step = add_step_fold(s, central_fold(s), p, "Step");
+    ASSERT_TRUE(step.ok);
+    const int riser = step.value.patches[0];
+    const Result<FoldSweep> sweep = simulate_fold(s, {kPi / 2});
+    ASSERT_TRUE(sweep.ok && sweep.value.complete);
+    const Pose pose = sweep.value.states[0].poses[s.patch_index(riser)];
+    const ProfileFrame f = profile_frame(s, riser).value;
+    const Vec3 o = pose.apply(f.origin), u = pose.rotation * f.u, v = pose.rotation * f.v,
+               n = pose.rotation * f.normal;
+    ModelMesh block;
+    const int base = 0;
+    for (int k = 0; k < 8; ++k)
+        block.vertices.push_back(o + (k & 1 ? 10.0 : -10.0) * u + (k & 2 ? 40.0 : 0.0) * v +
+                                 (k & 4 ? 5.0 : -5.0) * n);
+    const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                             {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for (const auto& q : quads) {
+        block.triangles.push_back({base + q[0], base + q[1], base + q[2]});
+        block.triangles.push_back({base + q[0], base + q[2], base + q[3]});
+    }
+    SilhouetteOptions standing;
+    standing.pose = pose;
+    const Result<Silhouette> r = silhouette_profile(block, s, riser, standing);
+    ASSERT_TRUE(r.ok);
+    EXPECT_NEAR(r.value.area, 20 * 40, 1e-4);
+    const Result<ProfileApplied> applied = apply_profile(s, riser, r.value.profile);
+    ASSERT_TRUE(applied.ok) << applied.diagnostics.front().message;
+    EXPECT_NEAR(applied.value.area_after, 20 * 20, 1e-4);
+    // At the design state the riser lies flat: the same block seen along z is another shape.
+    const Result<Silhouette> flat = silhouette_profile(block, card_with_step(), riser);
+    EXPECT_GT(std::abs(flat.value.area - 20 * 40), 1.0);
 }

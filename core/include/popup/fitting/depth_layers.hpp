@@ -1,4 +1,5 @@
 #pragma once
+#include <optional>
 #include <vector>
 
 #include "popup/fitting/silhouette.hpp"
@@ -11,6 +12,7 @@ struct DepthLayerOptions {
     double min_gap = 0.0;
     int max_layers = 4;              ///< at most this many layers: the largest gaps split
     double min_area_fraction = 0.02; ///< layers with less of the facing area merge into the next
+    std::optional<Pose> pose;        ///< the patch's pose, as SilhouetteOptions::pose
 };
 
 /// One layer of a patch's model faces: a silhouette at one depth.

@@ -14,6 +14,10 @@ struct SilhouetteOptions {
     /// Only triangles facing the patch's printed side (normal · patch normal > 0). A closed mesh
     /// has the same silhouette either way, with half the triangles.
     bool facing_only = false;
+    /// Where the patch is when the model is where it is: its pose from the design state (a
+    /// step's riser stands only when the card is open at 90°: pass its pose there, from
+    /// simulate_fold). The profile stays in the patch's own frame, which moves with it.
+    std::optional<Pose> pose;
 };
 
 /// What the model's orthographic silhouette on a patch's plane is made of.
