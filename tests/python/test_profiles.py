@@ -340,3 +340,38 @@ def test_the_silhouette_of_a_meshed_cylinder_is_round(freecad, popup):
     assert len(layers) == 1 and layers[0].depth == pytest.approx(20, abs=1e-9)  # the top face
     with pytest.raises(ValueError, match="depth_near must be below depth_far"):
         popup.core.silhouette_profile(model, card, card.ground, depth_near=3, depth_far=1)
+
+
+def test_a_standing_riser_takes_the_silhouette_where_it_stands(popup):
+    """A block 20 x 40 x 10 mm built square to the riser as it stands at 90° (pose from the
+    simulator): seen from there its silhouette is 20 x 40 mm, of which the 60 x 20 riser keeps
+    20 x 20; seen at the design state (the riser flat) it is something else."""
+    import numpy
+
+    core = popup.core
+    scaffold = core.make_card(core.CardParams())
+    params = core.StepFoldParams()
+    params.offset, params.width, params.run_ground, params.run_backdrop = 60, 60, 30, 20
+    riser = core.add_step_fold(scaffold, core.central_fold(scaffold), params, "Step").patches[0]
+    state = core.simulate_fold(scaffold, [math.pi / 2]).states[0]
+    index = [p.id for p in scaffold.patches].index(riser)
+    rotation, translation = state.rotations[index], state.translations[index]
+    frame = core.profile_frame(scaffold, riser)
+    o = rotation @ frame.origin + translation
+    u, v, n = rotation @ frame.u, rotation @ frame.v, rotation @ frame.normal
+    corners = [
+        o + (10 if k & 1 else -10) * u + (40 if k & 2 else 0) * v + (5 if k & 4 else -5) * n
+        for k in range(8)
+    ]
+    quads = [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]
+    triangles = [t for q in quads for t in ((q[0], q[1], q[2]), (q[0], q[2], q[3]))]
+    block = core.ModelMesh(numpy.array(corners), numpy.array(triangles), "block")
+    standing = core.silhouette_profile(block, scaffold, riser, state=state)
+    assert standing.area == pytest.approx(20 * 40, abs=1e-4)
+    flat = core.silhouette_profile(block, scaffold, riser)
+    assert abs(flat.area - 20 * 40) > 1
+    applied = core.apply_profile(scaffold, riser, standing.profile)
+    assert applied.area_after == pytest.approx(20 * 20, abs=1e-4)
+    other = core.make_card(core.CardParams())
+    with pytest.raises(ValueError, match="not a state of this scaffold"):
+        core.silhouette_profile(block, other, other.ground, state=state)
