@@ -123,6 +123,11 @@ def sketch_loops(obj, sketch):
     import Part
 
     what = f"{obj.Label}: ProfileSketch {sketch.Label}"
+    if getattr(sketch, "TypeId", "") != "Sketcher::SketchObject":
+        raise ValueError(
+            f"{obj.Label}: ProfileSketch = {sketch.Label} ({sketch.TypeId}), must be a Sketcher "
+            "sketch"
+        )
     shape = sketch.Shape.copy()
     shape.Placement = FreeCAD.Placement()  # the sketch's own plane coordinates
     wires = shape.Wires

@@ -230,6 +230,32 @@ def test_an_open_sketch_is_named_in_one_line(doc, popup):
     assert popup.validity.run_check(card)["valid"] is False
 
 
+def test_a_circle_inside_the_tree_is_a_hole(doc, popup, tree_on_step):
+    import FreeCAD
+    import Part
+
+    card, step, sketch = tree_on_step
+    sketch.addGeometry(Part.Circle(FreeCAD.Vector(0, 14, 0), FreeCAD.Vector(0, 0, 1), 2))
+    doc.recompute()
+    assert not in_error(step), step.getStatusString()
+    face = riser_face(step)
+    assert len(face.Wires) == 2
+    # The hole is the circle's inscribed polygon: within its chord deficit of π r².
+    assert face.Area == pytest.approx(TREE_AREA - math.pi * 4, abs=2 * math.pi * 2 * 0.002)
+    assert face.Area > TREE_AREA - math.pi * 4
+
+
+def test_only_a_sketch_can_outline(doc, popup):
+    card, step = stepped_card(doc, popup)
+    box = doc.addObject("Part::Box", "Box")
+    doc.recompute()
+    step.ProfileSketch = box
+    step.ProfilePart = "riser"
+    doc.recompute()
+    assert in_error(step)
+    assert "ProfileSketch = Box (Part::Box), must be a Sketcher sketch" in step.getStatusString()
+
+
 def test_a_crossing_sketch_is_named(doc, popup):
     card, step = stepped_card(doc, popup)
     recompute_ok(doc, card, step)
