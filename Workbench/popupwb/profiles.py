@@ -139,7 +139,10 @@ def sketch_loops(obj, sketch):
             raise ValueError(
                 f"{what}: wire {i + 1} is open; close it (an outline is a closed loop)"
             )
-        points = wire.discretize(Deflection=DEFLECTION)
+        try:
+            points = wire.discretize(Deflection=DEFLECTION)
+        except Part.OCCError as error:
+            raise ValueError(f"{what}: wire {i + 1} cannot be followed ({error})") from None
         loop = [(p.x, p.y) for p in points]
         if len(loop) > 1 and math.dist(loop[0], loop[-1]) < 1e-9:
             loop.pop()

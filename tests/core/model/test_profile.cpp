@@ -323,3 +323,37 @@ TEST(ApplyProfile, ASlitKeepsOnlyThePaperAlongIt)
     EXPECT_NE(r.diagnostics.front().message.find("along slit"), std::string::npos)
         << r.diagnostics.front().message;
 }
+
+TEST(ApplyProfile, ABoxFrontPanelWithChamferedCornersStaysValid)
+{
+    // FL (30 × 30) is built from L: its base hinge is the joint with L (x = 30, z 0..30), so u
+    // runs up that joint from its middle and v across FL toward the end crease. Chamfering the
+    // two corners on the joint by 10 × 10 leaves 800 mm² and 10 mm of the joint.
+    Scaffold s = card();
+    BoxFoldParams p;
+    p.offset = 60;
+    p.width = 80;
+    p.depth_ground = 30;
+    p.depth_backdrop = 30;
+    p.height = 30;
+    ASSERT_TRUE(add_box_fold(s, central_fold(s), p, "B1").ok);
+    const int fl = patch_named(s, "B1.FL").id, l = patch_named(s, "B1.L").id;
+    const Result<ProfileFrame> f = profile_frame(s, fl);
+    ASSERT_TRUE(f.ok);
+    EXPECT_NEAR(std::abs(f.value.u.z()), 1.0, 1e-12); // along the joint: vertical
+    EXPECT_NEAR((f.value.origin - Vec3(30, 60, 15)).norm(), 0, 1e-9);
+    Profile chamfer;
+    chamfer.name = "Chamfer";
+    chamfer.outer = {{-5, 0}, {5, 0}, {15, 10}, {15, 30}, {-15, 30}, {-15, 10}};
+    const Result<ProfileApplied> r = apply_profile(s, fl, chamfer);
+    ASSERT_TRUE(r.ok) << r.diagnostics.front().message;
+    EXPECT_NEAR(r.value.area_after, 800, 1e-5);
+    const auto joint = folds_between(s, fl, l);
+    ASSERT_EQ(joint.size(), 1u);
+    EXPECT_NEAR((joint[0]->to - joint[0]->from).norm(), 10, 1e-5);
+    const ValidityReport v = check_validity(s);
+    EXPECT_TRUE(v.valid());
+    for (const Diagnostic& d : v.diagnostics)
+        ADD_FAILURE() << d.message;
+    expect_laid_out_and_verified(s);
+}
