@@ -104,7 +104,11 @@ void bind_profiles(py::module_& m)
         .def_readonly("area_before", &ProfileApplied::area_before)
         .def_readonly("area_after", &ProfileApplied::area_after)
         .def_readonly("hinges", &ProfileApplied::hinges)
-        .def_readonly("dropped_pieces", &ProfileApplied::dropped_pieces);
+        .def_readonly("dropped_pieces", &ProfileApplied::dropped_pieces)
+        .def_property_readonly(
+            "warnings",
+            [](const ProfileApplied& a) { return bindings::diagnostic_list(a.warnings); },
+            "Warnings as dicts (loose paper dropped)");
 
     m.def(
         "profile_frame",

@@ -242,6 +242,8 @@ def fitted_outline(profile, mode, size):
 def apply_profiles(obj, scaffold, sizes):
     """Cuts obj's parts to its profiles in `scaffold` (just generated; `sizes` from part_sizes).
     ValueError names the feature, the part and the profile."""
+    import FreeCAD
+
     from popupwb.core import popupcore
 
     for part, profile in sorted(profiles_of(obj).items()):
@@ -264,9 +266,11 @@ def apply_profiles(obj, scaffold, sizes):
             [list(q) for q in outer], [[list(q) for q in h] for h in holes], profile["name"]
         )
         try:
-            popupcore.apply_profile(scaffold, obj.Label, part, core_profile)
+            applied = popupcore.apply_profile(scaffold, obj.Label, part, core_profile)
         except ValueError as error:  # DesignError: names the patch, the fold and the profile
             raise ValueError(f"{obj.Label}: {error}") from None
+        for warning in applied.warnings:
+            FreeCAD.Console.PrintWarning(f"{obj.Label}: {warning['message']}\n")
 
 
 def record_reference(obj, part, built):

@@ -401,3 +401,20 @@ def test_a_standing_riser_takes_the_silhouette_where_it_stands(popup):
     other = core.make_card(core.CardParams())
     with pytest.raises(ValueError, match="not a state of this scaffold"):
         core.silhouette_profile(block, other, other.ground, state=state)
+
+
+def test_loose_paper_is_dropped_with_a_warning(popup):
+    """A column over the riser (u -10..10) and an arm (u 20..30, v 8..12) joined to it only
+    outside the riser: the arm holds no fold, so it is dropped and the result says so."""
+    core = popup.core
+    scaffold = core.make_card(core.CardParams())
+    params = core.StepFoldParams()
+    params.offset, params.width, params.run_ground, params.run_backdrop = 60, 60, 30, 20
+    core.add_step_fold(scaffold, core.central_fold(scaffold), params, "Step")
+    arm = [(-10, -5), (40, -5), (40, 12), (20, 12), (20, 8), (35, 8), (35, -3), (10, -3)]
+    arm += [(10, 25), (-10, 25)]
+    applied = core.apply_profile(scaffold, "Step", "riser", core.Profile(arm, [], "Arm"))
+    assert applied.area_after == pytest.approx(20 * 20, abs=1e-5)
+    assert applied.dropped_pieces == 1
+    assert [w["code"] for w in applied.warnings] == ["bad_profile"]
+    assert "Step.riser: profile 'Arm' cut off 1 piece(s)" in applied.warnings[0]["message"]

@@ -241,6 +241,7 @@ Result<ProfileApplied> apply_profile(Scaffold& scaffold, int patch_id, const Pro
                what + " cut off " + std::to_string(done.dropped_pieces) +
                    " piece(s) of paper holding no fold; they were dropped",
                about_profile(patch_id));
+    done.warnings = r.diagnostics;
     return r;
 }
 

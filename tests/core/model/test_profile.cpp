@@ -216,6 +216,7 @@ TEST(ApplyProfile, LoosePaperIsDroppedWithAWarning)
     ASSERT_TRUE(r.ok) << r.diagnostics.front().message;
     EXPECT_EQ(r.value.dropped_pieces, 1);
     EXPECT_TRUE(has(r.diagnostics, DiagnosticCode::bad_profile, Severity::warning));
+    EXPECT_TRUE(has(r.value.warnings, DiagnosticCode::bad_profile, Severity::warning));
     EXPECT_NEAR(r.value.area_after, 20 * 20, 1e-5);
 }
 

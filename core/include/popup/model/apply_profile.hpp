@@ -14,6 +14,7 @@ struct ProfileApplied {
     double area_after = 0.0;  ///< mm²
     std::vector<int> hinges;  ///< ids of the patch's hinges after clipping (new ids for splits)
     int dropped_pieces = 0;   ///< pieces of paper the profile cut off every fold (dropped)
+    Diagnostics warnings;     ///< what the result's warnings say, kept with the value
 };
 
 /// Cuts a patch to a profile: the patch's outline becomes its current outline (what its
