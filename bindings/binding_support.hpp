@@ -82,3 +82,4 @@ void bind_model_mesh(pybind11::module_& m);
 void bind_artwork(pybind11::module_& m);
 void bind_fitting(pybind11::module_& m);
 void bind_model_input(pybind11::module_& m);
+void bind_profiles(pybind11::module_& m);
