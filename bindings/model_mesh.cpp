@@ -84,6 +84,22 @@ void bind_model_mesh(py::module_& m)
             },
             "texture coordinates, one row per vertex, or no rows")
         .def_readwrite("texture", &ModelMesh::texture, "path of the base colour image, or ''")
+        .def_property(
+            "texture_bytes",
+            [](const ModelMesh& mesh) {
+                return py::bytes(reinterpret_cast<const char*>(mesh.texture_bytes.data()),
+                                 mesh.texture_bytes.size());
+            },
+            [](ModelMesh& mesh, const py::bytes& b) {
+                const std::string s = b;
+                mesh.texture_bytes.assign(s.begin(), s.end());
+            },
+            "an embedded texture: the image file's bytes, or raw RGBA8 texels when "
+            "texture_width > 0; b'' when the texture is a file")
+        .def_readwrite("texture_format", &ModelMesh::texture_format,
+                       "extension of the embedded image ('png', 'jpg') or 'rgba8888'")
+        .def_readwrite("texture_width", &ModelMesh::texture_width)
+        .def_readwrite("texture_height", &ModelMesh::texture_height)
         .def_readwrite("base_colour", &ModelMesh::base_colour)
         .def_readwrite("source", &ModelMesh::source, "file or object name, for messages")
         .def("area", &ModelMesh::area)

@@ -124,6 +124,9 @@ PYBIND11_MODULE(popupcore, m)
     bind_sheet_drawing(m);
     bind_model_mesh(m);
     bind_artwork(m);
+    bind_fitting(m);
+    bind_model_input(m);
+    bind_profiles(m);
     m.def("_raise_native", &raise_native, py::arg("kind"), py::arg("message"),
           "Test hook: throws a native exception of family 'std', 'invalid_argument', 'occt' or "
           "'cgal' so the translators can be checked.");

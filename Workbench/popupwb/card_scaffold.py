@@ -20,6 +20,8 @@ import collections
 import hashlib
 import math
 
+from popupwb import profiles
+
 CARD_TYPE = "PopUp::Card"
 CENTRAL_FOLD = "central fold"  # popupcore.central_fold(card).name
 
@@ -142,6 +144,7 @@ def design_key(card):
         parts.append(
             (obj.Name, obj.Label, obj.Proxy.TYPE, obj.Host.Name, obj.HostPair)
             + tuple(_proxy(obj).parameter_values(obj))
+            + (profiles.key_of(obj),)
         )
     return tuple(parts)
 
@@ -156,6 +159,8 @@ class CardScaffold:
     offered           {object name: [popupcore.BasePatchPair]} for the card and built mechanisms
     parts             {object name: popupcore.MechanismParts} for built mechanisms (their host
                       pair and swept span, popupwb.placement)
+    sizes             {object name: {part: (w, h)}}: each part's extent in its profile frame as
+                      generated, before profiles (popupwb.profiles, Scale mode)
     card_error        message when the card itself cannot be built (then nothing is)
     key, digest       the design key and a short stable hash of it
     """
@@ -169,6 +174,7 @@ class CardScaffold:
         self.errors = {}
         self.offered = {}
         self.parts = {}
+        self.sizes = {}
         self.card_error = None
 
     def pair_names(self, name):
@@ -343,6 +349,13 @@ def build(card):
         built.patches[obj.Name] = list(parts.patches)
         built.offered[obj.Name] = list(parts.offered)
         built.parts[obj.Name] = parts
+        built.sizes[obj.Name] = profiles.part_sizes(scaffold, obj.Label, set(parts.patches))
+        try:
+            profiles.apply_profiles(obj, scaffold, built.sizes[obj.Name])
+        except ValueError as error:
+            # The mechanism stays as generated so what stands on it still builds; the card is
+            # not valid while this error stands (validity counts built.errors).
+            built.errors[obj.Name] = str(error)
     return built
 
 

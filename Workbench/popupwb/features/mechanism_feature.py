@@ -19,7 +19,7 @@ import contextlib
 import math
 
 
-from popupwb import card_scaffold
+from popupwb import card_scaffold, profiles
 from popupwb.features.no_stale_shape import clears_shape_on_error
 from popupwb.features.one_line_errors import one_line_errors
 from popupwb.stateless_proxy import StatelessProxy
@@ -117,6 +117,7 @@ class MechanismFeature(StatelessProxy):
                 obj.addProperty("App::PropertyDistance", name, self.GROUP, doc)
                 obj.setEditorMode(name, 1)
                 obj.setPropertyStatus(name, "Output")
+        profiles.add_properties(obj)
         if "Version" not in have:
             obj.addProperty(
                 "App::PropertyString", "Version", "Base", "Version of this object's properties"
@@ -188,12 +189,41 @@ class MechanismFeature(StatelessProxy):
             self.follow_host(obj)
             if old_card is not None and old_card is not obj.Card:
                 old_card.touch()  # its other mechanisms move and its verdict is stale
-        if prop in ("Host", "HostPair", "Label") or prop in {p.name for p in self.PARAMETERS}:
+        if prop in ("ProfileSketch", "ProfilePart", "ProfileMode"):
+            self.remember_profile_reference(obj)
+        if (
+            prop in ("Host", "HostPair", "Label")
+            or prop in {p.name for p in self.PARAMETERS}
+            or prop in profiles.PROPERTIES
+        ):
             # Every mechanism after this one may move, and the card's verdict is for another design:
             # recompute the card, and through the Card links all its mechanisms.
             card = obj.Card
             if card is not None:
                 card.touch()
+
+    @staticmethod
+    def drop_stale_verdict(card, built):
+        """An edited ProfileSketch changes the design through this mechanism, without touching
+        the card: its verdict, for the design before, is dropped here as the card would."""
+        from popupwb import validity
+
+        checked = getattr(card, "CheckedDesign", None)
+        if checked is not None and checked != built.digest:
+            if getattr(card, "Validity", validity.NOT_CHECKED) != validity.NOT_CHECKED:
+                validity.record_verdict(card, validity.NOT_CHECKED)
+
+    def remember_profile_reference(self, obj):
+        """The sketch's part without a reference size gets its current one: Scale mode scales
+        from the size the outline was drawn for."""
+        part = (obj.ProfilePart or "").strip()
+        if obj.ProfileSketch is None or not part or obj.Card is None:
+            return
+        try:
+            if profiles.stored(obj).get(part, {}).get("reference") is None:
+                profiles.record_reference(obj, part, card_scaffold.for_card(obj.Card))
+        except ValueError:
+            pass  # a broken Profiles property: execute() reports it
 
     def unsetupObject(self, obj):
         # Removed from the document: the mechanisms after it move, the card's verdict is stale.
@@ -230,6 +260,7 @@ class MechanismFeature(StatelessProxy):
                 f"{card.Label}, the card at the root of its Host chain (set Host again)"
             )
         built = card_scaffold.for_card(card)
+        self.drop_stale_verdict(card, built)
         if built.card_error is None and obj.Host.Name in built.offered:
             with _quiet(obj):
                 set_choices(obj, built.pair_names(obj.Host.Name))

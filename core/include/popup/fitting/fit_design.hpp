@@ -15,13 +15,17 @@ namespace popup {
 
 /// What the maker chooses for an automatic design from a model (thesis §5.1).
 struct FitOptions {
-    std::optional<Vec3> up;     ///< model direction that becomes the card's z; default: NPCA
-    std::optional<Vec3> facing; ///< model direction that faces the viewer (card's −x side)
-    double card_width = 210.0;  ///< card along its central fold (mm), from the paper
-    double card_depth = 148.0;  ///< each page (mm)
-    double margin = 0.1;        ///< free border of the card, fraction of each card dimension
+    std::optional<Vec3> up; ///< model direction that becomes the card's z; default: NPCA
+    /// Model direction that faces the viewer: it becomes the card's +x, the ground side the
+    /// viewer stands on. Default: the normal of the model's mirror plane containing `up`.
+    std::optional<Vec3> facing;
+    double card_width = 210.0; ///< card along its central fold (mm), from the paper
+    double card_depth = 148.0; ///< each page (mm)
+    double margin = 0.1;       ///< free border of the card, fraction of each card dimension
     int max_mechanisms = 8;
-    double min_shape = 0.05;   ///< smallest primitive, fraction of the model's diagonal (τ)
+    /// Smallest primitive worth finding: a cube of this edge, as a fraction of the model's
+    /// diagonal (τ; in samples, its five visible faces: docs/MATH.md, Fitting).
+    double min_shape = 0.05;
     double probability = 0.99; ///< stop when no better primitive was overlooked with this P
     double threshold = 0.02;   ///< point-to-primitive tolerance, fraction of the diagonal
     int samples = 20000;       ///< pseudo-vertices spread over the surface
@@ -63,7 +67,16 @@ struct FitResult {
     bool valid = false;    ///< the simulator's full validity check passed on `scaffold`
     double coverage = 0.0; ///< fraction of the pseudo-vertices within threshold of the pop-up
     std::vector<std::pair<std::string, double>> timings_s; ///< stage -> seconds, in order
+    /// Warnings (mechanism_dropped, one per repair that dropped something) and, when no design
+    /// passed, the last validity check's findings.
+    Diagnostics diagnostics;
+    double coverage_error = 1.0; ///< thesis eq. 5.1 over the returned mechanisms
+    double symmetry_error = 0.0; ///< mean mirrored-sample distance / the model's diagonal
+    long ransac_draws = 0;       ///< minimal samples drawn by the primitive search
 };
+
+/// The ranges fit_design accepts; one bad_option error per option outside them, naming it.
+Diagnostics check_fit_options(const FitOptions& options);
 
 /// The automatic design of thesis §5.1: align the model, spread pseudo-vertices, fit prisms on
 /// base patch pairs by RANSAC, map each to the mechanism of lowest coverage error, refit, and

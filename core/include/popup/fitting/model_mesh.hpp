@@ -15,8 +15,16 @@ struct ModelMesh {
     std::vector<Vec3> vertices;
     std::vector<std::array<int, 3>> triangles; ///< counter-clockwise seen from outside
     std::vector<Vec3> colours;                 ///< empty, or one RGB in [0, 1] per vertex
-    std::vector<Vec2> uvs;                     ///< empty, or one texture coordinate per vertex
-    std::string texture;                       ///< path of the base colour image, or empty
+    /// Empty, or one texture coordinate per vertex; NaN for a vertex whose material does not
+    /// use `texture` (a model with several materials), whose colour is in `colours` then.
+    std::vector<Vec2> uvs;
+    std::string texture; ///< path of the base colour image, or "*N" for an embedded one, or empty
+    /// An embedded base colour image (GLB, FBX): the file's bytes as stored (`texture_format` is
+    /// its extension, "png", "jpg"), or, when `texture_width` > 0, raw RGBA8 texels row by row.
+    std::vector<unsigned char> texture_bytes;
+    std::string texture_format;
+    int texture_width = 0;
+    int texture_height = 0;
     Vec3 base_colour = Vec3(0.8, 0.8, 0.8);    ///< the material's diffuse colour
     std::string source;                        ///< file or object name, for messages
 

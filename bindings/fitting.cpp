@@ -1,0 +1,134 @@
+// Binding of fit_design, the automatic design from a model (thesis §5.1): conversions only.
+#include <pybind11/eigen.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "binding_support.hpp"
+#include "popup/fitting/fit_design.hpp"
+
+namespace py = pybind11;
+using namespace popup;
+
+namespace {
+
+using Rows3d = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+
+Rows3d rows_of(const std::vector<Vec3>& points)
+{
+    Rows3d m(points.size(), 3);
+    for (size_t i = 0; i < points.size(); ++i)
+        m.row(i) = points[i].transpose();
+    return m;
+}
+
+/// None or a 3-sequence of numbers.
+std::optional<Vec3> direction_of(const py::object& value, const char* name)
+{
+    if (value.is_none())
+        return std::nullopt;
+    std::vector<double> v;
+    try {
+        v = value.cast<std::vector<double>>();
+    } catch (const py::cast_error&) {
+    }
+    if (v.size() != 3)
+        throw bindings::DesignFailure({Diagnostic::error(
+            DiagnosticCode::bad_option,
+            std::string("FitOptions.") + name + " must be None or a sequence of 3 numbers",
+            about_parameter(name))});
+    return Vec3(v[0], v[1], v[2]);
+}
+
+py::object direction_to_python(const std::optional<Vec3>& v)
+{
+    if (!v)
+        return py::none();
+    return py::make_tuple((*v)[0], (*v)[1], (*v)[2]);
+}
+
+} // namespace
+
+void bind_fitting(py::module_& m)
+{
+    py::class_<FitOptions>(m, "FitOptions",
+                           "What the maker chooses for an automatic design from a model: up and "
+                           "facing are None or model directions (3-sequences)")
+        .def(py::init<>())
+        .def_property(
+            "up", [](const FitOptions& o) { return direction_to_python(o.up); },
+            [](FitOptions& o, const py::object& v) { o.up = direction_of(v, "up"); })
+        .def_property(
+            "facing", [](const FitOptions& o) { return direction_to_python(o.facing); },
+            [](FitOptions& o, const py::object& v) { o.facing = direction_of(v, "facing"); })
+        .def_readwrite("card_width", &FitOptions::card_width)
+        .def_readwrite("card_depth", &FitOptions::card_depth)
+        .def_readwrite("margin", &FitOptions::margin)
+        .def_readwrite("max_mechanisms", &FitOptions::max_mechanisms)
+        .def_readwrite("min_shape", &FitOptions::min_shape)
+        .def_readwrite("probability", &FitOptions::probability)
+        .def_readwrite("threshold", &FitOptions::threshold)
+        .def_readwrite("samples", &FitOptions::samples)
+        .def_readwrite("seed", &FitOptions::seed);
+
+    py::class_<FittedPrimitive>(m, "FittedPrimitive")
+        .def_readonly("kind", &FittedPrimitive::kind)
+        .def_property_readonly("corners",
+                               [](const FittedPrimitive& p) { return rows_of(p.corners); })
+        .def_readonly("host", &FittedPrimitive::host)
+        .def_readonly("inliers", &FittedPrimitive::inliers);
+
+    py::class_<FittedMechanism>(m, "FittedMechanism")
+        .def_readonly("type", &FittedMechanism::type)
+        .def_readonly("name", &FittedMechanism::name)
+        .def_readonly("host", &FittedMechanism::host)
+        .def_readonly("parameters", &FittedMechanism::parameters)
+        .def_readonly("primitive", &FittedMechanism::primitive)
+        .def_readonly("coverage_error", &FittedMechanism::coverage_error);
+
+    py::class_<FitRepair>(m, "FitRepair")
+        .def_readonly("mechanism", &FitRepair::mechanism)
+        .def_readonly("action", &FitRepair::action)
+        .def_readonly("reason", &FitRepair::reason);
+
+    py::class_<FitResult>(m, "FitResult")
+        .def_readonly("card", &FitResult::card)
+        .def_property_readonly("model_to_card",
+                               [](const FitResult& r) { return Eigen::Matrix4d(r.model_to_card); })
+        .def_readonly("primitives", &FitResult::primitives)
+        .def_readonly("mechanisms", &FitResult::mechanisms)
+        .def_readonly("repairs", &FitResult::repairs)
+        .def_readonly("scaffold", &FitResult::scaffold)
+        .def_readonly("valid", &FitResult::valid)
+        .def_readonly("coverage", &FitResult::coverage)
+        .def_readonly("coverage_error", &FitResult::coverage_error)
+        .def_readonly("symmetry_error", &FitResult::symmetry_error)
+        .def_readonly("ransac_draws", &FitResult::ransac_draws)
+        .def_readonly("timings", &FitResult::timings_s)
+        .def_property_readonly("diagnostics", [](const FitResult& r) {
+            return bindings::diagnostic_list(r.diagnostics);
+        });
+
+    m.def(
+        "fit_design",
+        [](const ModelMesh& mesh, const FitOptions& options, std::shared_ptr<CancelFlag> cancel) {
+            Result<FitResult> r = fit_design(mesh, options, cancel.get());
+            // No valid design is an answer (valid False, the reasons in diagnostics and
+            // repairs); bad input and bad options are errors.
+            bool only_no_design = !r.ok;
+            for (const Diagnostic& d : r.diagnostics)
+                if (d.severity == Severity::error && d.code != DiagnosticCode::no_design_found)
+                    only_no_design = false;
+            if (only_no_design) {
+                for (const Diagnostic& d : r.diagnostics)
+                    if (d.code == DiagnosticCode::no_design_found)
+                        r.value.diagnostics.push_back(d);
+                return r.value;
+            }
+            return bindings::unwrap(std::move(r));
+        },
+        py::arg("mesh"), py::arg("options") = FitOptions(), py::arg("cancel") = nullptr,
+        py::call_guard<py::gil_scoped_release>(),
+        "The automatic design of thesis §5.1 (DesignError on bad input or options; valid False "
+        "with a no_design_found diagnostic when nothing valid remains; popupcore.Cancelled when "
+        "cancel is set).");
+}

@@ -1,0 +1,42 @@
+#pragma once
+#include <optional>
+
+#include "popup/fitting/model_mesh.hpp"
+#include "popup/fitting/surface_samples.hpp"
+#include "popup/model/result.hpp"
+
+namespace popup {
+
+/// Where the model goes on the card (thesis §5.1.1): which model directions become the card's
+/// axes, where its symmetry plane is, and the uniform scale that fits it on the card.
+struct Alignment {
+    Eigen::Matrix4d model_to_card = Eigen::Matrix4d::Identity(); ///< model units to card mm
+    Vec3 up = Vec3::UnitZ();      ///< model direction that became card z (unit)
+    Vec3 facing = Vec3::UnitX();  ///< model direction that became card x, toward the viewer
+    double scale = 1.0;           ///< card mm per model unit
+    double symmetry_error = 0.0;  ///< mean distance of the mirrored samples to the model,
+                                  ///< divided by its diagonal (0: mirror-symmetric)
+    Eigen::AlignedBox3d card_box; ///< the model's tight bounding box in the card's frame (mm)
+};
+
+/// What the card offers the model: width along the fold, each page's depth, the free border.
+struct CardRoom {
+    double width = 210.0;
+    double depth = 148.0;
+    double margin = 0.1; ///< fraction of each card dimension kept free on every side
+};
+
+/// NPCA up axis (the principal axis of the area-weighted normal covariance, or `up`), the mirror
+/// plane containing it (its normal becomes card x unless `facing` is given), the tight box in
+/// that frame and the scale that keeps the model inside the closed card. `samples` are the
+/// model's pseudo-vertices in model units, used to score mirror planes. Errors name `up` or
+/// `facing` when they are zero, not finite, or parallel to each other.
+Result<Alignment> align_model(const ModelMesh& model, const SurfaceSamples& samples,
+                              const std::optional<Vec3>& up, const std::optional<Vec3>& facing,
+                              const CardRoom& room);
+
+/// NPCA: the area-weighted covariance Σ A_i n_i n_iᵀ of the face normals and its eigenvectors,
+/// largest eigenvalue first (columns).
+Mat3 normal_principal_axes(const ModelMesh& model, Vec3* eigenvalues = nullptr);
+
+} // namespace popup

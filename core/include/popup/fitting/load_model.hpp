@@ -1,0 +1,27 @@
+#pragma once
+#include <string>
+
+#include "popup/fitting/model_mesh.hpp"
+#include "popup/model/result.hpp"
+
+namespace popup {
+
+struct LoadModelOptions {
+    /// The reader runs in a child process stopped after this long (a malformed file can make
+    /// assimp loop forever).
+    double timeout_s = 120.0;
+};
+
+/// Reads a mesh file through assimp (OBJ, STL ASCII and binary, PLY, OFF, glTF/GLB, FBX, Collada,
+/// 3MF, and whatever else assimp reads) into one triangle mesh in the file's units: the node
+/// hierarchy flattened with every node transform applied, polygons triangulated, identical
+/// vertices joined, points and lines dropped. Appearance: vertex colours (first set), texture
+/// coordinates (first channel), the first base-colour or diffuse texture (a path joined to the
+/// model's folder, or an embedded image's bytes) and the diffuse colour of the largest material;
+/// materials of different colours without vertex colours become per-vertex colours.
+/// assimp runs in a child process (fork), so a file that makes it abort or hang is an error,
+/// not the end of the caller. Errors: unreadable_model naming the path and assimp's message (or
+/// the crash, or the timeout), then check_model's.
+Result<ModelMesh> load_model(const std::string& path, const LoadModelOptions& options = {});
+
+} // namespace popup

@@ -1,0 +1,239 @@
+#include "popup/fitting/fit_design.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <set>
+#include <sstream>
+
+#include "popup/fitting/alignment.hpp"
+#include "popup/fitting/design_repair.hpp"
+#include "popup/fitting/mechanism_mapping.hpp"
+#include "popup/fitting/prism_ransac.hpp"
+#include "popup/fitting/surface_samples.hpp"
+#include "popup/simulation/check_validity.hpp"
+
+namespace popup {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+class StageTimer {
+public:
+    explicit StageTimer(FitResult& r) : r_(r), start_(Clock::now()) {}
+    void lap(const std::string& stage)
+    {
+        const auto now = Clock::now();
+        r_.timings_s.push_back({stage, std::chrono::duration<double>(now - start_).count()});
+        start_ = now;
+    }
+
+private:
+    FitResult& r_;
+    Clock::time_point start_;
+};
+
+void range(Diagnostics& out, const std::string& option, double value, bool ok,
+           const std::string& allowed)
+{
+    if (ok)
+        return;
+    std::ostringstream m;
+    m << "FitOptions." << option << " = " << value << ", must be " << allowed;
+    out.push_back(Diagnostic::error(DiagnosticCode::bad_option, m.str(), about_parameter(option)));
+}
+
+/// Distance from x to a planar patch (its outline, holes ignored: a patch covers its face).
+double distance_to_patch(const Patch& patch, const std::vector<Vec2>& outline, const Vec3& x)
+{
+    const double off = (x - patch.origin).dot(patch.normal);
+    const Vec2 q = patch.to_local(x);
+    bool inside = false;
+    double edge = 1e300;
+    for (size_t i = 0, j = outline.size() - 1; i < outline.size(); j = i++) {
+        const Vec2 &a = outline[j], &b = outline[i];
+        if ((a.y() > q.y()) != (b.y() > q.y()) &&
+            q.x() < a.x() + (q.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y()))
+            inside = !inside;
+        const Vec2 d = b - a;
+        const double t = std::clamp((q - a).dot(d) / std::max(d.squaredNorm(), 1e-300), 0.0, 1.0);
+        edge = std::min(edge, (a + t * d - q).norm());
+    }
+    return inside ? std::abs(off) : std::hypot(off, edge);
+}
+
+double coverage_of(const Scaffold& scaffold, const SurfaceSamples& samples, double eps)
+{
+    std::vector<Patch> patches = scaffold.patches;
+    std::vector<std::vector<Vec2>> outlines;
+    for (Patch& p : patches) {
+        p.derive_frame();
+        std::vector<Vec2> o;
+        for (const Vec3& v : p.outer)
+            o.push_back(p.to_local(v));
+        outlines.push_back(o);
+    }
+    size_t near = 0;
+    for (const Vec3& x : samples.points)
+        for (size_t k = 0; k < patches.size(); ++k)
+            if (distance_to_patch(patches[k], outlines[k], x) <= eps) {
+                ++near;
+                break;
+            }
+    return samples.points.empty() ? 0.0 : double(near) / double(samples.points.size());
+}
+
+} // namespace
+
+Diagnostics check_fit_options(const FitOptions& o)
+{
+    Diagnostics d;
+    range(d, "card_width", o.card_width, o.card_width >= 20 && o.card_width <= 2000,
+          ">= 20 and <= 2000 mm");
+    range(d, "card_depth", o.card_depth, o.card_depth >= 20 && o.card_depth <= 2000,
+          ">= 20 and <= 2000 mm");
+    range(d, "margin", o.margin, o.margin >= 0 && o.margin < 0.4, ">= 0 and < 0.4");
+    range(d, "max_mechanisms", o.max_mechanisms, o.max_mechanisms >= 1 && o.max_mechanisms <= 32,
+          "1 to 32");
+    range(d, "min_shape", o.min_shape, o.min_shape > 0 && o.min_shape < 1,
+          "> 0 and < 1 (a fraction of the model's diagonal)");
+    range(d, "probability", o.probability, o.probability > 0 && o.probability < 1, "> 0 and < 1");
+    range(d, "threshold", o.threshold, o.threshold > 0 && o.threshold <= 0.2,
+          "> 0 and <= 0.2 (a fraction of the model's diagonal)");
+    range(d, "samples", o.samples, o.samples >= 500 && o.samples <= 2000000, "500 to 2000000");
+    return d;
+}
+
+Result<FitResult> fit_design(const ModelMesh& model, const FitOptions& options,
+                             const CancelFlag* cancel)
+{
+    Result<FitResult> result;
+    Diagnostics bad = check_fit_options(options);
+    if (!bad.empty()) {
+        result.fail_with(bad);
+        return result;
+    }
+    const Result<ModelMesh> checked = check_model(model);
+    if (!checked.ok) {
+        result.fail_with(checked.diagnostics);
+        return result;
+    }
+    stop_if_cancelled(cancel, "fit_design");
+    FitResult& r = result.value;
+    StageTimer timer(r);
+
+    // Alignment (§5.1.1): NPCA up, the mirror plane, the bounding box and the scale.
+    const SurfaceSamples coarse =
+        sample_surface(model, std::min(options.samples, 4000), options.seed);
+    CardRoom room{options.card_width, options.card_depth, options.margin};
+    const Result<Alignment> aligned = align_model(model, coarse, options.up, options.facing, room);
+    if (!aligned.ok) {
+        result.fail_with(aligned.diagnostics);
+        return result;
+    }
+    const Alignment& a = aligned.value;
+    r.model_to_card = a.model_to_card;
+    r.symmetry_error = a.symmetry_error;
+    r.card.width = options.card_width;
+    r.card.depth = options.card_depth;
+    timer.lap("align");
+    stop_if_cancelled(cancel, "fit_design: alignment");
+
+    // Pseudo-vertices, in the card's frame.
+    const SurfaceSamples samples =
+        transformed(sample_surface(model, options.samples, options.seed + 1), a.model_to_card);
+    timer.lap("sample");
+    stop_if_cancelled(cancel, "fit_design: sampling");
+
+    // Volumetric RANSAC on the base patch pairs, from the central fold.
+    const double diagonal = a.scale * model.diagonal();
+    PrismHost card;
+    card.name = "central fold";
+    card.origin = Vec3::Zero();
+    card.length = options.card_width;
+    card.across_min = -options.card_depth;
+    card.across_max = options.card_depth;
+    RansacOptions ro;
+    ro.threshold = options.threshold * diagonal;
+    // τ in samples: the five visible faces of a cube of edge min_shape·diagonal.
+    const double tau = options.min_shape * diagonal;
+    ro.min_points =
+        std::max(8.0, 5 * tau * tau / std::max(samples.spacing * samples.spacing, 1e-300));
+    ro.probability = options.probability;
+    ro.seed = options.seed;
+    ro.max_primitives = options.max_mechanisms;
+    ro.cancel = cancel;
+    const RansacResult fit = fit_prisms(samples, card, ro);
+    r.ransac_draws = fit.draws;
+    timer.lap("fit_primitives");
+    stop_if_cancelled(cancel, "fit_design: fitting primitives");
+
+    // Table 5.1 mapping by coverage error, then the §4.2.2 refit.
+    Mapping mapping = map_mechanisms(fit);
+    for (int k : mapping.unmapped) {
+        const std::string name = "primitive " + std::to_string(k + 1);
+        r.repairs.push_back({name, "dropped", "no mechanism of Table 5.1 fits its host"});
+    }
+    std::vector<MechanismPlan> plans = mapping.plans;
+    for (const auto& [name, why] : refit_for_foldability(plans))
+        r.repairs.push_back({name, "trimmed", why});
+    timer.lap("map");
+    stop_if_cancelled(cancel, "fit_design: mapping");
+
+    // Validity: build, check everything, drop what the simulator refuses, check again.
+    RepairOutcome outcome = build_until_valid(r.card, plans, cancel);
+    for (const FitRepair& repair : outcome.repairs)
+        r.repairs.push_back(repair);
+    for (const Diagnostic& d : outcome.warnings)
+        r.diagnostics.push_back(d);
+    const ValidityReport& report = outcome.report;
+    timer.lap("validate");
+
+    r.scaffold = outcome.scaffold;
+    r.valid = outcome.valid;
+    std::vector<MechanismPlan> kept;
+    for (size_t i = 0; i < plans.size(); ++i)
+        if (outcome.kept[i])
+            kept.push_back(plans[i]);
+    for (const auto& p : kept) {
+        FittedMechanism m;
+        m.type = p.type;
+        m.name = p.name;
+        m.host = p.host;
+        m.parameters = p.parameters;
+        m.primitive =
+            std::string(fit.prisms[p.prism].kind_name()) + " prism " + std::to_string(p.prism + 1);
+        m.coverage_error = p.coverage_error();
+        r.mechanisms.push_back(m);
+    }
+    r.coverage_error = coverage_error(kept);
+    // Primitives for previews, named by the pairs their mechanisms offer where mapped.
+    std::map<int, std::string> host_names;
+    for (const auto& p : plans)
+        host_names[p.prism] = p.host;
+    for (size_t k = 0; k < fit.prisms.size(); ++k) {
+        const Prism& m = fit.prisms[k];
+        FittedPrimitive fp;
+        fp.kind = m.kind_name();
+        fp.corners = m.corners(fit.hosts[m.host]);
+        fp.host = host_names.count(int(k)) ? host_names[int(k)] : fit.hosts[m.host].name;
+        fp.inliers = m.inliers;
+        r.primitives.push_back(fp);
+    }
+    r.coverage = coverage_of(r.scaffold, samples, ro.threshold);
+    for (const Diagnostic& d : r.diagnostics)
+        result.diagnostics.push_back(d);
+    if (!r.valid) {
+        for (const Diagnostic& d : report.diagnostics)
+            r.diagnostics.push_back(d);
+        result.fail(DiagnosticCode::no_design_found,
+                    (model.source.empty() ? std::string("the model") : model.source) +
+                        ": no valid design found (" + std::to_string(fit.prisms.size()) +
+                        " primitives fitted, " + std::to_string(plans.size()) +
+                        " mapped, every one dropped; see the repairs)");
+    }
+    timer.lap("report");
+    return result;
+}
+
+} // namespace popup

@@ -1,0 +1,430 @@
+#include "popup/fitting/load_model.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <tuple>
+
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <assimp/Importer.hpp>
+#include <assimp/config.h>
+#include <assimp/material.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+namespace popup {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+Vec3 rgb(const aiColor4D& c)
+{
+    return Vec3(c.r, c.g, c.b).cwiseMax(0.0).cwiseMin(1.0);
+}
+
+/// The material's base colour (glTF's PBR factor) or else its diffuse colour; grey without either.
+Vec3 material_colour(const aiMaterial* material)
+{
+    aiColor4D c;
+    if (material && aiGetMaterialColor(material, AI_MATKEY_BASE_COLOR, &c) == AI_SUCCESS)
+        return rgb(c);
+    if (material && aiGetMaterialColor(material, AI_MATKEY_COLOR_DIFFUSE, &c) == AI_SUCCESS)
+        return rgb(c);
+    return Vec3(0.8, 0.8, 0.8);
+}
+
+/// The material's base-colour texture, else its diffuse one, as written in the file ("" if none).
+std::string material_texture(const aiMaterial* material)
+{
+    if (!material)
+        return {};
+    aiString path;
+    for (aiTextureType type : {aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE})
+        if (material->GetTextureCount(type) > 0 &&
+            material->GetTexture(type, 0, &path) == AI_SUCCESS && path.length > 0)
+            return path.C_Str();
+    return {};
+}
+
+double mesh_area(const aiMesh* mesh)
+{
+    double area = 0.0;
+    for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+        const aiFace& face = mesh->mFaces[f];
+        if (face.mNumIndices != 3)
+            continue;
+        const aiVector3D a = mesh->mVertices[face.mIndices[0]];
+        const aiVector3D e1 = mesh->mVertices[face.mIndices[1]] - a;
+        const aiVector3D e2 = mesh->mVertices[face.mIndices[2]] - a;
+        area += 0.5 * (e1 ^ e2).Length();
+    }
+    return area;
+}
+
+/// Fills the mesh's texture fields from the scene: an embedded image keeps its bytes, a file
+/// is named relative to the model's folder.
+void attach_texture(const aiScene* scene, const std::string& model_path, const std::string& written,
+                    ModelMesh& mesh)
+{
+    if (const aiTexture* embedded = scene->GetEmbeddedTexture(written.c_str())) {
+        mesh.texture = written;
+        const auto* bytes = reinterpret_cast<const unsigned char*>(embedded->pcData);
+        if (embedded->mHeight == 0) { // a compressed file (png, jpg) of mWidth bytes
+            mesh.texture_bytes.assign(bytes, bytes + embedded->mWidth);
+            mesh.texture_format = embedded->achFormatHint;
+        } else { // raw aiTexel (BGRA) texels
+            mesh.texture_width = int(embedded->mWidth);
+            mesh.texture_height = int(embedded->mHeight);
+            mesh.texture_format = "rgba8888";
+            const size_t n = size_t(embedded->mWidth) * embedded->mHeight;
+            mesh.texture_bytes.reserve(4 * n);
+            for (size_t i = 0; i < n; ++i) {
+                const aiTexel& t = embedded->pcData[i];
+                mesh.texture_bytes.insert(mesh.texture_bytes.end(), {t.r, t.g, t.b, t.a});
+            }
+        }
+        return;
+    }
+    fs::path texture(written);
+    if (texture.is_relative())
+        texture = fs::path(model_path).parent_path() / texture;
+    mesh.texture = texture.lexically_normal().string();
+}
+
+/// Removes faces without corners or with a corner index out of range (a truncated or odd file:
+/// assimp 5.2's binary PLY reader gives corner-less faces) and sets each mesh's primitive types
+/// from what remains, which the triangulation step trusts.
+void drop_broken_faces(aiScene* scene)
+{
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+        aiMesh* mesh = scene->mMeshes[m];
+        if (!mesh || !mesh->mFaces)
+            continue;
+        unsigned kept = 0, types = 0;
+        for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+            aiFace& face = mesh->mFaces[f];
+            bool usable = face.mNumIndices > 0 && face.mIndices;
+            for (unsigned k = 0; usable && k < face.mNumIndices; ++k)
+                usable = face.mIndices[k] < mesh->mNumVertices;
+            if (!usable)
+                continue;
+            types |= face.mNumIndices == 1   ? aiPrimitiveType_POINT
+                     : face.mNumIndices == 2 ? aiPrimitiveType_LINE
+                     : face.mNumIndices == 3 ? aiPrimitiveType_TRIANGLE
+                                             : aiPrimitiveType_POLYGON;
+            if (kept != f)
+                std::swap(mesh->mFaces[kept], face); // aiFace frees its indices itself
+            ++kept;
+        }
+        mesh->mNumFaces =
+            kept; // the dropped faces stay allocated past the end until the scene goes
+        mesh->mPrimitiveTypes = types;
+    }
+}
+
+/// Reads the file into `mesh`; returns why not ("" when read). Runs in the child process.
+std::string read_with_assimp(const std::string& path, ModelMesh& mesh)
+{
+    Assimp::Importer importer;
+    // Points and lines carry no surface: drop them rather than fail on them.
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
+                                aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    // A ModelMesh has no normals: drop them first, so corners split by face normals (STL) join.
+    importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS,
+                                aiComponent_NORMALS | aiComponent_TANGENTS_AND_BITANGENTS);
+    const unsigned steps = aiProcess_RemoveComponent | aiProcess_Triangulate |
+                           aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
+                           aiProcess_SortByPType | aiProcess_ValidateDataStructure;
+    const aiScene* scene = nullptr;
+    try {
+        // Read first, then drop faces no step can handle, then post-process: assimp's steps
+        // abort the process (ai_assert) on some faces its own readers deliver.
+        scene = importer.ReadFile(path, 0);
+        if (scene) {
+            drop_broken_faces(const_cast<aiScene*>(scene));
+            scene = importer.ApplyPostProcessing(steps);
+        }
+    } catch (const std::exception& e) {
+        return (std::string("assimp failed: ") + e.what());
+    }
+    if (!scene)
+        return (std::string("assimp could not read it: ") + importer.GetErrorString());
+    if (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE)
+        return ("assimp read an incomplete scene (" + std::string(importer.GetErrorString()) + ")");
+
+    mesh.source = path;
+    std::vector<const aiMesh*> parts;
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m)
+        if (scene->mMeshes[m] && (scene->mMeshes[m]->mPrimitiveTypes & aiPrimitiveType_TRIANGLE))
+            parts.push_back(scene->mMeshes[m]);
+    auto material_of = [&](const aiMesh* part) -> const aiMaterial* {
+        return part->mMaterialIndex < scene->mNumMaterials ? scene->mMaterials[part->mMaterialIndex]
+                                                           : nullptr;
+    };
+
+    // Which appearance the merged mesh carries: the first texture any material uses; vertex
+    // colours when a part has them or the parts' materials differ in colour.
+    std::string texture;
+    bool any_colours = false, any_uvs = false;
+    std::vector<std::tuple<double, double, double>> distinct;
+    double largest = -1.0;
+    for (const aiMesh* part : parts) {
+        const aiMaterial* material = material_of(part);
+        if (texture.empty())
+            texture = material_texture(material);
+        any_colours = any_colours || part->HasVertexColors(0);
+        any_uvs = any_uvs || part->HasTextureCoords(0);
+        const Vec3 c = material_colour(material);
+        const auto key = std::make_tuple(c.x(), c.y(), c.z());
+        if (std::find(distinct.begin(), distinct.end(), key) == distinct.end())
+            distinct.push_back(key);
+        const double area = mesh_area(part);
+        if (area > largest) {
+            largest = area;
+            mesh.base_colour = c;
+        }
+    }
+    const bool keep_colours = any_colours || distinct.size() > 1;
+    if (!texture.empty())
+        attach_texture(scene, path, texture, mesh);
+
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (const aiMesh* part : parts) {
+        const int offset = int(mesh.vertices.size());
+        const aiMaterial* material = material_of(part);
+        const Vec3 colour = material_colour(material);
+        // Texture coordinates count only where they index `texture` (or when nothing is textured).
+        const bool uv_here =
+            part->HasTextureCoords(0) && (texture.empty() || material_texture(material) == texture);
+        for (unsigned v = 0; v < part->mNumVertices; ++v) {
+            const aiVector3D& p = part->mVertices[v];
+            mesh.vertices.emplace_back(p.x, p.y, p.z);
+            if (keep_colours)
+                mesh.colours.push_back(part->HasVertexColors(0) ? rgb(part->mColors[0][v])
+                                                                : colour);
+            if (any_uvs)
+                mesh.uvs.push_back(
+                    uv_here ? Vec2(part->mTextureCoords[0][v].x, part->mTextureCoords[0][v].y)
+                            : Vec2(nan, nan));
+        }
+        for (unsigned f = 0; f < part->mNumFaces; ++f) {
+            const aiFace& face = part->mFaces[f];
+            if (face.mNumIndices == 3)
+                mesh.triangles.push_back({offset + int(face.mIndices[0]),
+                                          offset + int(face.mIndices[1]),
+                                          offset + int(face.mIndices[2])});
+        }
+    }
+    return {};
+}
+
+// The mesh crosses from the reading child to the caller as plain bytes.
+struct Writer {
+    std::string bytes;
+    template <class T> void put(const T& value)
+    {
+        bytes.append(reinterpret_cast<const char*>(&value), sizeof(T));
+    }
+    template <class T> void put_all(const std::vector<T>& values)
+    {
+        put(std::uint64_t(values.size()));
+        bytes.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
+    }
+    void put_text(const std::string& text)
+    {
+        put(std::uint64_t(text.size()));
+        bytes.append(text);
+    }
+};
+
+struct Reader {
+    const std::string& bytes;
+    size_t at = 0;
+    bool fine = true;
+    template <class T> T get()
+    {
+        T value{};
+        if (at + sizeof(T) > bytes.size()) {
+            fine = false;
+            return value;
+        }
+        std::memcpy(static_cast<void*>(&value), bytes.data() + at, sizeof(T));
+        at += sizeof(T);
+        return value;
+    }
+    template <class T> void get_all(std::vector<T>& values)
+    {
+        const auto n = get<std::uint64_t>();
+        if (!fine || n > (bytes.size() - at) / sizeof(T)) {
+            fine = false;
+            return;
+        }
+        values.resize(n);
+        std::memcpy(static_cast<void*>(values.data()), bytes.data() + at, n * sizeof(T));
+        at += n * sizeof(T);
+    }
+    std::string get_text()
+    {
+        const auto n = get<std::uint64_t>();
+        if (!fine || n > bytes.size() - at) {
+            fine = false;
+            return {};
+        }
+        at += n;
+        return bytes.substr(at - n, n);
+    }
+};
+
+std::string encode(const std::string& why, const ModelMesh& mesh)
+{
+    Writer w;
+    w.put_text(why);
+    w.put_all(mesh.vertices);
+    w.put_all(mesh.triangles);
+    w.put_all(mesh.colours);
+    w.put_all(mesh.uvs);
+    w.put_text(mesh.texture);
+    w.put_all(mesh.texture_bytes);
+    w.put_text(mesh.texture_format);
+    w.put(mesh.texture_width);
+    w.put(mesh.texture_height);
+    w.put(mesh.base_colour);
+    return w.bytes;
+}
+
+/// False when the bytes are not a whole message.
+bool decode(const std::string& bytes, std::string& why, ModelMesh& mesh)
+{
+    Reader r{bytes};
+    why = r.get_text();
+    r.get_all(mesh.vertices);
+    r.get_all(mesh.triangles);
+    r.get_all(mesh.colours);
+    r.get_all(mesh.uvs);
+    mesh.texture = r.get_text();
+    r.get_all(mesh.texture_bytes);
+    mesh.texture_format = r.get_text();
+    mesh.texture_width = r.get<int>();
+    mesh.texture_height = r.get<int>();
+    mesh.base_colour = r.get<Vec3>();
+    return r.fine && r.at == bytes.size();
+}
+
+/// Runs assimp in a child process: some of its readers loop forever or abort (ai_assert) on a
+/// malformed file, which must not take the caller (FreeCAD, the CLI) with them. Returns why not
+/// ("" when read).
+std::string read_isolated(const std::string& path, double timeout_s, ModelMesh& mesh)
+{
+    int channel[2];
+    if (pipe(channel) != 0)
+        return std::string("cannot open a pipe: ") + std::strerror(errno);
+    const pid_t child = fork();
+    if (child < 0) {
+        close(channel[0]);
+        close(channel[1]);
+        return std::string("cannot start the reader: ") + std::strerror(errno);
+    }
+    if (child == 0) {
+        close(channel[0]);
+        ModelMesh read;
+        std::string why;
+        try {
+            why = read_with_assimp(path, read);
+        } catch (const std::exception& e) {
+            why = std::string("assimp failed: ") + e.what();
+        }
+        const std::string bytes = encode(why, read);
+        for (size_t at = 0; at < bytes.size();) {
+            const ssize_t n = write(channel[1], bytes.data() + at, bytes.size() - at);
+            if (n <= 0)
+                _exit(1);
+            at += size_t(n);
+        }
+        _exit(0);
+    }
+    close(channel[1]);
+    std::string bytes;
+    char buffer[1 << 16];
+    const auto deadline =
+        std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+    bool timed_out = false;
+    for (;;) {
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+            deadline - std::chrono::steady_clock::now());
+        pollfd ready{channel[0], POLLIN, 0};
+        const int polled = poll(&ready, 1, int(std::max<long>(0, left.count())));
+        if (polled < 0 && errno == EINTR)
+            continue;
+        if (polled == 0) {
+            timed_out = true;
+            break;
+        }
+        const ssize_t n = read(channel[0], buffer, sizeof buffer);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            break;
+        bytes.append(buffer, size_t(n));
+    }
+    close(channel[0]);
+    if (timed_out)
+        kill(child, SIGKILL);
+    int status = 0;
+    while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
+    }
+    if (timed_out) {
+        std::ostringstream s;
+        s << "assimp did not finish reading it within " << timeout_s << " s";
+        return s.str();
+    }
+    if (WIFSIGNALED(status))
+        return "assimp crashed reading it (signal " + std::to_string(WTERMSIG(status)) + ", " +
+               strsignal(WTERMSIG(status)) + ")";
+    std::string why;
+    if (!decode(bytes, why, mesh))
+        return "the reader process ended without a whole answer (exit status " +
+               std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")";
+    return why;
+}
+
+} // namespace
+
+Result<ModelMesh> load_model(const std::string& path, const LoadModelOptions& options)
+{
+    Result<ModelMesh> result;
+    auto refuse = [&](const std::string& why) {
+        result.fail(DiagnosticCode::unreadable_model, "model file " + path + ": " + why,
+                    about_parameter(path));
+        return result;
+    };
+    std::error_code error;
+    if (path.empty())
+        return refuse("no path given");
+    if (!fs::exists(path, error))
+        return refuse("no such file");
+    if (!fs::is_regular_file(path, error))
+        return refuse("not a regular file");
+    if (!(options.timeout_s > 0.0))
+        return refuse("timeout_s = " + std::to_string(options.timeout_s) + ", must be > 0");
+
+    ModelMesh mesh;
+    const std::string why = read_isolated(path, options.timeout_s, mesh);
+    if (!why.empty())
+        return refuse(why);
+    mesh.source = path;
+    return check_model(std::move(mesh));
+}
+
+} // namespace popup

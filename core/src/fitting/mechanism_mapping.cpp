@@ -1,0 +1,234 @@
+#include "popup/fitting/mechanism_mapping.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <sstream>
+
+namespace popup {
+namespace {
+
+struct Areas {
+    double total = 0;  // every face of the prism
+    double bottom = 0; // the face on the host
+    double sides = 0;  // rectangular: faces at s0 and s1; triangular: the two slopes
+    double outer = 0;  // rectangular: the face at s1
+    double top = 0;    // rectangular: the face at t = height
+    double ends = 0;   // the two faces across the hinge
+};
+
+Areas areas_of(const Prism& m)
+{
+    Areas a;
+    const double w = m.a1 - m.a0, across = m.s1 - m.s0, h = m.height;
+    a.bottom = w * across;
+    if (m.kind == Prism::Kind::rectangular) {
+        a.top = w * across;
+        a.outer = w * h;
+        a.sides = 2 * w * h;
+        a.ends = 2 * across * h;
+        a.total = a.bottom + a.top + a.sides + a.ends;
+    } else {
+        const double lg = std::hypot(m.s1 - m.apex_s, h), lb = std::hypot(m.apex_s - m.s0, h);
+        a.sides = w * (lg + lb);
+        a.ends = across * h; // two triangles of area across·h/2
+        a.total = a.bottom + a.sides + a.ends;
+    }
+    return a;
+}
+
+std::string short_name(const std::string& type)
+{
+    if (type == "box_fold")
+        return "B";
+    if (type == "tent_fold")
+        return "T";
+    if (type == "step_fold")
+        return "S";
+    return "V";
+}
+
+} // namespace
+
+std::vector<std::string> mechanism_options(const Prism& m, const PrismHost& host)
+{
+    if (m.kind == Prism::Kind::rectangular)
+        return host.flat ? std::vector<std::string>{"box_fold", "v_fold"}
+                         : std::vector<std::string>{"step_fold"};
+    return host.flat ? std::vector<std::string>{"tent_fold", "v_fold"} : std::vector<std::string>{};
+}
+
+MechanismPlan plan_mechanism(const std::string& type, const Prism& m, const PrismHost& host)
+{
+    MechanismPlan p;
+    p.type = type;
+    const Areas a = areas_of(m);
+    p.face_area = a.total;
+    const double w = m.a1 - m.a0;
+    auto& q = p.parameters;
+    q["offset"] = m.a0;
+    q["width"] = w;
+    if (type == "box_fold") {
+        // At 180° the box is x in [−depth_backdrop, depth_ground], z in [0, height].
+        q["depth_ground"] = m.s1;
+        q["depth_backdrop"] = -m.s0;
+        q["height"] = m.height;
+        q["panel_pairs"] = 1;
+        q["front"] = 1;
+        q["back"] = 1;
+        p.principal_area = a.total - a.bottom;
+    } else if (type == "step_fold") {
+        // At 90° the parallelogram is a rectangle: run along the page, rise up the wall. On
+        // a box's ground side the page is the host's ground; on its backdrop side the wall is.
+        const bool page_is_ground = host.part != "side_backdrop";
+        q["run_ground"] = page_is_ground ? m.s1 : m.height;
+        q["run_backdrop"] = page_is_ground ? m.height : m.s1;
+        p.principal_area = a.outer + a.top;
+    } else if (type == "tent_fold") {
+        q["foot"] = m.s1;
+        q["foot_backdrop"] = -m.s0;
+        q["slope"] = std::hypot(m.s1 - m.apex_s, m.height);
+        p.principal_area = a.sides;
+    } else { // v_fold: O at the prism's start on the hinge, P over its far end
+        q.erase("width");
+        const double d = std::min(m.s1, -m.s0);
+        q["run"] = std::hypot(d, w);
+        q["hinge_angle"] = std::atan2(d, w);
+        q["spine"] = std::hypot(w, m.height);
+        q["spine_angle"] = std::atan2(m.height, w);
+        // Its wings stand on the diagonals: half of the faces they stand in front of.
+        p.principal_area = 0.5 * a.sides;
+    }
+    return p;
+}
+
+double coverage_error(const std::vector<MechanismPlan>& plans)
+{
+    double principal = 0, total = 0;
+    for (const auto& p : plans) {
+        principal += p.principal_area;
+        total += p.face_area;
+    }
+    return total > 0 ? 1.0 - principal / total : 1.0;
+}
+
+Mapping map_mechanisms(const RansacResult& fit)
+{
+    Mapping best;
+    const size_t n = fit.prisms.size();
+    std::vector<std::vector<std::string>> options(n);
+    for (size_t i = 0; i < n; ++i)
+        options[i] = mechanism_options(fit.prisms[i], fit.hosts[fit.prisms[i].host]);
+    // Exhaustive: few primitives (max_mechanisms), at most two options each.
+    std::vector<int> choice(n, 0);
+    double best_error = 2.0;
+    std::vector<int> best_choice;
+    std::function<void(size_t)> visit = [&](size_t i) {
+        if (i == n) {
+            std::vector<MechanismPlan> plans;
+            for (size_t k = 0; k < n; ++k) {
+                if (options[k].empty())
+                    continue;
+                const Prism& m = fit.prisms[k];
+                const PrismHost& h = fit.hosts[m.host];
+                if (h.parent >= 0 && (options[h.parent].empty() ||
+                                      options[h.parent][choice[h.parent]] != "box_fold"))
+                    return; // stands on a part only a box fold offers
+                plans.push_back(plan_mechanism(options[k][choice[k]], m, h));
+            }
+            const double e = coverage_error(plans);
+            if (e < best_error - 1e-12) {
+                best_error = e;
+                best_choice = choice;
+            }
+            return;
+        }
+        const int count = std::max<int>(1, int(options[i].size()));
+        for (int c = 0; c < count; ++c) {
+            choice[i] = c;
+            visit(i + 1);
+        }
+    };
+    visit(0);
+    if (best_choice.empty())
+        return best;
+    best.coverage_error = best_error;
+    std::map<std::string, int> counters;
+    std::vector<int> plan_of(n, -1);
+    for (size_t k = 0; k < n; ++k) {
+        if (options[k].empty()) {
+            best.unmapped.push_back(int(k));
+            continue;
+        }
+        const Prism& m = fit.prisms[k];
+        const PrismHost& h = fit.hosts[m.host];
+        MechanismPlan p = plan_mechanism(options[k][best_choice[k]], m, h);
+        p.prism = int(k);
+        p.name = short_name(p.type) + std::to_string(++counters[p.type]);
+        if (h.parent < 0) {
+            p.host = "central fold";
+        } else {
+            p.parent = plan_of[h.parent];
+            p.host = best.plans[p.parent].name + "." + h.part;
+        }
+        plan_of[k] = int(best.plans.size());
+        best.plans.push_back(p);
+    }
+    return best;
+}
+
+std::vector<std::pair<std::string, std::string>>
+refit_for_foldability(std::vector<MechanismPlan>& plans)
+{
+    std::vector<std::pair<std::string, std::string>> changes;
+    auto sweep = [](const MechanismPlan& p) {
+        const auto& q = p.parameters;
+        const double a0 = q.at("offset"), a1 = a0 + (q.count("width") ? q.at("width") : 0.0);
+        if (p.type != "box_fold")
+            return std::make_pair(a0, a1);
+        const double reach = q.at("depth_ground");
+        return std::make_pair(a0 - (q.at("front") > 0 ? reach : 0.0),
+                              a1 + (q.at("back") > 0 ? reach : 0.0));
+    };
+    for (size_t i = 0; i < plans.size(); ++i)
+        for (size_t j = 0; j < plans.size(); ++j) {
+            if (i == j || plans[i].host != plans[j].host ||
+                plans[i].parameters.at("offset") > plans[j].parameters.at("offset"))
+                continue;
+            MechanismPlan& first = plans[i];
+            MechanismPlan& second = plans[j];
+            if (sweep(first).second <= sweep(second).first)
+                continue;
+            // Thesis §4.2.2: the end panels facing each other come off first.
+            if (first.type == "box_fold" && first.parameters["back"] > 0 &&
+                first.parameters["front"] > 0) {
+                first.parameters["back"] = 0;
+                changes.push_back({first.name, "trimmed its back panels: closed, they would "
+                                               "run into " +
+                                                   second.name});
+            }
+            if (sweep(first).second > sweep(second).first && second.type == "box_fold" &&
+                second.parameters["front"] > 0 && second.parameters["back"] > 0) {
+                second.parameters["front"] = 0;
+                changes.push_back({second.name, "trimmed its front panels: closed, they would "
+                                                "run into " +
+                                                    first.name});
+            }
+            const double overlap = sweep(first).second - sweep(second).first;
+            if (overlap > 0) {
+                auto& q = second.parameters;
+                const double keep = q.count("width") ? q.at("width") - overlap : 0.0;
+                if (q.count("width") && keep > 0) {
+                    q["offset"] += overlap;
+                    q["width"] = keep;
+                    std::ostringstream why;
+                    why << "shortened by " << overlap << " mm along its hinge: it overlapped "
+                        << first.name;
+                    changes.push_back({second.name, why.str()});
+                }
+            }
+        }
+    return changes;
+}
+
+} // namespace popup
