@@ -215,7 +215,14 @@ def test_the_same_seed_gives_the_same_design(models, cuboid_fit, tmp_path, home)
 def test_a_defective_mesh_is_repaired_and_still_fits(models, tmp_path, home):
     proc = fit(models["defective"], tmp_path, *UPRIGHT, home=home)
     report = read_report(tmp_path)
-    assert sum(report["model_repairs"].values()) > 0, report["model_repairs"]
+    # What make_models.DEFECTIVE_OBJ was written with: a zero-area and a needle triangle, a
+    # duplicated face, a duplicated vertex, two flipped triangles and the top left out.
+    repairs = report["model_repairs"]
+    assert repairs["degenerate_faces_removed"] >= 2, repairs
+    assert repairs["duplicate_faces_removed"] >= 1, repairs
+    assert repairs["duplicate_points_merged"] >= 1, repairs
+    assert repairs["faces_reoriented"] >= 1, repairs
+    assert repairs["holes"] == 1 and repairs["closed"] is False, repairs
     assert proc.returncode == 0, proc.stdout + proc.stderr
     assert report["valid"] is True and report["number_of_mechanisms"] >= 1
 
