@@ -231,8 +231,10 @@ def _write_design(args, cli, result, model, options, stages, files, say):
                     + "; ".join(problems + list(built.errors.values()))
                 )
             scaffold = built.scaffold
-            with stages.stage("metrics", "measuring the pop-up against the model"):
-                metrics = fit_run.measure(model, result, scaffold, options)
+            metrics = None  # a card without mechanisms has no pop-up to measure
+            if result.mechanisms:
+                with stages.stage("metrics", "measuring the pop-up against the model"):
+                    metrics = fit_run.measure(model, result, scaffold, options)
             with stages.stage("preview", "drawing the preview"):
                 outlines, card_patches = scaffold_outlines(scaffold)
                 files["preview"] = write_preview(
