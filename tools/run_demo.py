@@ -4,11 +4,11 @@ mechanism features and the bundled design file.
 
     /usr/bin/python3 tools/run_demo.py --build build --out out/demo
 
-First the shape from a model (issue 12): (1) `popup fit resources/samples/truck.stl --out
-out/demo/fit` writes design.FCStd (a PopUpCard with its mechanism features and the truck linked),
+First the shape from a model (issue 12): (1) `popup fit resources/samples/house.stl --out
+out/demo/fit` writes design.FCStd (a PopUpCard with its mechanism features and the house linked),
 report.json, preview.png and the cutting sheets in fit/sheets/ (as `popup sheet` writes them);
 (2) `popup verify fit/design.FCStd fit/sheets` proves the cutting file against the design. The
-truck was made by tools/make_models.py (see resources/samples/README.md).
+house was made by tools/make_models.py (see resources/samples/README.md).
 
 Then the hand-made card: (a) copy resources/samples/demo_card.json into the output folder, (b) check its validity
 (validity_report.json / .txt), (c) build demo_card.FCStd with three Scaffold objects of it at fold
@@ -37,7 +37,7 @@ REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PYTHON = "/usr/bin/python3"
 FREECAD_LIB = "/usr/lib/freecad-python3/lib"
 DEMO_DESIGN = os.path.join(REPO, "resources", "samples", "demo_card.json")
-DEMO_MODEL = os.path.join(REPO, "resources", "samples", "truck.stl")
+DEMO_MODEL = os.path.join(REPO, "resources", "samples", "house.stl")
 FIT_TIMEOUT = 300  # seconds
 FOLD_ANGLES = (180.0, 90.0, 30.0)
 SPACING = 1.3  # distance between the cards, in card sizes
@@ -477,7 +477,7 @@ def main(argv=None):
     parser.add_argument(
         "--model",
         default=DEMO_MODEL,
-        help="3D model to design a pop-up from (default: resources/samples/truck.stl)",
+        help="3D model to design a pop-up from (default: resources/samples/house.stl)",
     )
     args = parser.parse_args(argv)
     build = os.path.abspath(args.build)
