@@ -189,8 +189,14 @@ def run(args, cli):
             say(f"{d.get('severity', 'error')}: {d.get('code')}: {d.get('message')}")
         say("no valid design found: no sheets written")
     report["timings_s"] = _report_timings(stages)
+    report["sheets_ok"] = bool(report["valid"] and status == cli.EXIT_VALID)
     _write_outcome(args.out, report, files, say)
     _print_summary(report, files)
+    if report["valid"] and status != cli.EXIT_VALID:
+        print(
+            "but its cutting sheets have errors (listed above; "
+            f"{os.path.join(files['sheets'], 'report.json')})"
+        )
     if not result.mechanisms:
         print(f"no mechanism could be fitted to {args.model}")
         return cli.EXIT_INVALID
