@@ -72,6 +72,12 @@ def _prism_node(corners):
     group.addChild(coords)
 
     faces = coin.SoSeparator()
+    # A prism fitted well shares its faces with the model's: pulled toward the viewer, they do
+    # not flicker through the model's (z-fighting).
+    offset = coin.SoPolygonOffset()
+    offset.factor = -1.0
+    offset.units = -1.0
+    faces.addChild(offset)
     material = coin.SoMaterial()
     material.diffuseColor = FACE_COLOUR
     material.transparency = TRANSPARENCY
