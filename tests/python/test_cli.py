@@ -571,7 +571,12 @@ def test_every_float_option_takes_negative_values():
     options = float_options()
     assert ("sheet", "--kerf") in options and ("check", "--clearance") in options
     assert ("verify", "--kerf") in options and len(options) >= 11
-    positional = {"check": ["d"], "sheet": ["d", "--out", "o"], "verify": ["d", "s"]}
+    positional = {
+        "check": ["d"],
+        "sheet": ["d", "--out", "o"],
+        "verify": ["d", "s"],
+        "fit": ["m", "--out", "o"],
+    }
     for command, flag in options:
         for text in ("-inf", "-Infinity", "-nan", "-1e-3", "-2.5E+1", "-.5", "-7"):
             args = cli.build_parser().parse_args([command, *positional[command], flag, text])

@@ -11,7 +11,18 @@ from conftest import SOURCE_DIR, WORKBENCH_DIR
 NAMESPACE = {"p": "https://wiki.freecad.org/Package_Metadata"}
 # Modules FreeCAD itself provides (the workbenches and its Qt binding), and this project's own.
 # pivy is the Coin binding FreeCAD ships with (its 3D view is a Coin scene graph).
-FREECAD_MODULES = {"FreeCAD", "FreeCADGui", "Part", "PySide", "TechDraw", "TechDrawGui", "pivy"}
+FREECAD_MODULES = {
+    "FreeCAD",
+    "FreeCADGui",
+    "Mesh",
+    "Part",
+    "PySide",
+    "TechDraw",
+    "TechDrawGui",
+    "pivy",
+}
+# Import names of distributions named otherwise: mpl_toolkits ships with matplotlib, PIL is pillow.
+DISTRIBUTION_OF = {"mpl_toolkits": "matplotlib", "PIL": "pillow"}
 OWN_MODULES = {"popupwb", "popupcore"}
 
 
@@ -49,7 +60,7 @@ def test_the_maintainer_is_not_a_placeholder():
 
 
 def test_the_workbenches_it_builds_on_are_dependencies():
-    assert depends("internal") == {"Part", "TechDraw"}
+    assert depends("internal") == {"Part", "TechDraw", "Mesh"}
     sources = []
     for folder, _, files in os.walk(WORKBENCH_DIR):
         for name in files:
@@ -61,8 +72,13 @@ def test_the_workbenches_it_builds_on_are_dependencies():
 
 
 def test_every_third_party_import_is_a_python_dependency():
-    third_party = imported_modules() - set(sys.stdlib_module_names) - FREECAD_MODULES - OWN_MODULES
-    assert depends("python") == third_party == {"ezdxf", "svgwrite", "reportlab", "matplotlib"}
+    imported = imported_modules() - set(sys.stdlib_module_names) - FREECAD_MODULES - OWN_MODULES
+    third_party = {DISTRIBUTION_OF.get(name, name) for name in imported}
+    assert (
+        depends("python")
+        == third_party
+        == {"ezdxf", "svgwrite", "reportlab", "matplotlib", "numpy", "pillow"}
+    )
 
 
 def test_freecad_reads_the_same_metadata(freecad):
@@ -71,8 +87,11 @@ def test_freecad_reads_the_same_metadata(freecad):
     assert [d["package"] for d in metadata.Depend] == [
         "Part",
         "TechDraw",
+        "Mesh",
         "ezdxf",
         "svgwrite",
         "reportlab",
         "matplotlib",
+        "numpy",
+        "pillow",
     ]
