@@ -62,7 +62,18 @@ def test_the_workbenches_it_builds_on_are_dependencies():
 
 def test_every_third_party_import_is_a_python_dependency():
     third_party = imported_modules() - set(sys.stdlib_module_names) - FREECAD_MODULES - OWN_MODULES
-    assert depends("python") == third_party == {"ezdxf", "svgwrite", "reportlab", "matplotlib"}
+    assert (
+        depends("python")
+        == third_party
+        == {
+            "ezdxf",
+            "svgwrite",
+            "reportlab",
+            "matplotlib",
+            "numpy",
+            "PIL",
+        }
+    )
 
 
 def test_freecad_reads_the_same_metadata(freecad):
@@ -75,4 +86,6 @@ def test_freecad_reads_the_same_metadata(freecad):
         "svgwrite",
         "reportlab",
         "matplotlib",
+        "numpy",
+        "PIL",
     ]
