@@ -21,8 +21,8 @@ FREECAD_MODULES = {
     "TechDrawGui",
     "pivy",
 }
-# Import names of distributions named otherwise: mpl_toolkits ships with matplotlib, PIL is pillow.
-DISTRIBUTION_OF = {"mpl_toolkits": "matplotlib", "PIL": "pillow"}
+# Import names of modules shipped by another dependency: mpl_toolkits comes with matplotlib.
+DISTRIBUTION_OF = {"mpl_toolkits": "matplotlib"}
 OWN_MODULES = {"popupwb", "popupcore"}
 
 
@@ -77,7 +77,7 @@ def test_every_third_party_import_is_a_python_dependency():
     assert (
         depends("python")
         == third_party
-        == {"ezdxf", "svgwrite", "reportlab", "matplotlib", "numpy", "pillow"}
+        == {"ezdxf", "svgwrite", "reportlab", "matplotlib", "numpy", "PIL"}
     )
 
 
@@ -93,5 +93,5 @@ def test_freecad_reads_the_same_metadata(freecad):
         "reportlab",
         "matplotlib",
         "numpy",
-        "pillow",
+        "PIL",
     ]

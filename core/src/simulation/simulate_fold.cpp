@@ -96,19 +96,30 @@ Result<FoldSweep> sweep_from(const Scaffold& s, const BodyGraph& g, const FoldSo
     const size_t components = g.components.size();
     for (const std::vector<int>* run : {&closing, &opening}) {
         std::vector<Track> tracks(components);
+        // Each thread keeps its component's poses to itself until the end: written straight
+        // into the shared configurations, neighbouring bodies of two threads share cache lines.
+        std::vector<std::vector<BodyPose>> poses(components);
         tbb::parallel_for(size_t(0), components, [&](size_t c) {
             ComponentTrack track(solver, int(c), start.angle, start.configuration, start.design);
+            const std::vector<int>& bodies = g.components[c];
+            std::vector<BodyPose>& mine = poses[c];
+            mine.reserve(run->size() * bodies.size());
             size_t k = 0;
             for (; k < run->size(); ++k) {
-                const int i = (*run)[k];
                 stop_if_cancelled(solver.options().cancel, "the fold simulation");
-                if (!track.advance_to(angles[i]))
+                if (!track.advance_to(angles[(*run)[k]]))
                     break;
-                for (int b : g.components[c])
-                    configs[i][b] = track.configuration()[b];
+                for (int b : bodies)
+                    mine.push_back(track.configuration()[b]);
             }
             tracks[c] = {k, k < run->size() ? track.locked_angle() : -1.0, track.branch_followed()};
         });
+        for (size_t c = 0; c < components; ++c) {
+            const std::vector<int>& bodies = g.components[c];
+            for (size_t k = 0; k < tracks[c].reached; ++k)
+                for (size_t n = 0; n < bodies.size(); ++n)
+                    configs[(*run)[k]][bodies[n]] = poses[c][k * bodies.size() + n];
+        }
         for (size_t c = 0; c < components; ++c) {
             const Track& t = tracks[c];
             if (t.reached < run->size()) {
