@@ -25,8 +25,8 @@ struct ModelMesh {
     std::string texture_format;
     int texture_width = 0;
     int texture_height = 0;
-    Vec3 base_colour = Vec3(0.8, 0.8, 0.8);    ///< the material's diffuse colour
-    std::string source;                        ///< file or object name, for messages
+    Vec3 base_colour = Vec3(0.8, 0.8, 0.8); ///< the material's diffuse colour
+    std::string source;                     ///< file or object name, for messages
 
     double area() const;
     /// Diagonal of the axis-aligned bounding box (0 for an empty mesh).
