@@ -121,7 +121,9 @@ def test_the_preview_shows_model_left_and_pop_up_right(core, tmp_path):
     scaffold = core.make_card(params)
     outlines, card = scaffold_outlines(scaffold)
     assert len(outlines) == 2 and sorted(card) == [0, 1]
-    vertices = np.array([[0, 10, 0], [20, 10, 0], [0, 60, 0], [0, 10, 40]], dtype=float)
+    # Standing across the fold in the middle of the card, as a fitted model does: depth-sorted as
+    # a whole, the card (whose centre is nearer the camera) once hid it.
+    vertices = np.array([[-20, 30, 0], [20, 30, 0], [0, 70, 0], [0, 50, 40]], dtype=float)
     triangles = np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]])
     path = write_preview(str(tmp_path / "p.png"), vertices, triangles, outlines, card, "test")
     image = imread(path)
@@ -130,6 +132,6 @@ def test_the_preview_shows_model_left_and_pop_up_right(core, tmp_path):
     # The model is blue-ish (more blue than red); the card grey; each drawn in its own half.
     left, right = rgb[:, :800], rgb[:, 800:]
     bluish = lambda part: np.sum((part[..., 2] - part[..., 0]) > 0.1)  # noqa: E731
-    assert bluish(left) > 500 and bluish(right) < 50
+    assert bluish(left) > 5000 and bluish(right) < 50
     grey = lambda part: np.sum((np.ptp(part, axis=-1) < 0.02) & (part[..., 0] < 0.9))  # noqa: E731
     assert grey(right) > 500

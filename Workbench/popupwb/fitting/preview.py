@@ -70,7 +70,10 @@ def write_preview(path, model_vertices, model_triangles, patches, card_patches=(
     if title:
         figure.suptitle(title)
 
-    left = figure.add_subplot(1, 2, 1, projection="3d")
+    # Collections are depth-sorted as wholes: the card's centre is nearer the camera than the
+    # model's, so sorted it would hide the model standing on it. Drawn in order instead: the card
+    # first, the model over it (seen from above, nothing of the card is in front of the model).
+    left = figure.add_subplot(1, 2, 1, projection="3d", computed_zorder=False)
     left.set_title("model (in the card's frame, on the open card)")
     pages = [patch_polygons[i] for i in card_patches]
     if pages:  # the card under the model, as on the right: the two halves compare at a glance
