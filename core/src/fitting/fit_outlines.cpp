@@ -1,0 +1,235 @@
+#include "popup/fitting/fit_outlines.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+#include "popup/fitting/silhouette.hpp"
+#include "popup/model/apply_profile.hpp"
+#include "popup/model/profile.hpp"
+#include "popup/simulation/check_validity.hpp"
+#include "popup/simulation/simulate_fold.hpp"
+
+namespace popup {
+namespace {
+
+/// `part` is `prefix`, or `prefix` followed by a number (stacked box end panels: FL1, FL2...).
+bool is_part(const std::string& part, const std::string& prefix)
+{
+    if (part.rfind(prefix, 0) != 0)
+        return false;
+    return std::all_of(part.begin() + long(prefix.size()), part.end(),
+                       [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; });
+}
+
+ModelMesh placed(const ModelMesh& model, const Eigen::Matrix4d& m)
+{
+    ModelMesh out;
+    out.source = model.source;
+    out.triangles = model.triangles;
+    out.vertices.reserve(model.vertices.size());
+    for (const Vec3& x : model.vertices)
+        out.vertices.push_back(m.topLeftCorner<3, 3>() * x + m.topRightCorner<3, 1>());
+    return out;
+}
+
+/// One principal part: its patch id and its part name.
+struct Part {
+    int patch = -1;
+    std::string name;
+};
+
+/// The mechanism's principal parts in `s`, sorted by part name: the order in which the
+/// workbench applies a feature's profiles (popupwb.profiles.apply_profiles), so each frame is
+/// measured on the same paper in both places.
+std::vector<Part> parts_of(const Scaffold& s, const FittedMechanism& m)
+{
+    std::vector<Part> out;
+    const std::string prefix = m.name + ".";
+    for (const Patch& p : s.patches) {
+        if (p.name.rfind(prefix, 0) != 0)
+            continue;
+        const std::string part = p.name.substr(prefix.size());
+        for (const std::string& principal : principal_parts(m.type))
+            if (is_part(part, principal)) {
+                out.push_back({p.id, part});
+                break;
+            }
+    }
+    std::sort(out.begin(), out.end(), [](const Part& a, const Part& b) { return a.name < b.name; });
+    return out;
+}
+
+/// Extent of a patch along u and v of its profile frame (popupwb.profiles.part_size).
+Vec2 size_in(const Patch& patch, const ProfileFrame& f)
+{
+    Vec2 lo(1e300, 1e300), hi(-1e300, -1e300);
+    for (const Vec3& x : patch.outer) {
+        const Vec2 q = f.to_frame(x);
+        lo = lo.cwiseMin(q);
+        hi = hi.cwiseMax(q);
+    }
+    return hi - lo;
+}
+
+/// A step whose riser and tread are parallel lies flat: it stands as the model does when its
+/// host is at a right angle, which for a host flat at 180° is the card open at 90°.
+bool lies_flat(const Scaffold& s, const FittedMechanism& m)
+{
+    if (m.type != "step_fold")
+        return false;
+    const Patch* riser = nullptr;
+    const Patch* tread = nullptr;
+    for (const Patch& p : s.patches) {
+        if (p.name == m.name + ".riser")
+            riser = &p;
+        if (p.name == m.name + ".tread")
+            tread = &p;
+    }
+    if (!riser || !tread)
+        return false;
+    Patch a = *riser, b = *tread;
+    a.derive_frame();
+    b.derive_frame();
+    return std::abs(a.normal.dot(b.normal)) > 1.0 - 1e-6;
+}
+
+/// Applies one part's silhouette to `s`; the profile it kept, or why not.
+Result<FittedProfile> outline_part(Scaffold& s, const ModelMesh& model, const FittedMechanism& m,
+                                   const Part& part, bool pose_at_90)
+{
+    Result<FittedProfile> r;
+    const Result<ProfileFrame> frame = profile_frame(s, part.patch);
+    if (!frame.ok) {
+        r.fail_with(frame.diagnostics);
+        return r;
+    }
+    SilhouetteOptions so;
+    if (pose_at_90) {
+        const Result<FoldSweep> sweep = simulate_fold(s, {M_PI / 2});
+        if (!sweep.ok || sweep.value.states.empty()) {
+            r.fail_with(sweep.diagnostics);
+            if (r.ok)
+                r.fail(DiagnosticCode::bad_profile, "the card could not be posed at 90°");
+            return r;
+        }
+        so.pose = sweep.value.states.front().poses[size_t(s.patch_index(part.patch))];
+    }
+    const Result<Silhouette> sil = silhouette_profile(model, s, part.patch, so);
+    if (!sil.ok) {
+        r.fail_with(sil.diagnostics);
+        return r;
+    }
+    Profile profile = sil.value.profile;
+    profile.name = "silhouette of the model";
+    FittedProfile& fp = r.value;
+    fp.mechanism = m.name;
+    fp.part = part.name;
+    fp.reference = size_in(*s.find_patch(part.patch), frame.value);
+    const Result<ProfileApplied> applied = apply_profile(s, part.patch, profile);
+    if (!applied.ok) {
+        r.fail_with(applied.diagnostics);
+        return r;
+    }
+    const Patch& cut = *s.find_patch(part.patch);
+    for (const Vec3& x : cut.outer)
+        fp.outer.push_back(applied.value.frame.to_frame(x));
+    for (const Loop3& hole : cut.holes) {
+        Loop2 h;
+        for (const Vec3& x : hole)
+            h.push_back(applied.value.frame.to_frame(x));
+        fp.holes.push_back(h);
+    }
+    fp.area = applied.value.area_after;
+    fp.area_before = applied.value.area_before;
+    return r;
+}
+
+std::string first_error(const Diagnostics& d, const std::string& otherwise)
+{
+    for (const Diagnostic& x : d)
+        if (x.severity == Severity::error)
+            return x.message;
+    return otherwise;
+}
+
+} // namespace
+
+std::vector<std::string> principal_parts(const std::string& type)
+{
+    if (type == "box_fold")
+        return {"L", "R", "TG", "TB", "FL", "FR", "BL", "BR"};
+    if (type == "tent_fold")
+        return {"slope_ground", "slope_backdrop"};
+    if (type == "step_fold")
+        return {"riser", "tread"};
+    if (type == "v_fold")
+        return {"wing_ground", "wing_backdrop"};
+    return {};
+}
+
+OutlineOutcome fit_outlines(const ModelMesh& model_in_card, const Scaffold& scaffold,
+                            const std::vector<FittedMechanism>& mechanisms,
+                            const CancelFlag* cancel)
+{
+    OutlineOutcome out;
+    out.scaffold = scaffold;
+    ValidityOptions vo;
+    vo.cancel = cancel;
+    for (const FittedMechanism& m : mechanisms) {
+        stop_if_cancelled(cancel, "fit_design: outlines");
+        const std::vector<Part> parts = parts_of(out.scaffold, m);
+        if (parts.empty())
+            continue;
+        const bool flat = lies_flat(out.scaffold, m);
+        // All of the mechanism's outlines at once: one check when they agree.
+        Scaffold together = out.scaffold;
+        std::vector<FittedProfile> kept;
+        bool all_applied = true;
+        for (const Part& part : parts) {
+            Result<FittedProfile> fp = outline_part(together, model_in_card, m, part, flat);
+            if (!fp.ok) {
+                all_applied = false;
+                break;
+            }
+            kept.push_back(fp.value);
+        }
+        if (all_applied && check_validity(together, vo).valid()) {
+            out.scaffold = together;
+            for (const FittedProfile& fp : kept)
+                out.profiles.push_back(fp);
+            continue;
+        }
+        // One at a time: keep what the simulator accepts.
+        for (const Part& part : parts) {
+            Scaffold trial = out.scaffold;
+            Result<FittedProfile> fp = outline_part(trial, model_in_card, m, part, flat);
+            if (!fp.ok) {
+                out.dropped.push_back(
+                    {m.name, "profile dropped",
+                     part.name + ": " + first_error(fp.diagnostics, "it could not be applied")});
+                continue;
+            }
+            const ValidityReport report = check_validity(trial, vo);
+            if (!report.valid()) {
+                out.dropped.push_back({m.name, "profile dropped",
+                                       part.name + ": the validity check failed with it: " +
+                                           first_error(report.diagnostics, "not valid")});
+                continue;
+            }
+            out.scaffold = trial;
+            out.profiles.push_back(fp.value);
+        }
+    }
+    return out;
+}
+
+OutlineOutcome fit_outlines_for(const ModelMesh& model, const Eigen::Matrix4d& model_to_card,
+                                const Scaffold& scaffold,
+                                const std::vector<FittedMechanism>& mechanisms,
+                                const CancelFlag* cancel)
+{
+    return fit_outlines(placed(model, model_to_card), scaffold, mechanisms, cancel);
+}
+
+} // namespace popup
