@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <map>
 
 #include "popup/fitting/silhouette.hpp"
 #include "popup/model/apply_profile.hpp"
@@ -94,7 +95,30 @@ bool lies_flat(const Scaffold& s, const FittedMechanism& m)
     return std::abs(a.normal.dot(b.normal)) > 1.0 - 1e-6;
 }
 
-/// Applies one part's silhouette to `s`; the profile it kept, or why not.
+/// Length of each fold and joint of `patch`, by the other patch's name, when the patch carries
+/// a mechanism built after its own (a hinge to a patch whose name does not start with `own`
+/// and whose id is larger); empty otherwise. Such a patch's folds must stay whole: the
+/// workbench cuts a part before it builds what stands on it (card_scaffold.build), and the
+/// later mechanism is built on the base pair's fold (one of these) and folds onto the part.
+std::map<std::string, double> carried_folds(const Scaffold& s, int patch, const std::string& own)
+{
+    std::map<std::string, double> out;
+    bool carries = false;
+    for (const Hinge& h : s.hinges) {
+        if (h.patch_a != patch && h.patch_b != patch)
+            continue;
+        const int other = h.patch_a == patch ? h.patch_b : h.patch_a;
+        const Patch* p = s.find_patch(other);
+        if (!p)
+            continue;
+        carries |= other > patch && p->name.rfind(own, 0) != 0;
+        out[p->name] += (h.to - h.from).norm();
+    }
+    return carries ? out : std::map<std::string, double>{};
+}
+
+/// Applies one part's silhouette to `s`; the profile it kept (an empty part when the silhouette
+/// covers the whole part: `s` unchanged), or why not.
 Result<FittedProfile> outline_part(Scaffold& s, const ModelMesh& model, const FittedMechanism& m,
                                    const Part& part, bool pose_at_90)
 {
@@ -126,9 +150,32 @@ Result<FittedProfile> outline_part(Scaffold& s, const ModelMesh& model, const Fi
     fp.mechanism = m.name;
     fp.part = part.name;
     fp.reference = size_in(*s.find_patch(part.patch), frame.value);
+    const std::map<std::string, double> carried = carried_folds(s, part.patch, m.name + ".");
+    Scaffold before = s;
     const Result<ProfileApplied> applied = apply_profile(s, part.patch, profile);
     if (!applied.ok) {
         r.fail_with(applied.diagnostics);
+        return r;
+    }
+    // A part carrying a later mechanism keeps its folds whole (see carried_folds).
+    const double tol = 1e-6 * std::max(1.0, fp.reference.maxCoeff());
+    const std::map<std::string, double> left = carried_folds(s, part.patch, m.name + ".");
+    for (const auto& [name, whole] : carried) {
+        const double length = left.count(name) ? left.at(name) : 0.0;
+        if (length < whole - tol) {
+            s = std::move(before);
+            r.fail(DiagnosticCode::bad_profile, "it would cut the fold where " + name +
+                                                    " stands (" + std::to_string(length) + " of " +
+                                                    std::to_string(whole) + " mm left)");
+            return r;
+        }
+    }
+    // A silhouette covering the whole part changes nothing: no profile, so the part still
+    // follows later edits of its mechanism's dimensions (a stored outline would clip them).
+    if (std::abs(applied.value.area_after - applied.value.area_before) <=
+        1e-6 * applied.value.area_before) {
+        s = std::move(before);
+        fp.part.clear();
         return r;
     }
     const Patch& cut = *s.find_patch(part.patch);
@@ -192,7 +239,8 @@ OutlineOutcome fit_outlines(const ModelMesh& model_in_card, const Scaffold& scaf
                 all_applied = false;
                 break;
             }
-            kept.push_back(fp.value);
+            if (!fp.value.part.empty())
+                kept.push_back(fp.value);
         }
         if (all_applied && check_validity(together, vo).valid()) {
             out.scaffold = together;
@@ -210,6 +258,8 @@ OutlineOutcome fit_outlines(const ModelMesh& model_in_card, const Scaffold& scaf
                      part.name + ": " + first_error(fp.diagnostics, "it could not be applied")});
                 continue;
             }
+            if (fp.value.part.empty())
+                continue; // the part is already the model's outline there
             const ValidityReport report = check_validity(trial, vo);
             if (!report.valid()) {
                 out.dropped.push_back({m.name, "profile dropped",

@@ -27,7 +27,10 @@ struct OutlineOutcome {
 /// plane, posed where the part stands as the model does (a step flat at 180° is posed at 90°),
 /// clipped to the part by apply_profile. A mechanism's profiles are applied together and kept
 /// when the full check_validity still passes; otherwise each is tried alone, in patch order, and
-/// the ones that break validity (or that apply_profile refuses) are dropped and reported.
+/// the ones that break validity (or that apply_profile refuses) are dropped and reported. A
+/// part whose silhouette covers it whole keeps no profile (a stored outline would clip later
+/// edits of its dimensions); a part carrying a later mechanism keeps one only when that
+/// mechanism's folds on it stay whole (the workbench cuts a part before it builds on it).
 OutlineOutcome fit_outlines(const ModelMesh& model_in_card, const Scaffold& scaffold,
                             const std::vector<FittedMechanism>& mechanisms,
                             const CancelFlag* cancel = nullptr);
