@@ -1,9 +1,12 @@
 #include "popup/fitting/fit_outlines.hpp"
 
+#include "../geometry/clipper_paths.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include "popup/fitting/silhouette.hpp"
 #include "popup/model/apply_profile.hpp"
@@ -95,6 +98,90 @@ bool lies_flat(const Scaffold& s, const FittedMechanism& m)
     return std::abs(a.normal.dot(b.normal)) > 1.0 - 1e-6;
 }
 
+/// Cuts narrower than this (mm) are the fit's round-off, not the model's outline: the sheets'
+/// smallest feature (SheetOptions::min_feature, 3 mm) is twice it.
+constexpr double kSmallestCut = 1.5;
+
+/// `patch` (its outline in `frame`) minus the parts of the region the silhouette cuts away that
+/// are wider than 2·kSmallestCut (a morphological opening of the cut-away region, exact on
+/// Clipper's grid): slivers between a fitted part and a model a little smaller, and thin
+/// notches, stay paper. Empty when nothing is left to cut.
+std::optional<Profile> significant_cut(const Patch& patch, const ProfileFrame& frame,
+                                       const Profile& silhouette)
+{
+    using namespace ClipperLib;
+    Loop2 outline;
+    for (const Vec3& x : patch.outer)
+        outline.push_back(frame.to_frame(x));
+    std::vector<Loop2> holes;
+    for (const Loop3& h : patch.holes) {
+        Loop2 l;
+        for (const Vec3& x : h)
+            l.push_back(frame.to_frame(x));
+        holes.push_back(l);
+    }
+    Paths paper = counter_clockwise_paths({outline});
+    if (!holes.empty()) {
+        Clipper c;
+        c.AddPaths(paper, ptSubject, true);
+        c.AddPaths(counter_clockwise_paths(holes), ptClip, true);
+        c.Execute(ctDifference, paper, pftNonZero, pftNonZero);
+    }
+    Paths shape = counter_clockwise_paths({silhouette.outer});
+    if (!silhouette.holes.empty()) {
+        Clipper c;
+        c.AddPaths(shape, ptSubject, true);
+        c.AddPaths(counter_clockwise_paths(silhouette.holes), ptClip, true);
+        c.Execute(ctDifference, shape, pftNonZero, pftNonZero);
+    }
+    Paths away;
+    {
+        Clipper c;
+        c.AddPaths(paper, ptSubject, true);
+        c.AddPaths(shape, ptClip, true);
+        c.Execute(ctDifference, away, pftNonZero, pftNonZero);
+    }
+    const double r = kSmallestCut * clipper_scale;
+    Paths eroded, opened;
+    {
+        ClipperOffset o(4.0);
+        o.AddPaths(away, jtMiter, etClosedPolygon);
+        o.Execute(eroded, -r);
+    }
+    if (eroded.empty())
+        return std::nullopt;
+    {
+        ClipperOffset o(4.0);
+        o.AddPaths(eroded, jtMiter, etClosedPolygon);
+        o.Execute(opened, r);
+    }
+    PolyTree kept;
+    {
+        Clipper c;
+        c.AddPaths(paper, ptSubject, true);
+        c.AddPaths(opened, ptClip, true);
+        c.Execute(ctDifference, kept, pftNonZero, pftNonZero);
+    }
+    // The largest piece, with its holes (apply_profile drops pieces without folds anyway).
+    const PolyNode* best = nullptr;
+    double best_area = 0;
+    for (const PolyNode* n : kept.Childs) {
+        const double a = std::abs(path_area(n->Contour));
+        if (a > best_area) {
+            best_area = a;
+            best = n;
+        }
+    }
+    if (!best)
+        return std::nullopt;
+    Profile out;
+    out.name = silhouette.name;
+    out.outer = to_loop(best->Contour);
+    for (const PolyNode* h : best->Childs)
+        out.holes.push_back(to_loop(h->Contour));
+    return out;
+}
+
 /// Length of each fold and joint of `patch`, by the other patch's name, when the patch carries
 /// a mechanism built after its own (a hinge to a patch whose name does not start with `own`
 /// and whose id is larger); empty otherwise. Such a patch's folds must stay whole: the
@@ -144,12 +231,19 @@ Result<FittedProfile> outline_part(Scaffold& s, const ModelMesh& model, const Fi
         r.fail_with(sil.diagnostics);
         return r;
     }
-    Profile profile = sil.value.profile;
-    profile.name = "silhouette of the model";
+    Profile silhouette = sil.value.profile;
+    silhouette.name = "silhouette of the model";
     FittedProfile& fp = r.value;
     fp.mechanism = m.name;
     fp.part = part.name;
     fp.reference = size_in(*s.find_patch(part.patch), frame.value);
+    const std::optional<Profile> wanted =
+        significant_cut(*s.find_patch(part.patch), frame.value, silhouette);
+    if (!wanted) { // the part is the model's outline there, up to slivers
+        fp.part.clear();
+        return r;
+    }
+    const Profile& profile = *wanted;
     const std::map<std::string, double> carried = carried_folds(s, part.patch, m.name + ".");
     Scaffold before = s;
     const Result<ProfileApplied> applied = apply_profile(s, part.patch, profile);
