@@ -258,9 +258,10 @@ Result<FittedProfile> outline_part(Scaffold& s, const ModelMesh& model, const Fi
         const double length = left.count(name) ? left.at(name) : 0.0;
         if (length < whole - tol) {
             s = std::move(before);
-            r.fail(DiagnosticCode::bad_profile, "it would cut the fold where " + name +
-                                                    " stands (" + std::to_string(length) + " of " +
-                                                    std::to_string(whole) + " mm left)");
+            r.fail(DiagnosticCode::bad_profile,
+                   "it carries another mechanism, and the outline would shorten its fold with " +
+                       name + " to " + std::to_string(length) + " of " + std::to_string(whole) +
+                       " mm");
             return r;
         }
     }
