@@ -21,6 +21,16 @@ Rows3d rows_of(const std::vector<Vec3>& points)
     return m;
 }
 
+using Rows2d = Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor>;
+
+Rows2d rows_of(const Loop2& loop)
+{
+    Rows2d m(loop.size(), 2);
+    for (size_t i = 0; i < loop.size(); ++i)
+        m.row(i) = loop[i].transpose();
+    return m;
+}
+
 /// None or a 3-sequence of numbers.
 std::optional<Vec3> direction_of(const py::object& value, const char* name)
 {
@@ -68,7 +78,8 @@ void bind_fitting(py::module_& m)
         .def_readwrite("probability", &FitOptions::probability)
         .def_readwrite("threshold", &FitOptions::threshold)
         .def_readwrite("samples", &FitOptions::samples)
-        .def_readwrite("seed", &FitOptions::seed);
+        .def_readwrite("seed", &FitOptions::seed)
+        .def_readwrite("outlines", &FitOptions::outlines);
 
     py::class_<FittedPrimitive>(m, "FittedPrimitive")
         .def_readonly("kind", &FittedPrimitive::kind)
@@ -90,6 +101,25 @@ void bind_fitting(py::module_& m)
         .def_readonly("action", &FitRepair::action)
         .def_readonly("reason", &FitRepair::reason);
 
+    py::class_<FittedProfile>(m, "FittedProfile",
+                              "A principal part's outline from the model (thesis §5.1.3), in the "
+                              "part's profile frame, mm")
+        .def_readonly("mechanism", &FittedProfile::mechanism)
+        .def_readonly("part", &FittedProfile::part)
+        .def_property_readonly("outer", [](const FittedProfile& p) { return rows_of(p.outer); })
+        .def_property_readonly("holes",
+                               [](const FittedProfile& p) {
+                                   std::vector<Rows2d> out;
+                                   for (const Loop2& h : p.holes)
+                                       out.push_back(rows_of(h));
+                                   return out;
+                               })
+        .def_property_readonly(
+            "reference",
+            [](const FittedProfile& p) { return std::make_pair(p.reference.x(), p.reference.y()); })
+        .def_readonly("area", &FittedProfile::area)
+        .def_readonly("area_before", &FittedProfile::area_before);
+
     py::class_<FitResult>(m, "FitResult")
         .def_readonly("card", &FitResult::card)
         .def_property_readonly("model_to_card",
@@ -98,6 +128,7 @@ void bind_fitting(py::module_& m)
         .def_readonly("mechanisms", &FitResult::mechanisms)
         .def_readonly("repairs", &FitResult::repairs)
         .def_readonly("scaffold", &FitResult::scaffold)
+        .def_readonly("profiles", &FitResult::profiles)
         .def_readonly("valid", &FitResult::valid)
         .def_readonly("coverage", &FitResult::coverage)
         .def_readonly("coverage_error", &FitResult::coverage_error)

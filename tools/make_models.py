@@ -122,7 +122,17 @@ def truck_with_wheels():
     return _fuse([body] + wheels)
 
 
+def arched_block():
+    """A 40 x 60 x 40 block whose bottom corners along y are rounded (radius 10): a known outline
+    for profiles (seen along x, a rectangle with two quarter circles cut out)."""
+    top = _box((0, 0, 10), (40, 60, 40))
+    middle = _box((0, 10, 0), (40, 50, 10))
+    arches = [Part.makeCylinder(10, 40, V(0, y, 10), V(1, 0, 0)) for y in (10, 50)]
+    return _fuse([top, middle] + arches)
+
+
 SOLIDS = {
+    "arched_block": arched_block,
     "cuboid": lambda: blocky("cuboid"),
     "house": lambda: blocky("house"),
     "truck": lambda: blocky("truck"),

@@ -92,6 +92,26 @@ def _link_source(card, source_model, model_to_card, source_file):
     card.ModelToCard = FreeCAD.Matrix(*[float(v) for v in model_to_card.reshape(-1)])
 
 
+def _store_profiles(result, made):
+    """Each outline the core fitted (§5.1.3, FitResult.profiles) goes on its feature, so the
+    card rebuilds the same profiled patches (validity and sheets use them)."""
+    from popupwb.profiles import set_profile
+
+    for fitted in getattr(result, "profiles", ()):
+        obj = made.get(fitted.mechanism)
+        if obj is None:
+            raise ValueError(
+                f"profile of {fitted.mechanism}.{fitted.part}: no mechanism {fitted.mechanism}"
+            )
+        set_profile(
+            obj,
+            fitted.part,
+            [tuple(q) for q in fitted.outer],
+            [[tuple(q) for q in hole] for hole in fitted.holes],
+            reference=tuple(fitted.reference),
+        )
+
+
 def build_design(doc, result, model=None, name="Card", source_file=None):
     """Adds the card, its mechanisms and (given the ModelMesh `model`) the source model to `doc`
     from `result` (a popupcore.FitResult); recomputes; returns a FittedDesign. `source_file` is
@@ -114,6 +134,7 @@ def build_design(doc, result, model=None, name="Card", source_file=None):
         values = property_values(mechanism.feature, dict(fitted.parameters), fitted.name)
         obj = make.make_mechanism(mechanism.feature, host, host_pair, name=fitted.name, **values)
         made[fitted.name] = obj
+    _store_profiles(result, made)
     source_model = None
     if model is not None:
         model_to_card = _matrix(result.model_to_card)

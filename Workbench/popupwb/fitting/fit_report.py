@@ -59,6 +59,18 @@ def timings(stages, total):
     return table
 
 
+def profile_entry(profile):
+    """{mechanism, part, area_mm2, area_before_mm2, points, holes} of a FittedProfile."""
+    return {
+        "mechanism": profile.mechanism,
+        "part": profile.part,
+        "area_mm2": float(profile.area),
+        "area_before_mm2": float(profile.area_before),
+        "points": int(len(profile.outer)),
+        "holes": int(len(profile.holes)),
+    }
+
+
 def build_report(
     *,
     model_file,
@@ -120,6 +132,11 @@ def build_report(
         ),
         "diagnostics": list(getattr(result, "diagnostics", None) or []) if result else [],
         "primitives": [primitive_entry(p) for p in result.primitives] if result is not None else [],
+        "profiles": (
+            [profile_entry(p) for p in getattr(result, "profiles", ())]
+            if result is not None
+            else []
+        ),
         "validity": (
             {"valid": bool(validity["valid"]), "diagnostics": list(validity["diagnostics"])}
             if validity is not None

@@ -8,6 +8,7 @@
 
 #include "popup/fitting/alignment.hpp"
 #include "popup/fitting/design_repair.hpp"
+#include "popup/fitting/fit_outlines.hpp"
 #include "popup/fitting/mechanism_mapping.hpp"
 #include "popup/fitting/prism_ransac.hpp"
 #include "popup/fitting/surface_samples.hpp"
@@ -207,6 +208,16 @@ Result<FitResult> fit_design(const ModelMesh& model, const FitOptions& options,
         r.mechanisms.push_back(m);
     }
     r.coverage_error = coverage_error(kept);
+    // §5.1.3: principal patches take the model's outline, as long as the design stays valid.
+    if (options.outlines && r.valid) {
+        OutlineOutcome outlined =
+            fit_outlines_for(model, r.model_to_card, r.scaffold, r.mechanisms, cancel);
+        r.scaffold = std::move(outlined.scaffold);
+        r.profiles = std::move(outlined.profiles);
+        for (const FitRepair& repair : outlined.dropped)
+            r.repairs.push_back(repair);
+        timer.lap("outlines");
+    }
     // Primitives for previews, named by the pairs their mechanisms offer where mapped.
     std::map<int, std::string> host_names;
     for (const auto& p : plans)

@@ -30,6 +30,8 @@ struct FitOptions {
     double threshold = 0.02;   ///< point-to-primitive tolerance, fraction of the diagonal
     int samples = 20000;       ///< pseudo-vertices spread over the surface
     std::uint64_t seed = 1;
+    /// Principal patches take the model's silhouette as a Profile (§5.1.3, fit_outlines.hpp).
+    bool outlines = true;
 };
 
 /// One fitted primitive, in the card's frame at the design state (mm), for previews.
@@ -57,13 +59,25 @@ struct FitRepair {
     std::string reason;
 };
 
+/// A principal part's outline from the model (§5.1.3): what popupwb.profiles.set_profile stores.
+struct FittedProfile {
+    std::string mechanism; ///< B1, T1...
+    std::string part;      ///< TG, L, riser, slope_ground...
+    Loop2 outer;           ///< the profiled patch's outline in the part's profile frame (mm)
+    std::vector<Loop2> holes;
+    Vec2 reference = Vec2::Zero(); ///< the part's size as generated (extent along u, v; mm)
+    double area = 0.0;             ///< mm², of the profiled patch
+    double area_before = 0.0;      ///< mm², of the part as generated
+};
+
 struct FitResult {
     CardParams card;
     Eigen::Matrix4d model_to_card = Eigen::Matrix4d::Identity(); ///< model units to card mm
     std::vector<FittedPrimitive> primitives;
     std::vector<FittedMechanism> mechanisms; ///< hosts before the mechanisms they carry
     std::vector<FitRepair> repairs;
-    Scaffold scaffold;     ///< card plus mechanisms at the design state (180°)
+    Scaffold scaffold; ///< card plus mechanisms at the design state (180°), profiled
+    std::vector<FittedProfile> profiles; ///< outlines of the principal parts (options.outlines)
     bool valid = false;    ///< the simulator's full validity check passed on `scaffold`
     double coverage = 0.0; ///< fraction of the pseudo-vertices within threshold of the pop-up
     std::vector<std::pair<std::string, double>> timings_s; ///< stage -> seconds, in order

@@ -1,0 +1,44 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "popup/fitting/fit_design.hpp"
+#include "popup/fitting/model_mesh.hpp"
+#include "popup/model/cancel_flag.hpp"
+#include "popup/model/scaffold.hpp"
+
+namespace popup {
+
+/// The parts of a mechanism of core kind `type` that take the model's outline (thesis Fig 5.3,
+/// the shaded principal faces; §5.1.3): box fold L, R, TG, TB and its end panels (FL, FR, BL,
+/// BR, numbered when stacked), tent fold both slopes, step fold riser and tread, v-fold both
+/// wings. Part-name prefixes; a mechanism's patches whose part starts with one of them qualify.
+std::vector<std::string> principal_parts(const std::string& type);
+
+/// What the outline stage did.
+struct OutlineOutcome {
+    Scaffold scaffold;                   ///< the design with the kept profiles applied
+    std::vector<FittedProfile> profiles; ///< kept, in scaffold patch order
+    std::vector<FitRepair> dropped;      ///< {mechanism, "profile dropped", "PART: why"}
+};
+
+/// §5.1.3: every principal part of `mechanisms` (as built in `scaffold`, a valid design at 180°)
+/// takes the orthographic silhouette of `model_in_card` (the model already in card mm) on its
+/// plane, posed where the part stands as the model does (a step flat at 180° is posed at 90°),
+/// clipped to the part by apply_profile. A mechanism's profiles are applied together and kept
+/// when the full check_validity still passes; otherwise each is tried alone, in patch order, and
+/// the ones that break validity (or that apply_profile refuses) are dropped and reported. A
+/// part whose silhouette covers it whole keeps no profile (a stored outline would clip later
+/// edits of its dimensions); a part carrying a later mechanism keeps one only when that
+/// mechanism's folds on it stay whole (the workbench cuts a part before it builds on it).
+OutlineOutcome fit_outlines(const ModelMesh& model_in_card, const Scaffold& scaffold,
+                            const std::vector<FittedMechanism>& mechanisms,
+                            const CancelFlag* cancel = nullptr);
+
+/// The same for `model` in its own units, placed on the card by `model_to_card` first.
+OutlineOutcome fit_outlines_for(const ModelMesh& model, const Eigen::Matrix4d& model_to_card,
+                                const Scaffold& scaffold,
+                                const std::vector<FittedMechanism>& mechanisms,
+                                const CancelFlag* cancel = nullptr);
+
+} // namespace popup

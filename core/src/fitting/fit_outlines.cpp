@@ -1,0 +1,380 @@
+#include "popup/fitting/fit_outlines.hpp"
+
+#include "../geometry/clipper_paths.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <map>
+#include <optional>
+
+#include "popup/fitting/silhouette.hpp"
+#include "popup/model/apply_profile.hpp"
+#include "popup/model/profile.hpp"
+#include "popup/simulation/check_validity.hpp"
+#include "popup/simulation/simulate_fold.hpp"
+
+namespace popup {
+namespace {
+
+/// `part` is `prefix`, or `prefix` followed by a number (stacked box end panels: FL1, FL2...).
+bool is_part(const std::string& part, const std::string& prefix)
+{
+    if (part.rfind(prefix, 0) != 0)
+        return false;
+    return std::all_of(part.begin() + long(prefix.size()), part.end(),
+                       [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; });
+}
+
+ModelMesh placed(const ModelMesh& model, const Eigen::Matrix4d& m)
+{
+    ModelMesh out;
+    out.source = model.source;
+    out.triangles = model.triangles;
+    out.vertices.reserve(model.vertices.size());
+    for (const Vec3& x : model.vertices)
+        out.vertices.push_back(m.topLeftCorner<3, 3>() * x + m.topRightCorner<3, 1>());
+    return out;
+}
+
+/// One principal part: its patch id and its part name.
+struct Part {
+    int patch = -1;
+    std::string name;
+};
+
+/// The mechanism's principal parts in `s`, sorted by part name: the order in which the
+/// workbench applies a feature's profiles (popupwb.profiles.apply_profiles), so each frame is
+/// measured on the same paper in both places.
+std::vector<Part> parts_of(const Scaffold& s, const FittedMechanism& m)
+{
+    std::vector<Part> out;
+    const std::string prefix = m.name + ".";
+    for (const Patch& p : s.patches) {
+        if (p.name.rfind(prefix, 0) != 0)
+            continue;
+        const std::string part = p.name.substr(prefix.size());
+        for (const std::string& principal : principal_parts(m.type))
+            if (is_part(part, principal)) {
+                out.push_back({p.id, part});
+                break;
+            }
+    }
+    std::sort(out.begin(), out.end(), [](const Part& a, const Part& b) { return a.name < b.name; });
+    return out;
+}
+
+/// Extent of a patch along u and v of its profile frame (popupwb.profiles.part_size).
+Vec2 size_in(const Patch& patch, const ProfileFrame& f)
+{
+    Vec2 lo(1e300, 1e300), hi(-1e300, -1e300);
+    for (const Vec3& x : patch.outer) {
+        const Vec2 q = f.to_frame(x);
+        lo = lo.cwiseMin(q);
+        hi = hi.cwiseMax(q);
+    }
+    return hi - lo;
+}
+
+/// A step whose riser and tread are parallel lies flat: it stands as the model does when its
+/// host is at a right angle, which for a host flat at 180° is the card open at 90°.
+bool lies_flat(const Scaffold& s, const FittedMechanism& m)
+{
+    if (m.type != "step_fold")
+        return false;
+    const Patch* riser = nullptr;
+    const Patch* tread = nullptr;
+    for (const Patch& p : s.patches) {
+        if (p.name == m.name + ".riser")
+            riser = &p;
+        if (p.name == m.name + ".tread")
+            tread = &p;
+    }
+    if (!riser || !tread)
+        return false;
+    Patch a = *riser, b = *tread;
+    a.derive_frame();
+    b.derive_frame();
+    return std::abs(a.normal.dot(b.normal)) > 1.0 - 1e-6;
+}
+
+/// Cuts narrower than this (mm) are the fit's round-off, not the model's outline: the sheets'
+/// smallest feature (SheetOptions::min_feature, 3 mm) is twice it.
+constexpr double kSmallestCut = 1.5;
+
+/// `patch` (its outline in `frame`) minus the parts of the region the silhouette cuts away that
+/// are wider than 2·kSmallestCut (a morphological opening of the cut-away region, exact on
+/// Clipper's grid): slivers between a fitted part and a model a little smaller, and thin
+/// notches, stay paper. Empty when nothing is left to cut.
+std::optional<Profile> significant_cut(const Patch& patch, const ProfileFrame& frame,
+                                       const Profile& silhouette)
+{
+    using namespace ClipperLib;
+    Loop2 outline;
+    for (const Vec3& x : patch.outer)
+        outline.push_back(frame.to_frame(x));
+    std::vector<Loop2> holes;
+    for (const Loop3& h : patch.holes) {
+        Loop2 l;
+        for (const Vec3& x : h)
+            l.push_back(frame.to_frame(x));
+        holes.push_back(l);
+    }
+    Paths paper = counter_clockwise_paths({outline});
+    if (!holes.empty()) {
+        Clipper c;
+        c.AddPaths(paper, ptSubject, true);
+        c.AddPaths(counter_clockwise_paths(holes), ptClip, true);
+        c.Execute(ctDifference, paper, pftNonZero, pftNonZero);
+    }
+    Paths shape = counter_clockwise_paths({silhouette.outer});
+    if (!silhouette.holes.empty()) {
+        Clipper c;
+        c.AddPaths(shape, ptSubject, true);
+        c.AddPaths(counter_clockwise_paths(silhouette.holes), ptClip, true);
+        c.Execute(ctDifference, shape, pftNonZero, pftNonZero);
+    }
+    Paths away;
+    {
+        Clipper c;
+        c.AddPaths(paper, ptSubject, true);
+        c.AddPaths(shape, ptClip, true);
+        c.Execute(ctDifference, away, pftNonZero, pftNonZero);
+    }
+    const double r = kSmallestCut * clipper_scale;
+    Paths eroded, opened;
+    {
+        ClipperOffset o(4.0);
+        o.AddPaths(away, jtMiter, etClosedPolygon);
+        o.Execute(eroded, -r);
+    }
+    if (eroded.empty())
+        return std::nullopt;
+    {
+        ClipperOffset o(4.0);
+        o.AddPaths(eroded, jtMiter, etClosedPolygon);
+        o.Execute(opened, r);
+    }
+    PolyTree kept;
+    {
+        Clipper c;
+        c.AddPaths(paper, ptSubject, true);
+        c.AddPaths(opened, ptClip, true);
+        c.Execute(ctDifference, kept, pftNonZero, pftNonZero);
+    }
+    // The largest piece, with its holes (apply_profile drops pieces without folds anyway).
+    const PolyNode* best = nullptr;
+    double best_area = 0;
+    for (const PolyNode* n : kept.Childs) {
+        const double a = std::abs(path_area(n->Contour));
+        if (a > best_area) {
+            best_area = a;
+            best = n;
+        }
+    }
+    if (!best)
+        return std::nullopt;
+    Profile out;
+    out.name = silhouette.name;
+    out.outer = to_loop(best->Contour);
+    for (const PolyNode* h : best->Childs)
+        out.holes.push_back(to_loop(h->Contour));
+    return out;
+}
+
+/// Length of each fold and joint of `patch`, by the other patch's name, when the patch carries
+/// a mechanism built after its own (a hinge to a patch whose name does not start with `own`
+/// and whose id is larger); empty otherwise. Such a patch's folds must stay whole: the
+/// workbench cuts a part before it builds what stands on it (card_scaffold.build), and the
+/// later mechanism is built on the base pair's fold (one of these) and folds onto the part.
+std::map<std::string, double> carried_folds(const Scaffold& s, int patch, const std::string& own)
+{
+    std::map<std::string, double> out;
+    bool carries = false;
+    for (const Hinge& h : s.hinges) {
+        if (h.patch_a != patch && h.patch_b != patch)
+            continue;
+        const int other = h.patch_a == patch ? h.patch_b : h.patch_a;
+        const Patch* p = s.find_patch(other);
+        if (!p)
+            continue;
+        carries |= other > patch && p->name.rfind(own, 0) != 0;
+        out[p->name] += (h.to - h.from).norm();
+    }
+    return carries ? out : std::map<std::string, double>{};
+}
+
+/// Applies one part's silhouette to `s`; the profile it kept (an empty part when the silhouette
+/// covers the whole part: `s` unchanged), or why not.
+Result<FittedProfile> outline_part(Scaffold& s, const ModelMesh& model, const FittedMechanism& m,
+                                   const Part& part, bool pose_at_90)
+{
+    Result<FittedProfile> r;
+    const Result<ProfileFrame> frame = profile_frame(s, part.patch);
+    if (!frame.ok) {
+        r.fail_with(frame.diagnostics);
+        return r;
+    }
+    SilhouetteOptions so;
+    if (pose_at_90) {
+        const Result<FoldSweep> sweep = simulate_fold(s, {M_PI / 2});
+        if (!sweep.ok || sweep.value.states.empty()) {
+            r.fail_with(sweep.diagnostics);
+            if (r.ok)
+                r.fail(DiagnosticCode::bad_profile, "the card could not be posed at 90°");
+            return r;
+        }
+        so.pose = sweep.value.states.front().poses[size_t(s.patch_index(part.patch))];
+    }
+    const Result<Silhouette> sil = silhouette_profile(model, s, part.patch, so);
+    if (!sil.ok) {
+        r.fail_with(sil.diagnostics);
+        return r;
+    }
+    Profile silhouette = sil.value.profile;
+    silhouette.name = "silhouette of the model";
+    FittedProfile& fp = r.value;
+    fp.mechanism = m.name;
+    fp.part = part.name;
+    fp.reference = size_in(*s.find_patch(part.patch), frame.value);
+    const std::optional<Profile> wanted =
+        significant_cut(*s.find_patch(part.patch), frame.value, silhouette);
+    if (!wanted) { // the part is the model's outline there, up to slivers
+        fp.part.clear();
+        return r;
+    }
+    const Profile& profile = *wanted;
+    const std::map<std::string, double> carried = carried_folds(s, part.patch, m.name + ".");
+    Scaffold before = s;
+    const Result<ProfileApplied> applied = apply_profile(s, part.patch, profile);
+    if (!applied.ok) {
+        r.fail_with(applied.diagnostics);
+        return r;
+    }
+    // A part carrying a later mechanism keeps its folds whole (see carried_folds).
+    const double tol = 1e-6 * std::max(1.0, fp.reference.maxCoeff());
+    const std::map<std::string, double> left = carried_folds(s, part.patch, m.name + ".");
+    for (const auto& [name, whole] : carried) {
+        const double length = left.count(name) ? left.at(name) : 0.0;
+        if (length < whole - tol) {
+            s = std::move(before);
+            r.fail(DiagnosticCode::bad_profile,
+                   "it carries another mechanism, and the outline would shorten its fold with " +
+                       name + " to " + std::to_string(length) + " of " + std::to_string(whole) +
+                       " mm");
+            return r;
+        }
+    }
+    // A silhouette covering the whole part changes nothing: no profile, so the part still
+    // follows later edits of its mechanism's dimensions (a stored outline would clip them).
+    if (std::abs(applied.value.area_after - applied.value.area_before) <=
+        1e-6 * applied.value.area_before) {
+        s = std::move(before);
+        fp.part.clear();
+        return r;
+    }
+    const Patch& cut = *s.find_patch(part.patch);
+    for (const Vec3& x : cut.outer)
+        fp.outer.push_back(applied.value.frame.to_frame(x));
+    for (const Loop3& hole : cut.holes) {
+        Loop2 h;
+        for (const Vec3& x : hole)
+            h.push_back(applied.value.frame.to_frame(x));
+        fp.holes.push_back(h);
+    }
+    fp.area = applied.value.area_after;
+    fp.area_before = applied.value.area_before;
+    return r;
+}
+
+std::string first_error(const Diagnostics& d, const std::string& otherwise)
+{
+    for (const Diagnostic& x : d)
+        if (x.severity == Severity::error)
+            return x.message;
+    return otherwise;
+}
+
+} // namespace
+
+std::vector<std::string> principal_parts(const std::string& type)
+{
+    if (type == "box_fold")
+        return {"L", "R", "TG", "TB", "FL", "FR", "BL", "BR"};
+    if (type == "tent_fold")
+        return {"slope_ground", "slope_backdrop"};
+    if (type == "step_fold")
+        return {"riser", "tread"};
+    if (type == "v_fold")
+        return {"wing_ground", "wing_backdrop"};
+    return {};
+}
+
+OutlineOutcome fit_outlines(const ModelMesh& model_in_card, const Scaffold& scaffold,
+                            const std::vector<FittedMechanism>& mechanisms,
+                            const CancelFlag* cancel)
+{
+    OutlineOutcome out;
+    out.scaffold = scaffold;
+    ValidityOptions vo;
+    vo.cancel = cancel;
+    for (const FittedMechanism& m : mechanisms) {
+        stop_if_cancelled(cancel, "fit_design: outlines");
+        const std::vector<Part> parts = parts_of(out.scaffold, m);
+        if (parts.empty())
+            continue;
+        const bool flat = lies_flat(out.scaffold, m);
+        // All of the mechanism's outlines at once: one check when they agree.
+        Scaffold together = out.scaffold;
+        std::vector<FittedProfile> kept;
+        bool all_applied = true;
+        for (const Part& part : parts) {
+            Result<FittedProfile> fp = outline_part(together, model_in_card, m, part, flat);
+            if (!fp.ok) {
+                all_applied = false;
+                break;
+            }
+            if (!fp.value.part.empty())
+                kept.push_back(fp.value);
+        }
+        if (all_applied && check_validity(together, vo).valid()) {
+            out.scaffold = together;
+            for (const FittedProfile& fp : kept)
+                out.profiles.push_back(fp);
+            continue;
+        }
+        // One at a time: keep what the simulator accepts.
+        for (const Part& part : parts) {
+            Scaffold trial = out.scaffold;
+            Result<FittedProfile> fp = outline_part(trial, model_in_card, m, part, flat);
+            if (!fp.ok) {
+                out.dropped.push_back(
+                    {m.name, "profile dropped",
+                     part.name + ": " + first_error(fp.diagnostics, "it could not be applied")});
+                continue;
+            }
+            if (fp.value.part.empty())
+                continue; // the part is already the model's outline there
+            const ValidityReport report = check_validity(trial, vo);
+            if (!report.valid()) {
+                out.dropped.push_back({m.name, "profile dropped",
+                                       part.name + ": the validity check failed with it: " +
+                                           first_error(report.diagnostics, "not valid")});
+                continue;
+            }
+            out.scaffold = trial;
+            out.profiles.push_back(fp.value);
+        }
+    }
+    return out;
+}
+
+OutlineOutcome fit_outlines_for(const ModelMesh& model, const Eigen::Matrix4d& model_to_card,
+                                const Scaffold& scaffold,
+                                const std::vector<FittedMechanism>& mechanisms,
+                                const CancelFlag* cancel)
+{
+    return fit_outlines(placed(model, model_to_card), scaffold, mechanisms, cancel);
+}
+
+} // namespace popup

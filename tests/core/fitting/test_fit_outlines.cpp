@@ -1,0 +1,220 @@
+// Outlines that follow the model (thesis §5.1.3): a box fold built here on a 200 × 140 card and
+// models extruded along x over exactly the box's depth, so each side's silhouette is the
+// extruded polygon, whose area is a closed form (a rectangle with polygonal quarter circles).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "popup/fitting/fit_design.hpp"
+#include "popup/fitting/fit_outlines.hpp"
+#include "popup/mechanisms/box_fold.hpp"
+#include "popup/model/card.hpp"
+#include "popup/simulation/check_validity.hpp"
+#include "synthetic_models.hpp"
+
+using namespace popup;
+using namespace popup::testing;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kOffset = 50, kWidth = 60, kDepth = 30, kHeight = 40;
+
+struct Design {
+    Scaffold scaffold;
+    BasePatchPair host;
+    std::vector<FittedMechanism> mechanisms;
+};
+
+Design box_design(double height = kHeight)
+{
+    CardParams cp;
+    cp.width = 200;
+    cp.depth = 140;
+    Design d;
+    d.scaffold = make_card(cp).value;
+    d.host = central_fold(d.scaffold);
+    BoxFoldParams bp;
+    bp.offset = kOffset;
+    bp.width = kWidth;
+    bp.depth_ground = kDepth;
+    bp.depth_backdrop = kDepth;
+    bp.height = height;
+    EXPECT_TRUE(add_box_fold(d.scaffold, d.host, bp, "B1").ok);
+    FittedMechanism m;
+    m.type = "box_fold";
+    m.name = "B1";
+    m.host = "central fold";
+    d.mechanisms.push_back(m);
+    return d;
+}
+
+/// `section` (y along the box's hinge from its offset, z up) extruded over the box's depth and
+/// placed in the card frame through the host pair.
+ModelMesh placed_section(const std::vector<Vec2>& section, const BasePatchPair& host)
+{
+    std::vector<Vec2> yz;
+    for (const Vec2& q : section)
+        yz.push_back({q.x() + kOffset, q.y()});
+    ModelMesh m = extrude_elevation(yz, kDepth);
+    for (Vec3& x : m.vertices)
+        x = host.to_world(x.x(), x.y(), x.z());
+    return m;
+}
+
+/// Quarter circle of radius r about c from angle a0, `n` chords, without its first point.
+void arc(std::vector<Vec2>& out, const Vec2& c, double r, double a0, int n)
+{
+    for (int k = 1; k <= n; ++k) {
+        const double a = a0 + 0.5 * kPi * k / n;
+        out.push_back(c + r * Vec2(std::cos(a), std::sin(a)));
+    }
+}
+
+const Patch& patch_named(const Scaffold& s, const std::string& name)
+{
+    for (const Patch& p : s.patches)
+        if (p.name == name)
+            return p;
+    throw std::runtime_error("no patch " + name);
+}
+
+} // namespace
+
+TEST(FitOutlines, PrincipalPartsFollowFigure53)
+{
+    EXPECT_EQ(principal_parts("box_fold"),
+              (std::vector<std::string>{"L", "R", "TG", "TB", "FL", "FR", "BL", "BR"}));
+    EXPECT_EQ(principal_parts("tent_fold"),
+              (std::vector<std::string>{"slope_ground", "slope_backdrop"}));
+    EXPECT_EQ(principal_parts("step_fold"), (std::vector<std::string>{"riser", "tread"}));
+    EXPECT_TRUE(principal_parts("unknown").empty());
+}
+
+TEST(FitOutlines, AWheelArchGivesTheAnalyticArea)
+{
+    // Side section: the box's 60 × 40 rectangle with a semicircular arch (radius 12, 16 chords)
+    // bitten out of the middle of its foot. Area = W·c − 16 · ½R² sin(π/16).
+    const double radius = 12;
+    const int n = 16;
+    std::vector<Vec2> s{{0, 0}};
+    for (int k = 0; k <= n; ++k) {
+        const double a = kPi - kPi * k / n;
+        s.push_back({0.5 * kWidth + radius * std::cos(a), radius * std::sin(a)});
+    }
+    s.push_back({kWidth, 0});
+    s.push_back({kWidth, kHeight});
+    s.push_back({0, kHeight});
+    Design d = box_design();
+    const ModelMesh model = placed_section(s, d.host);
+    const OutlineOutcome out = fit_outlines(model, d.scaffold, d.mechanisms);
+
+    const double expected = kWidth * kHeight - 8 * radius * radius * std::sin(kPi / n);
+    // The polygon is within its chord error of the true half disc: R² (π/2 − 8 sin(π/16))
+    // = 1.45 mm².
+    EXPECT_NEAR(expected, kWidth * kHeight - 0.5 * kPi * radius * radius, 1.46);
+    EXPECT_TRUE(out.dropped.empty()) << out.dropped.front().reason;
+    // The top and the ends see whole rectangles: they keep no profile (nothing to cut).
+    ASSERT_EQ(out.profiles.size(), 2u);
+    EXPECT_EQ(out.profiles[0].part, "L");
+    EXPECT_EQ(out.profiles[1].part, "R");
+    for (const FittedProfile& p : out.profiles) {
+        const Patch& patch = patch_named(out.scaffold, "B1." + p.part);
+        EXPECT_NEAR(p.area, patch.area(), 1e-6) << p.part;
+        EXPECT_NEAR(p.area, expected, 1e-3) << p.part;
+        EXPECT_NEAR(p.area_before, kWidth * kHeight, 1e-6);
+        EXPECT_GE(p.outer.size(), size_t(n + 4)) << p.part; // the arch's points are kept
+        // Reference: the side as generated, W along its foot, c up.
+        EXPECT_NEAR(p.reference.x(), kWidth, 1e-9);
+        EXPECT_NEAR(p.reference.y(), kHeight, 1e-9);
+    }
+    EXPECT_NEAR(patch_named(out.scaffold, "B1.TG").area(), kWidth * kDepth, 1e-9);
+    EXPECT_TRUE(check_validity(out.scaffold).valid());
+
+    // Deterministic: the same input gives the same outlines, point for point.
+    const OutlineOutcome again = fit_outlines(model, d.scaffold, d.mechanisms);
+    ASSERT_EQ(again.profiles.size(), out.profiles.size());
+    for (size_t i = 0; i < out.profiles.size(); ++i) {
+        EXPECT_EQ(again.profiles[i].part, out.profiles[i].part);
+        EXPECT_EQ(again.profiles[i].outer, out.profiles[i].outer);
+    }
+}
+
+TEST(FitOutlines, SliversAreNotCut)
+{
+    // The model 1 mm lower and 2 mm shorter than the box: the cut-away bands are narrower than
+    // the 3 mm the sheets can cut, so no part takes a profile.
+    std::vector<Vec2> s{{1, 0}, {kWidth - 1, 0}, {kWidth - 1, kHeight - 1}, {1, kHeight - 1}};
+    Design d = box_design();
+    const OutlineOutcome out = fit_outlines(placed_section(s, d.host), d.scaffold, d.mechanisms);
+    EXPECT_TRUE(out.profiles.empty());
+    EXPECT_TRUE(out.dropped.empty());
+}
+
+TEST(FitOutlines, AnOutlineThatLosesAFoldIsDroppedAndReported)
+{
+    // The model 10 mm lower than the box: L and R would lose the fold to the top, so their
+    // profiles go; the end panels are cut to the model's height (30 × 30 mm each); the top
+    // sees the whole model and keeps its rectangle. The design stays valid.
+    const double low = kHeight - 10;
+    std::vector<Vec2> s{{0, 0}, {kWidth, 0}, {kWidth, low}, {0, low}};
+    Design d = box_design();
+    const OutlineOutcome out = fit_outlines(placed_section(s, d.host), d.scaffold, d.mechanisms);
+    ASSERT_EQ(out.dropped.size(), 2u);
+    EXPECT_EQ(out.dropped[0].mechanism, "B1");
+    EXPECT_EQ(out.dropped[0].action, "profile dropped");
+    EXPECT_EQ(out.dropped[0].reason.rfind("L: ", 0), 0u) << out.dropped[0].reason;
+    EXPECT_EQ(out.dropped[1].reason.rfind("R: ", 0), 0u) << out.dropped[1].reason;
+    EXPECT_NE(out.dropped[0].reason.find("fold"), std::string::npos) << out.dropped[0].reason;
+    ASSERT_EQ(out.profiles.size(), 4u);
+    for (const FittedProfile& p : out.profiles) {
+        EXPECT_TRUE(p.part == "FL" || p.part == "FR" || p.part == "BL" || p.part == "BR");
+        EXPECT_NEAR(p.area, kDepth * low, 1e-3) << p.part;
+    }
+    EXPECT_NEAR(patch_named(out.scaffold, "B1.L").area(), kWidth * kHeight, 1e-9);
+    EXPECT_TRUE(check_validity(out.scaffold).valid());
+}
+
+TEST(FitOutlines, FitDesignProfilesTheArchedBlockDeterministically)
+{
+    // The arched section of the test above, 40 mm deep, fitted by the whole pipeline.
+    const double rho = 10;
+    const int n = 8;
+    std::vector<Vec2> s{{rho, 0}, {kWidth - rho, 0}};
+    arc(s, {kWidth - rho, rho}, rho, -0.5 * kPi, n);
+    s.push_back({kWidth, kHeight});
+    s.push_back({0, kHeight});
+    s.push_back({0, rho});
+    arc(s, {rho, rho}, rho, kPi, n);
+    s.pop_back();
+    ModelMesh block = extrude_elevation(s, 20);
+    block.source = "arched block";
+    FitOptions o;
+    const Result<FitResult> a = fit_design(block, o);
+    const Result<FitResult> b = fit_design(block, o);
+    ASSERT_TRUE(a.ok);
+    ASSERT_TRUE(a.value.valid);
+    EXPECT_TRUE(check_validity(a.value.scaffold).valid());
+    ASSERT_FALSE(a.value.profiles.empty());
+    ASSERT_EQ(a.value.profiles.size(), b.value.profiles.size());
+    for (size_t i = 0; i < a.value.profiles.size(); ++i) {
+        const FittedProfile &p = a.value.profiles[i], &q = b.value.profiles[i];
+        EXPECT_EQ(p.mechanism + p.part, q.mechanism + q.part);
+        EXPECT_EQ(p.outer, q.outer);
+        // The patch in the returned scaffold, re-measured, is the profiled one.
+        EXPECT_NEAR(p.area, patch_named(a.value.scaffold, p.mechanism + "." + p.part).area(), 1e-6);
+        EXPECT_LT(p.area, p.area_before); // only outlines that cut something are kept
+    }
+    bool timed = false;
+    for (const auto& [stage, seconds] : a.value.timings_s)
+        timed |= stage == "outlines";
+    EXPECT_TRUE(timed);
+
+    // Switched off: the same mechanisms, their parts as generated.
+    o.outlines = false;
+    const Result<FitResult> plain = fit_design(block, o);
+    EXPECT_TRUE(plain.value.profiles.empty());
+    for (const FittedProfile& p : a.value.profiles)
+        EXPECT_NEAR(patch_named(plain.value.scaffold, p.mechanism + "." + p.part).area(),
+                    p.area_before, 1e-6);
+}
