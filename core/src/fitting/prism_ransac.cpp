@@ -176,6 +176,28 @@ bool thick_enough(const PrismHost& h, const Prism& m, double min_part)
     return std::min(m.s1, -m.s0) >= min_part && m.height >= min_part;
 }
 
+/// Grows a too thin prism to `min_part` where its host has room: along the hinge about its
+/// middle, a box's depth and height. The score then judges the grown prism like any other (it
+/// must still enclose no sample), so a thin slab inside a round model becomes a thin box.
+void grow_to(const PrismHost& h, Prism& m, double min_part)
+{
+    if (m.a1 - m.a0 < min_part && h.length >= min_part) {
+        const double mid =
+            std::clamp(0.5 * (m.a0 + m.a1), 0.5 * min_part, h.length - 0.5 * min_part);
+        m.a0 = mid - 0.5 * min_part;
+        m.a1 = mid + 0.5 * min_part;
+    }
+    if (m.kind != Prism::Kind::rectangular || !h.flat)
+        return;
+    const double reach = std::min(h.across_max, -h.across_min);
+    if (m.s1 < min_part && min_part <= reach) {
+        m.s1 = min_part;
+        m.s0 = -min_part;
+    }
+    if (m.height < min_part && min_part < h.up_max)
+        m.height = min_part;
+}
+
 /// Keeps a prism inside what its host can carry and at least `min_part` thick; false if it
 /// cannot.
 bool fit_host(const PrismHost& h, Prism& m, double eps, double min_part)
@@ -200,7 +222,10 @@ bool fit_host(const PrismHost& h, Prism& m, double eps, double min_part)
     }
     m.a0 = std::max(m.a0, 0.0);
     m.a1 = std::min(m.a1, h.length);
-    return m.a1 - m.a0 > eps && thick_enough(h, m, min_part);
+    if (m.a1 - m.a0 <= eps)
+        return false;
+    grow_to(h, m, min_part);
+    return thick_enough(h, m, min_part);
 }
 
 /// Grid cells of the localised sampling, one sorted list per level.
