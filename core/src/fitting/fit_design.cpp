@@ -101,6 +101,9 @@ Diagnostics check_fit_options(const FitOptions& o)
     range(d, "probability", o.probability, o.probability > 0 && o.probability < 1, "> 0 and < 1");
     range(d, "threshold", o.threshold, o.threshold > 0 && o.threshold <= 0.2,
           "> 0 and <= 0.2 (a fraction of the model's diagonal)");
+    range(d, "min_part_mm", o.min_part_mm,
+          o.min_part_mm >= 0 && o.min_part_mm <= 0.25 * std::min(o.card_width, o.card_depth),
+          ">= 0 and <= a quarter of the card's smaller dimension (mm)");
     range(d, "samples", o.samples, o.samples >= 500 && o.samples <= 2000000, "500 to 2000000");
     return d;
 }
@@ -163,6 +166,7 @@ Result<FitResult> fit_design(const ModelMesh& model, const FitOptions& options,
     ro.probability = options.probability;
     ro.seed = options.seed;
     ro.max_primitives = options.max_mechanisms;
+    ro.min_part = options.min_part_mm;
     ro.cancel = cancel;
     const RansacResult fit = fit_prisms(samples, card, ro);
     r.ransac_draws = fit.draws;
@@ -176,8 +180,11 @@ Result<FitResult> fit_design(const ModelMesh& model, const FitOptions& options,
         r.repairs.push_back({name, "dropped", "no mechanism of Table 5.1 fits its host"});
     }
     std::vector<MechanismPlan> plans = mapping.plans;
-    for (const auto& [name, why] : refit_for_foldability(plans))
+    for (const auto& [name, why] : refit_for_foldability(plans, options.min_part_mm))
         r.repairs.push_back({name, "trimmed", why});
+    // Strictly inside the generators' ranges, by a millionth of the card (docs/DESIGN.md).
+    keep_inside_ranges(plans, options.card_width, options.card_depth,
+                       1e-6 * std::max(options.card_width, options.card_depth));
     timer.lap("map");
     stop_if_cancelled(cancel, "fit_design: mapping");
 

@@ -178,7 +178,7 @@ Mapping map_mechanisms(const RansacResult& fit)
 }
 
 std::vector<std::pair<std::string, std::string>>
-refit_for_foldability(std::vector<MechanismPlan>& plans)
+refit_for_foldability(std::vector<MechanismPlan>& plans, double min_part)
 {
     std::vector<std::pair<std::string, std::string>> changes;
     auto sweep = [](const MechanismPlan& p) {
@@ -218,7 +218,7 @@ refit_for_foldability(std::vector<MechanismPlan>& plans)
             if (overlap > 0) {
                 auto& q = second.parameters;
                 const double keep = q.count("width") ? q.at("width") - overlap : 0.0;
-                if (q.count("width") && keep > 0) {
+                if (q.count("width") && keep > 0 && keep >= min_part) {
                     q["offset"] += overlap;
                     q["width"] = keep;
                     std::ostringstream why;
@@ -229,6 +229,61 @@ refit_for_foldability(std::vector<MechanismPlan>& plans)
             }
         }
     return changes;
+}
+
+namespace {
+
+// What a host offers a mechanism standing on it (mm): its length along the hinge and the depth
+// on each side (for a box's side pairs: the wall's height on one side, the page on the other).
+struct HostRoom {
+    double length = 0, ground = 0, backdrop = 0;
+};
+
+HostRoom room_offered(const MechanismPlan& box, const HostRoom& its_host, const std::string& part)
+{
+    const auto& q = box.parameters;
+    const double width = q.at("width"), dg = q.at("depth_ground"), db = q.at("depth_backdrop");
+    if (part == "top")
+        return {width, dg, db};
+    if (part == "side_ground")
+        return {width, its_host.ground - dg, q.at("height")};
+    return {width, q.at("height"), its_host.backdrop - db}; // side_backdrop
+}
+
+void at_most(std::map<std::string, double>& q, const char* key, double limit)
+{
+    if (q.count(key))
+        q[key] = std::min(q[key], limit);
+}
+
+} // namespace
+
+void keep_inside_ranges(std::vector<MechanismPlan>& plans, double card_width, double card_depth,
+                        double margin)
+{
+    std::vector<HostRoom> host_of(plans.size());
+    for (size_t k = 0; k < plans.size(); ++k) {
+        MechanismPlan& p = plans[k];
+        HostRoom host{card_width, card_depth, card_depth};
+        if (p.parent >= 0) {
+            const std::string part = p.host.substr(p.host.find('.') + 1);
+            host = room_offered(plans[p.parent], host_of[p.parent], part);
+        }
+        auto& q = p.parameters;
+        // Along the hinge: [margin, length − margin].
+        const double extent =
+            q.count("width") ? q["width"] : q.at("spine") * std::cos(q.at("spine_angle"));
+        const double span = std::min(extent, host.length - 2 * margin);
+        if (q.count("width"))
+            q["width"] = span;
+        q["offset"] = std::clamp(q.at("offset"), margin, host.length - margin - span);
+        // Across: below each side's depth.
+        for (const char* key : {"depth_ground", "run_ground", "foot"})
+            at_most(q, key, host.ground - margin);
+        for (const char* key : {"depth_backdrop", "run_backdrop", "foot_backdrop"})
+            at_most(q, key, host.backdrop - margin);
+        host_of[k] = host;
+    }
 }
 
 } // namespace popup

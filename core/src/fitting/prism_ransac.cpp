@@ -162,8 +162,45 @@ bool triangle_from_lines(const PrismHost& h, Vec2 p1, Vec2 d1, Vec2 p2, Vec2 d2,
            m.s0 > h.across_min && m.s1 < h.across_max && m.s1 - m.s0 > eps;
 }
 
-/// Keeps a rectangular prism inside what its host can carry; false if it cannot.
-bool fit_host(const PrismHost& h, Prism& m, double eps)
+/// Every dimension of the prism that becomes a glued crease is at least `min_part`: the length
+/// along the hinge (every mechanism's patches are glued to its host along it) and, for a box
+/// fold (a rectangular prism on a flat host), each depth (its centre panel is glued to both
+/// pages along them) and the height (its end panels are glued to its sides along it). A step's
+/// runs and a tent's feet meet their host in folds of their own, not glued ones.
+bool thick_enough(const PrismHost& h, const Prism& m, double min_part)
+{
+    if (m.a1 - m.a0 < min_part)
+        return false;
+    if (m.kind != Prism::Kind::rectangular || !h.flat)
+        return true;
+    return std::min(m.s1, -m.s0) >= min_part && m.height >= min_part;
+}
+
+/// Grows a too thin prism to `min_part` where its host has room: along the hinge about its
+/// middle, a box's depth and height. The score then judges the grown prism like any other (it
+/// must still enclose no sample), so a thin slab inside a round model becomes a thin box.
+void grow_to(const PrismHost& h, Prism& m, double min_part)
+{
+    if (m.a1 - m.a0 < min_part && h.length >= min_part) {
+        const double mid =
+            std::clamp(0.5 * (m.a0 + m.a1), 0.5 * min_part, h.length - 0.5 * min_part);
+        m.a0 = mid - 0.5 * min_part;
+        m.a1 = mid + 0.5 * min_part;
+    }
+    if (m.kind != Prism::Kind::rectangular || !h.flat)
+        return;
+    const double reach = std::min(h.across_max, -h.across_min);
+    if (m.s1 < min_part && min_part <= reach) {
+        m.s1 = min_part;
+        m.s0 = -min_part;
+    }
+    if (m.height < min_part && min_part < h.up_max)
+        m.height = min_part;
+}
+
+/// Keeps a prism inside what its host can carry and at least `min_part` thick; false if it
+/// cannot.
+bool fit_host(const PrismHost& h, Prism& m, double eps, double min_part)
 {
     if (m.kind == Prism::Kind::rectangular) {
         if (h.flat) {
@@ -185,7 +222,10 @@ bool fit_host(const PrismHost& h, Prism& m, double eps)
     }
     m.a0 = std::max(m.a0, 0.0);
     m.a1 = std::min(m.a1, h.length);
-    return m.a1 - m.a0 > eps;
+    if (m.a1 - m.a0 <= eps)
+        return false;
+    grow_to(h, m, min_part);
+    return thick_enough(h, m, min_part);
 }
 
 /// Grid cells of the localised sampling, one sorted list per level.
@@ -371,7 +411,7 @@ public:
                 next.a0 = median(coord[3]);
             if (!coord[4].empty())
                 next.a1 = median(coord[4]);
-            if (!fit_host(h, next, o_.threshold))
+            if (!fit_host(h, next, o_.threshold, o_.min_part))
                 return;
             m = next;
         }
@@ -602,9 +642,9 @@ RansacResult fit_prisms(const SurfaceSamples& samples, const PrismHost& card,
                 rect.s0 = host.flat ? -rect.s1 : 0.0;
                 rect.a0 = std::min(l[p1].a, l[p2].a);
                 rect.a1 = std::max(l[p1].a, l[p2].a);
-                if (fit_host(host, rect, eps)) {
+                if (fit_host(host, rect, eps, o.min_part)) {
                     search.extend_along(rect, sub[h], gap, host);
-                    if (fit_host(host, rect, eps)) {
+                    if (fit_host(host, rect, eps, o.min_part)) {
                         const double sc =
                             search.score(rect, sub[h], grd[h], host.flat, scale, best_rect.score);
                         if (sc > best_rect.score && !overlaps(rect, host, taken, eps))
@@ -627,10 +667,10 @@ RansacResult fit_prisms(const SurfaceSamples& samples, const PrismHost& card,
                     continue;
                 tri.a0 = std::min({l[p1].a, l[p2].a, l[p3].a, l[p4].a});
                 tri.a1 = std::max({l[p1].a, l[p2].a, l[p3].a, l[p4].a});
-                if (!fit_host(host, tri, eps))
+                if (!fit_host(host, tri, eps, o.min_part))
                     continue;
                 search.extend_along(tri, sub[h], gap, host);
-                if (!fit_host(host, tri, eps))
+                if (!fit_host(host, tri, eps, o.min_part))
                     continue;
                 const double sc = search.score(tri, sub[h], grd[h], true, scale, best_tri.score);
                 if (sc > best_tri.score && !overlaps(tri, host, taken, eps))

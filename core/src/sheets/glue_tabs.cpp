@@ -1,5 +1,7 @@
 #include "glue_tabs.hpp"
 
+#include "popup/sheets/sheet_layout.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -15,6 +17,11 @@ namespace {
 
 constexpr double overlap_tolerance = 1e-4; // mm²: touching along an edge is not overlapping
 constexpr double narrowing = 0.85;         // each retry keeps this share of the width
+// A tab's far edge keeps a tenth of its crease: its depth is at most this share of the crease
+// times tan(tab_angle).
+constexpr double depth_per_crease = 0.45;
+// Where the paper is in the way, a tab is held back from each end of its crease by these shares.
+constexpr double insets[] = {0.0, 0.1, 0.2};
 
 // A trapezoid standing on the segment from→to, `depth` deep toward `side` (a unit normal),
 // its sides leaning in at `angle` (radians) from the segment. The first edge is the segment.
@@ -99,7 +106,7 @@ Fit fit_tab(const Scaffold& s, const Hinge& h, const LocalPiece& carrier, int ca
     const Vec2 into = -outward(ta, tb, mean(target.outline(target_patch)));
     // Keep the tab's far edge at least a tenth of the crease.
     const double widest =
-        angle >= M_PI / 2 ? options.tab_width : 0.45 * (b - a).norm() * std::tan(angle);
+        angle >= M_PI / 2 ? options.tab_width : depth_per_crease * (b - a).norm() * std::tan(angle);
 
     std::vector<Loop2> own = carrier.flat.outlines;
     for (const GlueTab& t : carrier.tabs)
@@ -130,7 +137,7 @@ Fit fit_tab(const Scaffold& s, const Hinge& h, const LocalPiece& carrier, int ca
     // Tabs held back from the crease's ends clear acute corners next to them.
     for (double width = std::min(options.tab_width, widest); width >= options.min_tab_width - 1e-9;
          width *= narrowing)
-        for (double inset : {0.0, 0.1, 0.2})
+        for (double inset : insets)
             for (const Vec2& side : {into, Vec2(-into)}) {
                 const Vec2 ia = a + inset * (b - a), ib = b - inset * (b - a);
                 const Vec2 ita = ta + inset * (tb - ta), itb = tb - inset * (tb - ta);
@@ -298,3 +305,17 @@ void add_glue_tabs(const Scaffold& s, std::vector<LocalPiece>& pieces,
 }
 
 } // namespace popup::sheets
+
+namespace popup {
+
+double shortest_tabbed_crease(const SheetOptions& options)
+{
+    const double angle = options.tab_angle * M_PI / 180.0;
+    if (angle >= M_PI / 2)
+        return options.min_tab_width;
+    return std::max(options.min_tab_width,
+                    options.min_tab_width / (sheets::depth_per_crease * std::tan(angle) *
+                                             (1.0 - 2.0 * sheets::insets[2])));
+}
+
+} // namespace popup

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "popup/fitting/design_repair.hpp"
+#include "popup/fitting/mechanism_mapping.hpp"
 
 using namespace popup;
 
@@ -120,4 +121,42 @@ TEST(FitDesignRepair, NothingLeftIsNotValid)
     EXPECT_FALSE(o.valid);
     EXPECT_EQ(o.kept, (std::vector<bool>{false}));
     EXPECT_TRUE(warned(o, "B1"));
+}
+
+TEST(FitDesignRepair, ParametersOnTheirBoundsMoveInsideByTheMargin)
+{
+    // A step on B1's backdrop side exactly as long as B1 (offset + width = 100), rising the whole
+    // wall (40); a box on B1's top as deep
+    // as B1. Each lands on a generator bound; keep_inside_ranges moves it `margin` inside.
+    const CardParams card;
+    const double margin = 0.01;
+    MechanismPlan step;
+    step.type = "step_fold";
+    step.name = "S1";
+    step.host = "B1.side_backdrop";
+    step.parent = 0;
+    step.parameters = {{"offset", 0.1}, {"width", 99.9}, {"run_ground", 40}, {"run_backdrop", 20}};
+    std::vector<MechanismPlan> plans = {box("B1", "central fold", -1, 40, 100, 30, 40), step,
+                                        box("B2", "B1.top", 0, 0, 100, 30, 20)};
+    keep_inside_ranges(plans, card.width, card.depth, margin);
+    const auto& s = plans[1].parameters;
+    // Its width fits (99.9 <= 100 - 2 margin): it keeps it and moves back to end margin short.
+    EXPECT_NEAR(s.at("width"), 99.9, 1e-12);
+    EXPECT_NEAR(s.at("offset"), 100 - margin - 99.9, 1e-9);
+    EXPECT_NEAR(s.at("run_ground"), 40 - margin, 1e-12); // the wall: B1's height
+    EXPECT_EQ(s.at("run_backdrop"), 20);                 // well inside the page beyond the wall
+    const auto& t = plans[2].parameters;
+    EXPECT_NEAR(t.at("offset"), margin, 1e-12);
+    EXPECT_NEAR(t.at("width"), 100 - 2 * margin, 1e-12);
+    EXPECT_NEAR(t.at("depth_ground"), 30 - margin, 1e-12);
+    EXPECT_NEAR(t.at("depth_backdrop"), 30 - margin, 1e-12);
+    // B1 itself is well inside the card: unchanged.
+    EXPECT_EQ(plans[0].parameters.at("width"), 100);
+    EXPECT_EQ(plans[0].parameters.at("offset"), 40);
+    // Each builds on B1 (the step and B2 would meet at B1's top edge: built apart).
+    for (size_t k : {1, 2}) {
+        const RepairOutcome o = build_until_valid(card, {plans[0], plans[k]});
+        EXPECT_EQ(o.kept, (std::vector<bool>{true, true}))
+            << plans[k].name << ": " << (o.repairs.empty() ? "" : o.repairs[0].reason);
+    }
 }

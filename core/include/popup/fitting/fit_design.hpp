@@ -10,6 +10,7 @@
 #include "popup/model/card.hpp"
 #include "popup/model/result.hpp"
 #include "popup/model/scaffold.hpp"
+#include "popup/sheets/sheet_layout.hpp"
 
 namespace popup {
 
@@ -29,6 +30,12 @@ struct FitOptions {
     double probability = 0.99; ///< stop when no better primitive was overlooked with this P
     double threshold = 0.02;   ///< point-to-primitive tolerance, fraction of the diagonal
     int samples = 20000;       ///< pseudo-vertices spread over the surface
+    /// Shortest glued crease a primitive may make (mm, on the card): its length along the hinge
+    /// and, for a box fold, its depths and height (prism_ransac.cpp, thick_enough). Thinner
+    /// primitives are not accepted. Default: the shortest crease on which the default cutting
+    /// sheets always place their narrowest glue tab (shortest_tabbed_crease, ≈ 11.1 mm); 0 turns
+    /// the rule off.
+    double min_part_mm = shortest_tabbed_crease(SheetOptions{});
     std::uint64_t seed = 1;
     /// Principal patches take the model's silhouette as a Profile (§5.1.3, fit_outlines.hpp).
     bool outlines = true;

@@ -45,7 +45,16 @@ double coverage_error(const std::vector<MechanismPlan>& plans);
 /// §4.2.2 refit: box folds on one hinge whose swept intervals overlap lose the end panels that
 /// face each other (trimmed), and, when their boxes themselves come too close, the later one is
 /// shortened. Returns one line per change: (mechanism, what was done and why).
+/// A box is not shortened below `min_part` (mm): it keeps the overlap, which the validity repair
+/// then resolves by dropping one of the two.
 std::vector<std::pair<std::string, std::string>>
-refit_for_foldability(std::vector<MechanismPlan>& plans);
+refit_for_foldability(std::vector<MechanismPlan>& plans, double min_part = 0.0);
+
+/// Moves every plan's parameters `margin` (mm) inside its generator's ranges: offset and width
+/// inside the host's length, runs, feet and depths below the host's depths. The fitted values
+/// otherwise land exactly on a bound (a step as long as its box), where a rebuild from rounded
+/// values (FreeCAD's properties) falls outside. Plans must come hosts first.
+void keep_inside_ranges(std::vector<MechanismPlan>& plans, double card_width, double card_depth,
+                        double margin);
 
 } // namespace popup

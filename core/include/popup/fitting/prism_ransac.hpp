@@ -57,6 +57,9 @@ struct RansacOptions {
     double threshold = 1.0;    ///< ε: point-to-face tolerance (mm)
     std::uint64_t seed = 1;
     int max_primitives = 8;
+    /// Thinnest prism accepted (mm) along the hinge, across (each side of the hinge on a flat
+    /// host) and up: thinner mechanism parts get no glue tab on the cutting sheets.
+    double min_part = 0.0;
     long max_draws = 100000; ///< safety bound on minimal samples drawn in one search
     const CancelFlag* cancel = nullptr;
 };

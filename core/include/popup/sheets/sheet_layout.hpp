@@ -35,6 +35,15 @@ struct SheetOptions {
 /// Checks every option; errors name the option, its value and the allowed range.
 Diagnostics check_sheet_options(const SheetOptions& options);
 
+/// The shortest crease that still carries a glue tab of `options.min_tab_width` (mm): a tab's
+/// sides lean in at tab_angle and its far edge keeps a tenth of the crease, so its depth is at
+/// most 0.45 · crease · tan(tab_angle); where the paper around is in the way the layout holds
+/// the tab back from the crease's ends by up to a fifth of it on each side (3/5 of the crease
+/// left). The narrowest tab fits in all those tries from 3 mm / (0.45 · tan 45° · 3/5) ≈ 11.1 mm;
+/// shorter joints may get no tab (no_room_for_tab). The glue area needs as much depth on the
+/// patch it lands on, hence at least min_tab_width.
+double shortest_tabbed_crease(const SheetOptions& options);
+
 struct FlatPatch {
     int id = 0;
     std::string name;
