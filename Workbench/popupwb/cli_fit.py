@@ -53,6 +53,13 @@ def add_parser(sub, max_mechanisms):
         help="0 coarse (few large prisms) to 1 fine (smaller prisms too); default 0.5",
     )
     fit.add_argument(
+        "--min-part",
+        type=float,
+        metavar="MM",
+        help="shortest glued crease a mechanism may have, mm (default: what the sheets' "
+        "narrowest glue tab needs; 0 allows any, and the sheets may then refuse a tab)",
+    )
+    fit.add_argument(
         "--paper",
         help=f"paper of the sheets, A4, A3, Letter, Tabloid or WxH mm; the card is the largest "
         f"that fits on it (default: the PopUp preference, else {DEFAULT_PAPER})",
@@ -87,6 +94,8 @@ def _options(args, cli, fit_run):
         raise cli.InputError(f"--seed {args.seed}: must be >= 0")
     if not (math.isfinite(args.detail) and 0.0 <= args.detail <= 1.0):
         raise cli.InputError(f"--detail {args.detail:g}: must be from 0 (coarse) to 1 (fine)")
+    if args.min_part is not None and not (math.isfinite(args.min_part) and args.min_part >= 0):
+        raise cli.InputError(f"--min-part {args.min_part:g}: must be a length >= 0 mm")
     try:
         up = fit_run.direction(args.up, "--up") if args.up is not None else None
         facing = fit_run.direction(args.facing, "--facing") if args.facing is not None else None
@@ -101,6 +110,8 @@ def _options(args, cli, fit_run):
         options = fit_run.fit_options(
             args.max_mechanisms, args.seed, up, facing, args.detail, card_size
         )
+        if args.min_part is not None:
+            options.min_part_mm = args.min_part
     except ValueError as e:  # the core's own range checks of the same values
         raise cli.InputError(cli._one_line(e))
     return options, paper

@@ -1,5 +1,5 @@
 """Outlines that follow the model (thesis §5.1.3) through `popup fit`: the truck on wheels of
-tools/make_models.py, fitted upright as one box fold, gets the wheel arches cut out of the box's
+tools/make_models.py, fitted upright as one box fold (with no minimum part size), gets the wheel arches cut out of the box's
 sides; the saved design.FCStd carries them as the features' Profiles, and FreeCAD rebuilds the
 same profiled patches.
 
@@ -32,7 +32,11 @@ def truck_fit(tmp_path_factory):
     folder = tmp_path_factory.mktemp("truck")
     model = make_models.write_model("truck_with_wheels", str(folder / "truck.stl"))
     out = folder / "fit"
-    proc = popup("fit", model, "--out", str(out), *UPRIGHT, "--max-mechanisms", "1")
+    # One box as long as the truck: its sides are thinner than the glue tabs' minimum
+    # (--min-part, 11.1 mm by default), which would have the fitter take a tent instead.
+    proc = popup(
+        "fit", model, "--out", str(out), *UPRIGHT, "--max-mechanisms", "1", "--min-part", "0"
+    )
     assert "Traceback" not in proc.stdout + proc.stderr, proc.stderr
     with open(out / "report.json") as f:
         report = json.load(f)
