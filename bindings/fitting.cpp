@@ -4,32 +4,14 @@
 #include <pybind11/stl.h>
 
 #include "binding_support.hpp"
+#include "point_rows.hpp"
 #include "popup/fitting/fit_design.hpp"
 
 namespace py = pybind11;
 using namespace popup;
+using namespace popup::bindings;
 
 namespace {
-
-using Rows3d = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
-
-Rows3d rows_of(const std::vector<Vec3>& points)
-{
-    Rows3d m(points.size(), 3);
-    for (size_t i = 0; i < points.size(); ++i)
-        m.row(i) = points[i].transpose();
-    return m;
-}
-
-using Rows2d = Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor>;
-
-Rows2d rows_of(const Loop2& loop)
-{
-    Rows2d m(loop.size(), 2);
-    for (size_t i = 0; i < loop.size(); ++i)
-        m.row(i) = loop[i].transpose();
-    return m;
-}
 
 /// None or a 3-sequence of numbers.
 std::optional<Vec3> direction_of(const py::object& value, const char* name)

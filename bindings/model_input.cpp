@@ -7,16 +7,16 @@
 #include <pybind11/stl.h>
 
 #include "binding_support.hpp"
+#include "point_rows.hpp"
 #include "popup/fitting/clean_model.hpp"
 #include "popup/fitting/fit_metrics.hpp"
 #include "popup/fitting/load_model.hpp"
 
 namespace py = pybind11;
 using namespace popup;
+using namespace popup::bindings;
 
 namespace {
-
-using Rows3d = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
 
 py::dict repairs_dict(const RepairCounts& r)
 {
@@ -55,14 +55,6 @@ py::dict metrics_dict(const FitMetrics& m)
     d["coverage"] = m.coverage;
     d["model_closed"] = m.model_closed;
     return d;
-}
-
-std::vector<Vec3> points_of(const Rows3d& m)
-{
-    std::vector<Vec3> points(m.rows());
-    for (Eigen::Index i = 0; i < m.rows(); ++i)
-        points[i] = m.row(i).transpose();
-    return points;
 }
 
 } // namespace

@@ -5,33 +5,16 @@
 #include <pybind11/stl.h>
 
 #include "binding_support.hpp"
+#include "point_rows.hpp"
 #include "popup/fitting/model_mesh.hpp"
 
 namespace py = pybind11;
 using namespace popup;
+using namespace popup::bindings;
 
 namespace {
 
-using Rows3d = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
 using Rows3i = Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor>;
-using Rows2d = Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor>;
-
-Rows3d rows_of(const std::vector<Vec3>& points)
-{
-    Rows3d m(points.size(), 3);
-    for (size_t i = 0; i < points.size(); ++i)
-        m.row(i) = points[i].transpose();
-    return m;
-}
-
-std::vector<Vec3> points_of(const Rows3d& m)
-{
-    std::vector<Vec3> points(m.rows());
-    for (Eigen::Index i = 0; i < m.rows(); ++i)
-        points[i] = m.row(i).transpose();
-    return points;
-}
-
 } // namespace
 
 void bind_model_mesh(py::module_& m)

@@ -5,6 +5,7 @@
 #include <pybind11/stl.h>
 
 #include "binding_support.hpp"
+#include "point_rows.hpp"
 #include "popup/fitting/depth_layers.hpp"
 #include "popup/fitting/silhouette.hpp"
 #include "popup/model/apply_profile.hpp"
@@ -12,26 +13,13 @@
 
 namespace py = pybind11;
 using namespace popup;
+using namespace popup::bindings;
 
 namespace {
 
-using Rows2d = Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor>;
-
-Rows2d rows_of(const Loop2& loop)
-{
-    Rows2d m(loop.size(), 2);
-    for (size_t i = 0; i < loop.size(); ++i)
-        m.row(i) = loop[i].transpose();
-    return m;
-}
-
-Loop2 loop_of(const Rows2d& m)
-{
-    Loop2 loop(m.rows());
-    for (Eigen::Index i = 0; i < m.rows(); ++i)
-        loop[i] = m.row(i).transpose();
-    return loop;
-}
+// The loop overloads below add to the shared ones, not hide them.
+using bindings::loop_of;
+using bindings::rows_of;
 
 std::vector<Rows2d> rows_of(const std::vector<Loop2>& loops)
 {
