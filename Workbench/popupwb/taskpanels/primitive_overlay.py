@@ -7,11 +7,11 @@ already in the model's coordinates). Faces are translucent orange, edges dark: t
 through. An SoSeparator under the view's scene graph, removed when the panel closes.
 """
 
-import FreeCADGui
 import numpy as np
 from pivy import coin
 
 from popupwb.fitting.prism_hull import hull_faces
+from popupwb.taskpanels import scene_overlay
 
 NODE_NAME = "PopUpPrimitiveOverlay"  # scripts and the GUI test find the overlay by this name
 FACE_COLOUR = (1.0, 0.55, 0.1)
@@ -33,11 +33,7 @@ class PrimitiveOverlay:
         self.prisms = []  # corners in model coordinates, as drawn last
 
     def _view_root(self):
-        gui_doc = FreeCADGui.getDocument(self.doc.Name)
-        view = gui_doc.ActiveView if gui_doc is not None else None
-        if view is None or not hasattr(view, "getSceneGraph"):
-            return None
-        return view.getSceneGraph()
+        return scene_overlay.view_root(self.doc.Name)
 
     def show(self, primitives, model_to_card):
         """Draws the fitted `primitives` (each with .corners in card mm)."""
@@ -53,13 +49,7 @@ class PrimitiveOverlay:
         root.addChild(self.node)
 
     def remove(self):
-        if self.node is not None:
-            try:
-                root = self._view_root()
-            except (RuntimeError, ReferenceError):  # the document is closing or gone
-                root = None
-            if root is not None and root.findChild(self.node) >= 0:
-                root.removeChild(self.node)
+        scene_overlay.detach(self.node, self.doc.Name)
         self.node = None
         self.prisms = []
 

@@ -8,10 +8,10 @@ over the paper. The panel adds it, refreshes it after each change and removes it
 """
 
 import FreeCAD
-import FreeCADGui
 from pivy import coin
 
 from popupwb import card_scaffold, placement
+from popupwb.taskpanels import scene_overlay
 
 NODE_NAME = "PopUpSpanOverlay"  # scripts and the GUI test find the overlay by this name
 OWN = (1.0, 0.5, 0.0)
@@ -28,11 +28,7 @@ class SpanOverlay:
         self.spans = []  # (Span, colour) drawn last, for scripts and tests
 
     def _view_root(self):
-        gui_doc = FreeCADGui.getDocument(self.obj.Document.Name)
-        view = gui_doc.ActiveView if gui_doc is not None else None
-        if view is None or not hasattr(view, "getSceneGraph"):
-            return None
-        return view.getSceneGraph()
+        return scene_overlay.view_root(self.obj.Document.Name)
 
     def refresh(self):
         """Redraws the spans for the current parameters (nothing when the mechanism is in
@@ -50,13 +46,7 @@ class SpanOverlay:
         self.spans = [(span, colour) for span, colour, _ in drawn]
 
     def remove(self):
-        if self.node is not None:
-            try:
-                root = self._view_root()
-            except (RuntimeError, ReferenceError):  # the document is closing or gone
-                root = None
-            if root is not None and root.findChild(self.node) >= 0:
-                root.removeChild(self.node)
+        scene_overlay.detach(self.node, self.obj.Document.Name)
         self.node = None
         self.spans = []
 
