@@ -22,7 +22,14 @@ class PopUpWorkbench(FreeCADGui.Workbench):
             self.appendToolbar(name, group)
         self.appendMenu(c.MENU, c.CARD_COMMANDS + [c.SEPARATOR])
         self.appendMenu(c.MECHANISM_SUBMENU, c.add_mechanism_commands())
-        self.appendMenu(c.MENU, [c.SEPARATOR] + c.CHECK_COMMANDS + [c.SEPARATOR] + c.SHEET_COMMANDS)
+        self.appendMenu(
+            c.MENU,
+            c.PROFILE_COMMANDS
+            + [c.SEPARATOR]
+            + c.CHECK_COMMANDS
+            + [c.SEPARATOR]
+            + c.SHEET_COMMANDS,
+        )
 
     def ContextMenu(self, recipient):
         from popupwb.commands import context_menu

@@ -2,7 +2,8 @@
 
 GROUPS is how the toolbars and the menu show them, in a maker's order: make a card, nest
 mechanisms on it (structures, then motion mechanisms), check and play it, lay it out on cutting
-sheets and export them. InitGui builds one toolbar per group, the PopUp menu with a Mechanisms
+sheets and export them. A mechanism's profile from a sketch (PopUp_SetProfile) sits after the
+mechanisms. InitGui builds one toolbar per group, the PopUp menu with a Mechanisms
 submenu, and the right-click menu on cards and mechanisms from these lists.
 """
 
@@ -15,6 +16,7 @@ from popupwb.commands import (
     export_sheets,
     from_model,
     load_design,
+    set_profile,
 )
 from popupwb.mechanism_registry import MOTION_COMMAND_IDS, STRUCTURE_COMMAND_IDS
 
@@ -23,19 +25,20 @@ SEPARATOR = "Separator"
 CARD_COMMANDS = [create_card.COMMAND_ID, load_design.COMMAND_ID, from_model.COMMAND_ID]
 MECHANISM_COMMANDS = list(STRUCTURE_COMMAND_IDS)
 MOTION_COMMANDS = list(MOTION_COMMAND_IDS)
+PROFILE_COMMANDS = [set_profile.COMMAND_ID]
 CHECK_COMMANDS = [check_validity.COMMAND_ID, animate.COMMAND_ID]
 SHEET_COMMANDS = [create_cutting_sheet.COMMAND_ID, export_sheets.COMMAND_ID]
 
 # (toolbar name, commands); the name is also the QToolBar's object name.
 GROUPS = (
     ("PopUp card", CARD_COMMANDS),
-    ("PopUp mechanisms", MECHANISM_COMMANDS),
+    ("PopUp mechanisms", MECHANISM_COMMANDS + [SEPARATOR] + PROFILE_COMMANDS),
     ("PopUp motion mechanisms", MOTION_COMMANDS),
     ("PopUp check", CHECK_COMMANDS),
     ("PopUp sheets", SHEET_COMMANDS),
 )
 
-COMMANDS = [command for _, commands in GROUPS for command in commands]
+COMMANDS = [command for _, commands in GROUPS for command in commands if command != SEPARATOR]
 
 # The PopUp menu: card, the Mechanisms submenu, check, sheets, with separators between.
 MENU = "PopUp"

@@ -1,6 +1,8 @@
 """PopUp_ExportSheets: writes the selected CuttingSheet's production files (sheets.dxf, .svg,
 .pdf, instructions.pdf, report.json, sheets.json) into a folder chosen in a dialog, which opens
-on the preferences' export folder; the layers have the preferences' names and colours.
+on the preferences' export folder; the layers have the preferences' names and colours. A card
+designed from a model gets the model's artwork and registration marks on the PDF and SVG print
+layer while the sheet's PrintArtwork is set (rendering shows progress and can be cancelled).
 
 The files come from the layout the CuttingSheet keeps (SheetSetJson): what it shows is what is
 written, with no second layout. The command is disabled until there is a layout to write (the
@@ -15,10 +17,11 @@ import FreeCAD
 import FreeCADGui
 
 import popupwb
-from popupwb import preferences
+from popupwb import preferences, progress
 from popupwb.commands.select_at_fault import select_at_fault
 from popupwb.commands.selection import SelectionError, selected_cutting_sheet
 from popupwb.features.cutting_sheet import export_cutting_sheet, has_layout, is_cutting_sheet
+from popupwb.fitting.model_source import has_source_model
 
 COMMAND_ID = "PopUp_ExportSheets"
 
@@ -57,6 +60,9 @@ class ExportSheetsCommand:
             return
         try:
             paths = export_cutting_sheet(obj, folder, style=prefs.style)
+        except progress.Cancelled as cancelled:
+            FreeCAD.Console.PrintWarning(f"{cancelled}: nothing written\n")
+            return
         except (OSError, ValueError) as error:
             FreeCAD.Console.PrintError(f"{COMMAND_ID}: {error}\n")
             if isinstance(error, ValueError):
@@ -67,7 +73,8 @@ class ExportSheetsCommand:
 
 def report(obj, paths):
     """Prints the written files and the layout's findings to the report view."""
-    lines = [f"{obj.Label}: wrote"]
+    artwork = "with" if obj.PrintArtwork and has_source_model(obj.Card) else "without"
+    lines = [f"{obj.Label}: wrote ({artwork} artwork)"]
     for kind, written in paths.items():
         for path in written if isinstance(written, list) else [written]:
             lines.append(f"  {kind}: {path}")

@@ -11,6 +11,12 @@ A card the validity check rejects (popupcore.check_validity with `popup check`'s
 laid out: the feature goes into error with the reason, unless Force is set; then the pages and
 the exported files carry "NOT VALID: <reason>" (sheets.not_valid_stamp).
 
+A card designed from a model (its SourceModel, PopUp_FromModel and `popup fit`) prints that
+model's appearance on the patches when PrintArtwork is set (the default): export renders it
+(print_artwork.render_sheet_artwork, as `popup sheet` does) onto the print layer of the PDF and
+SVG, with the registration marks; the DXF stays a cut file. A card made by hand has nothing to
+print.
+
 A changed FoldAngle recomputes the card, and so this feature: it lays out again only when the
 design, an option or the page settings changed (InputDigest). The module path, class name and
 property names are stored in .FCStd files: never rename them.
@@ -98,6 +104,13 @@ class CuttingSheet(StatelessProxy):
         add("App::PropertyBool", "MakePages", "Draw one TechDraw page per sheet", True)
         add(
             "App::PropertyBool",
+            "PrintArtwork",
+            "Print the source model's appearance on the patches of the exported PDF and SVG, with "
+            "registration marks (cards designed from a model; a hand-made card has none)",
+            True,
+        )
+        add(
+            "App::PropertyBool",
             "Force",
             "Lay out a card the validity check rejects; every page and file then says NOT VALID",
             False,
@@ -178,8 +191,7 @@ class CuttingSheet(StatelessProxy):
         built = card_scaffold.for_card(self._card(obj))
         options = layout_options(obj)
         self._check_styles(obj)
-        settings = (obj.MakePages, obj.MountainStyle, obj.ValleyStyle, obj.Force)
-        digest = hashlib.sha1(repr((built.key, options, settings)).encode()).hexdigest()[:16]
+        digest = input_digest(obj, built)
         if digest == obj.InputDigest and self._pages_complete(obj):
             return  # a new FoldAngle: same design, same sheets
         not_valid = self._not_valid(obj, built)
@@ -317,6 +329,14 @@ class CuttingSheet(StatelessProxy):
             techdraw_pages.remove_pages(obj)
 
 
+def input_digest(obj, built):
+    """Digest of what the layout of `obj` is made from: the card's design (`built`, its
+    CardScaffold), the layout options and the page settings."""
+    settings = (obj.MakePages, obj.MountainStyle, obj.ValleyStyle, obj.Force)
+    text = repr((built.key, layout_options(obj), settings))
+    return hashlib.sha1(text.encode()).hexdigest()[:16]
+
+
 def layout_options(obj):
     """The core's layout options from the properties (mm, degrees)."""
     if obj.Paper == CUSTOM:
@@ -366,16 +386,57 @@ def has_layout(obj):
 def export_cutting_sheet(obj, folder, style=None):
     """Writes the production files of the CuttingSheet `obj` into `folder` (created if needed) from
     the layout it keeps, in the layer_style.SheetStyle `style`; returns {kind: path(s)} as
-    export.export_sheets. Raises ValueError when `obj` has no layout (in error, or never
-    recomputed)."""
+    export.export_sheets. With PrintArtwork, a card designed from a model gets its artwork and
+    registration marks on the PDF and SVG (sheet_artwork). Raises ValueError when `obj` has no
+    layout (in error, or never recomputed) or the artwork cannot be made;
+    progress.Cancelled when the maker cancels the rendering."""
     from popupwb.sheets import export
 
     if not has_layout(obj):
         reason = obj.getStatusString() if "Invalid" in obj.State else "never recomputed"
         raise ValueError(f"{obj.Label}: no layout to export ({reason}); fix it and recompute")
-    return export.export_sheets(
-        json.loads(obj.SheetSetJson), folder, style=style, not_valid=not_valid_of(obj)
-    )
+    sheet_set = json.loads(obj.SheetSetJson)
+    artwork = sheet_artwork(obj, sheet_set) if getattr(obj, "PrintArtwork", False) else None
+    try:
+        return export.export_sheets(
+            sheet_set, folder, style=style, not_valid=not_valid_of(obj), artwork=artwork
+        )
+    except ValueError as error:  # no room for the registration marks: names the margin
+        if artwork:
+            raise ValueError(f"{obj.Label}: Margin: {error}; or turn PrintArtwork off") from None
+        raise
+
+
+def sheet_artwork(obj, sheet_set):
+    """{patch id: popupcore.PatchArtwork} of the laid-out patches, rendered from the model the
+    card was designed from (fitting.model_source.card_model: the model file while it is there,
+    read through popupcore.load_model, else the mesh the card keeps); None for a card without a
+    source model. ValueError naming obj when the layout is out of date or the model cannot be
+    rendered."""
+    from popupwb.fitting.model_source import card_model
+    from popupwb.sheets.print_artwork import render_sheet_artwork
+
+    card = obj.Card
+    built = card_scaffold.for_card(card)
+    if obj.InputDigest != input_digest(obj, built):
+        # The images must be of the patches laid out, id for id.
+        raise ValueError(f"{obj.Label}: the card changed since the layout; recompute first")
+    try:
+        model = card_model(card)
+    except ValueError as error:
+        raise ValueError(f"{obj.Label}: {card.Label}.SourceModel: {error}") from None
+    if model is None:
+        return None
+    try:
+        return progress.run(
+            f"{obj.Label}: printing {card.Label}'s model on the patches",
+            render_sheet_artwork,
+            model,
+            built.scaffold,
+            sheet_set,
+        )
+    except ValueError as error:  # DesignError: the model cannot be rendered
+        raise ValueError(f"{obj.Label}: artwork of {card.Label}'s source model: {error}") from None
 
 
 def not_valid_of(obj):

@@ -158,6 +158,12 @@ def in_card_frame(model, model_to_card):
     return model
 
 
+def has_source_model(card):
+    """True for a card designed from a model (it links the mesh it keeps)."""
+    source = getattr(card, "SourceModel", None)
+    return source is not None and is_mesh_object(source)
+
+
 def card_model(card):
     """The ModelMesh of the model `card` was designed from, in the card's frame (mm), or None
     for a card made by hand. The model file itself when it is still there (its texture and vertex

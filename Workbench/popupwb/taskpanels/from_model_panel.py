@@ -6,6 +6,10 @@ fits again with other settings.
 Fit runs popupcore.fit_design in progress.run's worker thread with a Cancel button (the core stops
 at its next checkpoint). OK on a panel never fitted fits first. The card is built by
 popupwb.fitting.design_from_fit, as `popup fit` builds it, in one undo step, and checked.
+
+Opened on a model file (`model` read by popupcore.load_model, `source_file` its path), the card
+keeps the file as its SourceFile, as `popup fit` does, so its texture and colours print as the
+cutting sheets' artwork.
 """
 
 import FreeCAD
@@ -30,7 +34,7 @@ last_panel = None  # the panel opened last (scripts and the GUI tests drive it)
 
 
 class FromModelPanel:
-    def __init__(self, obj, card_size=None):
+    def __init__(self, obj, card_size=None, model=None, source_file=None):
         global last_panel
         last_panel = self
         self.obj = obj
@@ -39,6 +43,9 @@ class FromModelPanel:
         self.overlay = PrimitiveOverlay(self.doc)
         self.model = None  # the cleaned ModelMesh, made at the first fit
         self.repairs = {}
+        self.source_file = source_file
+        if model is not None:
+            self.model, self.repairs = fit_run.clean_model(model)
         self.result = None
         self.design = None  # the FittedDesign OK built
 
@@ -174,7 +181,9 @@ class FromModelPanel:
 
         self.doc.openTransaction(f"Pop-up from {self.obj.Label}")
         try:
-            self.design = build_design(self.doc, self.result, self.model)
+            self.design = build_design(
+                self.doc, self.result, self.model, source_file=self.source_file
+            )
         except ValueError as error:
             self.doc.abortTransaction()
             self._say(f"{self.obj.Label}: {error}", error=True)

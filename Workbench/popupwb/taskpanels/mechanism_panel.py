@@ -4,7 +4,8 @@ Every parameter of the feature's proxy (MechanismFeature.PARAMETERS) becomes a s
 in mm, angles in degrees) or a check box, and the host pair a combo box. A change is applied at
 once and the document recomputed, so the 3D view follows; the feature's error (the core names the
 bad property) shows under the fields, and under it the span the mechanism occupies along its host
-pair, drawn on the fold while the panel is open (SpanOverlay). The whole edit is one undo
+pair, drawn on the fold while the panel is open (SpanOverlay). Under them, the Profile group
+(ProfilePicker) puts a Sketcher sketch on one of its parts, Clip or Scale. The whole edit is one undo
 transaction: OK commits it, Cancel aborts it and restores the values the feature had.
 """
 
@@ -80,6 +81,12 @@ class MechanismPanel:
         self.span.setWordWrap(True)
         self.span.setTextInteractionFlags(QtCore.Qt.TextSelectableByMouse)
         layout.addRow(self.span)
+        self.profile = None
+        if hasattr(obj, "ProfileSketch"):
+            from popupwb.taskpanels.profile_picker import ProfilePicker
+
+            self.profile = ProfilePicker(obj, changed=self.on_profile)
+            layout.addRow(self.profile.group)
         self.overlay = SpanOverlay(obj)
         self.form.destroyed.connect(lambda *_: self.overlay.remove())
         self.show_status()
@@ -89,6 +96,12 @@ class MechanismPanel:
     def apply(self, name, value):
         """Sets property `name`, recomputes and shows the feature's error, if any."""
         setattr(self.obj, name, value)
+        self.doc.recompute()
+        if self.profile is not None:
+            self.profile.refresh_parts()  # the parts follow the parameters (PanelPairs)
+        self.show_status()
+
+    def on_profile(self):
         self.doc.recompute()
         self.show_status()
 
@@ -120,6 +133,8 @@ class MechanismPanel:
             text, fits = report
             self.span.setStyleSheet("color: #206020;" if fits else "color: #b06000;")
             self.span.setText(text)
+        if self.profile is not None:
+            self.profile.show_state()
         self.overlay.refresh()
 
     def span_text(self):
