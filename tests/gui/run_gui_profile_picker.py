@@ -212,6 +212,23 @@ def run():
     doc.recompute()
     result["after_redo"] = mechanism.ProfileSketch.Name if mechanism.ProfileSketch else None
 
+    # The mechanism's own task panel shows the same profile in its Profile group.
+    from popupwb.taskpanels import mechanism_panel
+
+    Gui.ActiveDocument.setEdit(mechanism.Name, 0)
+    settle()
+    own = mechanism_panel.last_panel
+    if own is not None and own.obj is mechanism and own.profile is not None:
+        result["mechanism_panel_profile"] = [
+            own.profile.sketch.currentText(),
+            own.profile.part.currentText(),
+            own.profile.mode.currentText(),
+        ]
+        own.form.grab().save(CONFIG["mechanism_panel_png"])
+        own.reject()
+        settle()
+    result["profile_after_panel"] = mechanism.ProfileSketch.Name if mechanism.ProfileSketch else None
+
     # 3. Cutting sheet and export, with the model's artwork.
     sheet = create_cutting_sheet.create(card)
     result["sheet_state"] = sheet.getStatusString() if sheet else None
@@ -305,6 +322,7 @@ def main():
         "export_dir": export_dir,
         "picker_png": os.path.join(images_dir, "profile_picker.png"),
         "card_png": os.path.join(images_dir, "profiled_card.png"),
+        "mechanism_panel_png": os.path.join(images_dir, "mechanism_panel_profile.png"),
     }
     code, result, out_dir = run_macro(NAME, BODY, config, timeout=400)
     check("FreeCAD exited 0", code == 0, f"exit {code}, log {out_dir}/freecad.log")
@@ -371,6 +389,12 @@ def main():
         "undo takes the profile off, redo puts it back",
         r.get("after_undo") == [None, True] and r.get("after_redo") == "TreeWindow",
         f"{r.get('after_undo')}, {r.get('after_redo')}",
+    )
+    check(
+        "the mechanism's own panel shows the profile, and Cancel there keeps it",
+        r.get("mechanism_panel_profile") == ["TreeWindow", r.get("part"), "Clip"]
+        and r.get("profile_after_panel") == "TreeWindow",
+        f"{r.get('mechanism_panel_profile')}, {r.get('profile_after_panel')}",
     )
     gone, new = r.get("faces_gone") or [], r.get("faces_new") or []
     tree_area = shoelace([tuple(p) for p in r.get("tree") or [(0, 0)]])
