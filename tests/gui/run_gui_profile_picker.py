@@ -132,6 +132,9 @@ def run():
     Gui.Selection.addSelection(mechanism)
     Gui.Selection.addSelection(sketch)
     result["command_active"] = Gui.Command.get("PopUp_SetProfile").isActive()
+    from popupwb.commands import context_menu
+
+    result["context_menu"] = [entry for _, entries in context_menu.entries() for entry in entries]
     undo_before = list(doc.UndoNames)
     Gui.runCommand("PopUp_SetProfile")
     settle()
@@ -349,6 +352,11 @@ def main():
 
     # 2. The picker.
     check("PopUp_SetProfile is active on a mechanism and a sketch", r.get("command_active") is True)
+    check(
+        "a mechanism's right-click menu offers it",
+        "PopUp_SetProfile" in (r.get("context_menu") or []),
+        r.get("context_menu"),
+    )
     check("the command opens the panel on the mechanism", r.get("panel_open") is True)
     check(
         "the panel offers the mechanism's parts",

@@ -2,7 +2,9 @@
 preselected from the selection; each choice applies at once and recomputes, so the 3D view shows
 the profiled part, and the mechanism's own error (the core names the part and fold a profile
 misses) shows under the picker. The whole edit is one undo transaction: OK commits it, Cancel
-aborts it and restores what the mechanism had.
+aborts it and restores what the mechanism had. OK also runs the headless line that gives the same
+result through FreeCADGui.doCommand (`popupwb.profiles.set_profile_sketch(...)`), so the Python
+console and the macro recorder show what the panel did, as the other commands do.
 """
 
 import FreeCAD
@@ -58,9 +60,26 @@ class ProfilePanel:
     def accept(self):
         if self.picker.error:
             return False  # keep the panel open: the line under the picker says why
+        self.echo()
         self.doc.commitTransaction()
         FreeCADGui.Control.closeDialog()
         return True
+
+    def echo(self):
+        """Runs (and so shows and records) the line that sets what the panel set."""
+        from popupwb.commands.echoed_python import import_echoed, object_expression
+
+        obj, sketch = self.obj, self.obj.ProfileSketch
+        if sketch is None:
+            line = f"popupwb.profiles.clear_profile_sketch({object_expression(obj)})"
+        else:
+            line = (
+                f"popupwb.profiles.set_profile_sketch({object_expression(obj)}, "
+                f"{object_expression(sketch)}, {obj.ProfilePart!r}, {obj.ProfileMode!r})"
+            )
+        import_echoed("popupwb.profiles")
+        FreeCADGui.doCommand(line)
+        FreeCADGui.doCommand("FreeCAD.ActiveDocument.recompute()")
 
     def reject(self):
         self.doc.abortTransaction()
