@@ -3,19 +3,20 @@
 parts with PopUp_SetProfile, its cutting sheet exported with the model's artwork, in the real
 FreeCAD GUI under Xvfb (tests/gui/gui_harness.py).
 
-1. PopUp_FromModel on a house STL file (tools/make_models.py): popupcore.load_model reads it in
-   a child process forked from the FreeCAD GUI process; the panel fits it and OK builds the card,
-   which keeps the file as SourceFile.
-2. The largest rectangular part of the fitted mechanisms gets a sketch: its own rectangle (read
-   from the core's profile frame) with a tree-shaped window. A sketch with an open wire is
-   refused first, in one line naming it, and changes nothing. The panel's OK makes one undo step.
-   The profiled face's area must equal the sketch's area (FreeCAD's faces of the sketch's wires)
-   within 1e-6, and the face's plain area minus the tree's shoelace area.
-3. PopUp_CuttingSheet, then the export: the SVG's PRINT layer and the PDF hold one image per
-   printed patch and the three registration marks per sheet where registration_marks.py puts
-   them (re-read from the written files).
-Screenshots: <build>/sandbox/gui_profile_picker/profile_picker.png (the task panel) and
-profiled_card.png (copied to docs/images/).
+1. PopUp_FromModel on a model file: make_models' house written as OBJ with vertex colours (brick
+   walls, slate roof). popupcore.load_model reads it in a child process forked from the FreeCAD
+   GUI process; the panel fits it and OK builds the card, which keeps the file as SourceFile.
+2. The fitted part with the largest smaller side gets a sketch: its own rectangle (read from the
+   core's profile frame) with a tree-shaped window. A sketch with an open wire is refused first,
+   in one line naming it, and changes nothing; OK stays refused. The panel's OK makes one undo
+   step. The profiled face's area must equal the sketch's area (FreeCAD's faces of the sketch's
+   wires) within 1e-6, and the face's plain area minus the tree's shoelace area. The mechanism's
+   own task panel shows the same profile.
+3. PopUp_CuttingSheet, then the export: the SVG's PRINT layer and the PDF hold the artwork images
+   (the file's brick and slate among their pixels) and three registration marks per sheet where
+   registration_marks.py puts them (re-read from the written files); the DXF has no image.
+Screenshots in <build>/sandbox/gui_profile_picker/ (copies in docs/images/): profile_picker.png
+(the command's panel), mechanism_panel_profile.png and profiled_card.png.
 
     POPUP_SOURCE_DIR=. POPUP_BUILD_DIR=build /usr/bin/python3 tests/gui/run_gui_profile_picker.py
 """
@@ -23,7 +24,6 @@ profiled_card.png (copied to docs/images/).
 import importlib.util
 import json
 import os
-import re
 import shutil
 import sys
 import xml.etree.ElementTree as ElementTree
@@ -242,13 +242,54 @@ def run():
 '''
 
 
+BRICK = (0.70, 0.25, 0.15)  # walls
+SLATE = (0.20, 0.30, 0.55)  # roof
+EAVES = 30.0  # mm: make_models' house has its walls below, its roof above
+
+
 def _write_house(path):
+    """make_models' house as OBJ text with vertex colours (`v x y z r g b`, which assimp reads):
+    each triangle gets its own corners, brick below the eaves, slate above, so the artwork's
+    colours can only come from the file."""
     spec = importlib.util.spec_from_file_location(
         "make_models", os.path.join(SOURCE_DIR, "tools", "make_models.py")
     )
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
-    return module.write_model("house", path)
+    points, facets = module.mesh_of(module.SOLIDS["house"]()).Topology
+    lines = []
+    for facet in facets:
+        corners = [points[i] for i in facet]
+        roof = sum(p.z for p in corners) / 3 > EAVES
+        colour = " ".join(f"{c:g}" for c in (SLATE if roof else BRICK))
+        lines += [f"v {p.x:.9g} {p.y:.9g} {p.z:.9g} {colour}" for p in corners]
+    lines += [f"f {3 * k + 1} {3 * k + 2} {3 * k + 3}" for k in range(len(facets))]
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    return path
+
+
+def artwork_colours(images):
+    """How many opaque pixels of the SVG's artwork images are nearest to BRICK and to SLATE
+    (shading is not applied to vertex colours, docs/DESIGN.md, Artwork)."""
+    import base64
+    import io
+
+    import numpy
+    from PIL import Image
+
+    near = {"brick": 0, "slate": 0, "other": 0}
+    for image in images:
+        href = image.get("{http://www.w3.org/1999/xlink}href") or image.get("href")
+        rgba = numpy.asarray(
+            Image.open(io.BytesIO(base64.b64decode(href.split(",", 1)[1]))).convert("RGBA")
+        )
+        opaque = rgba[rgba[..., 3] == 255][:, :3].astype(float) / 255
+        for name, colour in (("brick", BRICK), ("slate", SLATE)):
+            near[name] += int((numpy.abs(opaque - colour).max(axis=1) < 0.02).sum())
+        near["other"] += len(opaque)
+    near["other"] -= near["brick"] + near["slate"]
+    return near
 
 
 def shoelace(loop):
@@ -321,7 +362,7 @@ def main():
     shutil.rmtree(export_dir, ignore_errors=True)
     images_dir = os.path.join(SANDBOX, NAME)  # docs/images/ holds copies of the last good run
     config = {
-        "model": _write_house(os.path.join(models, "house.stl")),
+        "model": _write_house(os.path.join(models, "house.obj")),
         "export_dir": export_dir,
         "picker_png": os.path.join(images_dir, "profile_picker.png"),
         "card_png": os.path.join(images_dir, "profiled_card.png"),
@@ -462,6 +503,12 @@ def main():
         "the SVGs carry the artwork: PNG images on the PRINT layer, at most one per patch",
         0 < svg_images <= patches,
         f"{svg_images} images, {patches} patches",
+    )
+    near = artwork_colours([i for path in paths["svg"] for i in read_svg(path)[0]])
+    check(
+        "the artwork prints the file's colours: brick walls and slate roof",
+        near["brick"] > 1000 and near["slate"] > 1000,
+        near,
     )
     pdf_images, pdf_marks = read_pdf(paths["pdf"])
     check(
