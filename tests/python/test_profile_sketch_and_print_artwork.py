@@ -197,3 +197,28 @@ def test_print_artwork_off_and_a_hand_made_card_print_nothing(fitted_sheet, doc,
     assert hand.PrintArtwork is True
     for svg in export_cutting_sheet(hand, str(tmp_path / "hand"))["svg"]:
         assert print_layer(svg)[0] == []
+
+
+def test_a_margin_too_narrow_for_the_marks_is_named(fitted_sheet, doc, tmp_path):
+    from popupwb.features.cutting_sheet import export_cutting_sheet
+
+    _, sheet = fitted_sheet
+    sheet.Margin = 4.0  # a mark is 5 mm, with 0.5 mm clear on each side
+    doc.recompute()
+    with pytest.raises(ValueError) as refused:
+        export_cutting_sheet(sheet, str(tmp_path / "narrow"))
+    message = str(refused.value)
+    assert message.startswith("Sheets: Margin: ") and "at least 6 mm" in message
+    assert "PrintArtwork" in message
+    sheet.PrintArtwork = False  # a plain cut file needs no marks
+    export_cutting_sheet(sheet, str(tmp_path / "plain"))
+
+
+def test_an_out_of_date_layout_is_not_printed(fitted_sheet, doc, tmp_path):
+    from popupwb.features.cutting_sheet import export_cutting_sheet
+
+    card, sheet = fitted_sheet
+    mechanism = next(o for o in doc.Objects if getattr(o, "Host", None) is card)
+    mechanism.Width = mechanism.Width.Value - 1.0  # not recomputed: the layout is stale
+    with pytest.raises(ValueError, match="Sheets: the card or the sheet's settings changed"):
+        export_cutting_sheet(sheet, str(tmp_path / "stale"))

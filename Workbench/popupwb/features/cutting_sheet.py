@@ -420,7 +420,10 @@ def sheet_artwork(obj, sheet_set):
     built = card_scaffold.for_card(card)
     if obj.InputDigest != input_digest(obj, built):
         # The images must be of the patches laid out, id for id.
-        raise ValueError(f"{obj.Label}: the card changed since the layout; recompute first")
+        raise ValueError(
+            f"{obj.Label}: the card or the sheet's settings changed since the layout; recompute "
+            "first"
+        )
     try:
         model = card_model(card)
     except ValueError as error:
