@@ -503,12 +503,13 @@ TEST(FitLoadModel, NanAndInfinityWrittenInTextFilesAreNamedWithTheirLine)
 
 TEST(FitLoadModel, MutatedFilesComeBackAsMeshesOrNamedErrors)
 {
-    // The short run of `make fuzz` (load_model_fuzz): 200 mutants of assimp-written seeds.
+    // The short run of `make fuzz` (load_model_fuzz): 120 mutants of assimp-written seeds, about
+    // 7 s on two idle cores (a few mutants make assimp hang and are stopped after 1 s).
     const fs::path dir = scratch("mutations");
     const std::vector<fs::path> seeds = fixtures::write_seed_models(dir);
     ASSERT_GE(seeds.size(), 8u); // obj, stl, stlb, ply, plyb, gltf, glb, dae, 3mf, fbx, off
-    const fixtures::MutationRun run = fixtures::mutate_and_load(seeds, 200, 12, dir, 5.0);
-    EXPECT_EQ(run.reads, 200);
+    const fixtures::MutationRun run = fixtures::mutate_and_load(seeds, 120, 12, dir, 1.0);
+    EXPECT_EQ(run.reads, 120);
     for (const std::string& line : run.broken)
         ADD_FAILURE() << line;
     // Both outcomes occur: the mutations neither all miss nor all destroy the files.
