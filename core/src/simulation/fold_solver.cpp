@@ -768,7 +768,8 @@ namespace {
 /// through dynamic-size blocks and cost a validity check over a tenth of its time.
 template <int N> bool clearly_positive_definite(const Eigen::Matrix<double, N, N>& A)
 {
-    double L[N][N] = {};
+    double L[N][N];       // lower triangle only
+    double inverse_of[N]; // 1 / L_jj: a bound needs no correctly rounded division
     double largest = 1.0;
     for (int i = 0; i < N; ++i)
         largest = std::max(largest, std::abs(A(i, i)));
@@ -779,23 +780,27 @@ template <int N> bool clearly_positive_definite(const Eigen::Matrix<double, N, N
         if (!(d > 0.0))
             return false;
         L[j][j] = std::sqrt(d);
+        inverse_of[j] = 1.0 / L[j][j];
         for (int i = j + 1; i < N; ++i) {
             double sum = A(i, j);
             for (int k = 0; k < j; ++k)
                 sum -= L[i][k] * L[j][k];
-            L[i][j] = sum / L[j][j];
+            L[i][j] = sum * inverse_of[j];
         }
     }
     double trace_of_inverse = 0.0; // ‖L⁻¹‖²_F, column by column: L x = e_j
     for (int j = 0; j < N; ++j) {
-        double x[N] = {};
-        for (int i = j; i < N; ++i) {
-            double sum = i == j ? 1.0 : 0.0;
+        double x[N];
+        x[j] = inverse_of[j];
+        double column = x[j] * x[j];
+        for (int i = j + 1; i < N; ++i) {
+            double sum = 0.0;
             for (int k = j; k < i; ++k)
                 sum -= L[i][k] * x[k];
-            x[i] = sum / L[i][i];
-            trace_of_inverse += x[i] * x[i];
+            x[i] = sum * inverse_of[i];
+            column += x[i] * x[i];
         }
+        trace_of_inverse += column;
     }
     return std::isfinite(trace_of_inverse) && 1.0 / trace_of_inverse > 2e-9 * largest;
 }
