@@ -2,6 +2,8 @@
 BUILD   ?= build
 ASAN_BUILD ?= build-asan
 FUZZ_SECONDS ?= 60
+FUZZ_MODEL_MUTANTS ?= 5000
+FUZZ_MODEL_SEED ?= 1
 PYTHON  := /usr/bin/python3
 JOBS    ?= $(shell nproc)
 SUDO    := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
@@ -48,11 +50,14 @@ bench: build
 	POPUP_BUILD_DIR=$(CURDIR)/$(BUILD) $(PYTHON) bench/sheets_bench.py
 
 # libFuzzer targets (fuzz/, docs/RELIABILITY.md): FUZZ_SECONDS per target, corpora kept in
-# $(BUILD)/fuzz-work between runs.
+# $(BUILD)/fuzz-work between runs. Then load_model on FUZZ_MODEL_MUTANTS mutated model files
+# (a deterministic driver: load_model reads in a child process, out of libFuzzer's sight).
 fuzz: deps $(BUILD)/CMakeCache.txt
-	cmake --build $(BUILD) -j $(JOBS) --target popup_fuzzers
+	cmake --build $(BUILD) -j $(JOBS) --target popup_fuzzers load_model_fuzz
 	$(PYTHON) fuzz/run_fuzzers.py --build-dir $(BUILD)/fuzzers --work $(BUILD)/fuzz-work \
 	  --seconds $(FUZZ_SECONDS)
+	$(BUILD)/tests/core/load_model_fuzz --iterations $(FUZZ_MODEL_MUTANTS) --seed $(FUZZ_MODEL_SEED) \
+	  --dir $(BUILD)/fuzz-work/load_model
 
 # The core, the bindings and the C++ and Python suites under ASan + UBSan (docs/RELIABILITY.md).
 asan: deps

@@ -106,6 +106,39 @@ def test_fitted_mechanisms_become_features_with_their_dimensions(doc, core, tetr
     assert card.Validity == "Valid"
 
 
+def test_a_fit_result_with_a_v_fold_builds_its_wings_where_the_parameters_put_them(
+    doc, core, tetrahedron
+):
+    """eq. 5.1 never maps a prism to a v-fold (docs/DESIGN.md), but the repair and hand-edited
+    results carry them. At 180° the card is the plane z = 0, the fold the y axis: O = (0, 150, 0)
+    on the fold, A and B `run` = 20 mm away at 45° to it on either page, the tip P in the bisecting
+    plane x = 0, `spine` = 25 mm from O at 60° above the fold."""
+    from popupwb import validity
+    from popupwb.fitting.design_from_fit import build_design
+
+    design = build_design(doc, _result(core, [VFOLD]), tetrahedron)
+    (vfold,) = design.mechanisms
+    assert (vfold.Label, vfold.Proxy.TYPE, vfold.HostPair) == ("V1", "PopUp::VFold", "central fold")
+    a = 20.0 * math.sin(math.pi / 4)  # A and B across the fold, and along it
+    tip_along, tip_up = 25.0 * math.cos(math.pi / 3), 25.0 * math.sin(math.pi / 3)
+    bb = vfold.Shape.BoundBox
+    assert (bb.XMin, bb.XMax, bb.YMin, bb.YMax, bb.ZMin, bb.ZMax) == pytest.approx(
+        (-a, a, 150.0, 150.0 + max(a, tip_along), 0.0, tip_up), abs=1e-6
+    )
+    corners = sorted({tuple(round(c, 6) for c in v.Point) for v in vfold.Shape.Vertexes})
+    expected = sorted(
+        {
+            (0.0, 150.0, 0.0),
+            (round(a, 6), round(150.0 + a, 6), 0.0),
+            (round(-a, 6), round(150.0 + a, 6), 0.0),
+            (0.0, round(150.0 + tip_along, 6), round(tip_up, 6)),
+        }
+    )
+    assert corners == expected
+    report = validity.run_check(design.card)
+    assert report["valid"], report["diagnostics"]
+
+
 def test_the_source_model_stands_on_the_card_through_model_to_card(doc, core, tetrahedron):
     from popupwb.fitting.design_from_fit import build_design
 

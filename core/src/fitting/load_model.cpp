@@ -23,6 +23,8 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include "text_coordinates.hpp"
+
 namespace popup {
 
 namespace {
@@ -419,6 +421,16 @@ Result<ModelMesh> load_model(const std::string& path, const LoadModelOptions& op
     if (!(options.timeout_s > 0.0))
         return refuse("timeout_s = " + std::to_string(options.timeout_s) + ", must be > 0");
 
+    // Before assimp, which reads some spellings of NaN in text files as finite numbers.
+    if (const auto bad = find_non_finite_coordinate(path)) {
+        result.fail(
+            DiagnosticCode::non_finite_model,
+            "model file " + path + ": vertex " + std::to_string(bad->vertex) + " (line " +
+                std::to_string(bad->line) + ") has " + bad->axis + " = " + bad->token +
+                ", coordinates must be finite numbers within single precision (|v| <= " + "3.4e38)",
+            about_parameter(path));
+        return result;
+    }
     ModelMesh mesh;
     const std::string why = read_isolated(path, options.timeout_s, mesh);
     if (!why.empty())

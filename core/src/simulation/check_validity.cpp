@@ -19,6 +19,10 @@ namespace popup {
 
 namespace {
 
+// Checkpoints sit in inner loops: a literal became a std::string per call (116 000 allocations
+// in one check of a 100-patch card).
+const std::string kWork = "the validity check";
+
 std::string deg(double radians)
 {
     std::ostringstream s;
@@ -61,9 +65,9 @@ struct Checker {
         return true;
     }
 
-    double depth(const FoldState& st, int i, int j) const
+    double depth(const PosedPatches& posed, int i, int j) const
     {
-        return crossing_depth(meshes, s, st, i, j, tolerance, clearance);
+        return crossing_depth(meshes, posed, s, i, j, tolerance, clearance);
     }
 
     // Angle where the pair starts crossing, between a state without and one with a crossing.
@@ -73,23 +77,34 @@ struct Checker {
             FoldState mid;
             if (!solve_between(free, crossing, 0.5 * (free.angle + crossing.angle), mid))
                 break;
-            (depth(mid, i, j) > 0.0 ? crossing : free) = mid;
+            (depth(pose_patches(meshes, mid, {i, j}), i, j) > 0.0 ? crossing : free) = mid;
         }
         return crossing.angle;
     }
 
+    // Signed distance of vertex k of patch i from patch j's plane at `st`.
+    double side_at(const FoldState& st, int i, int j, size_t k) const
+    {
+        const Pose& pj = st.poses[j];
+        const Vec3 normal = pj.rotation * s.patches[j].normal;
+        const Vec3 origin = pj.apply(s.patches[j].origin);
+        return (st.poses[i].apply(meshes[i].vertices[k]) - origin).dot(normal);
+    }
+
     // A vertex of patch i that changes side of patch j's plane between two states, at a point
     // inside patch j: the patch passed through. Returns how far the vertex went, or 0.
-    double passes_through(const FoldState& a, const FoldState& b, int i, int j, int levels) const
+    double passes_through(const PosedPatches& pa, const PosedPatches& pb, int i, int j,
+                          int levels) const
     {
+        const FoldState& a = *pa.state;
+        const FoldState& b = *pb.state;
         const Vec3 na = a.poses[j].rotation * s.patches[j].normal;
         const Vec3 nb = b.poses[j].rotation * s.patches[j].normal;
         const Vec3 oa = a.poses[j].apply(s.patches[j].origin);
         const Vec3 ob = b.poses[j].apply(s.patches[j].origin);
         for (size_t k = 0; k < meshes[i].vertices.size(); ++k) {
-            const Vec3& x = meshes[i].vertices[k];
-            const double da = (a.poses[i].apply(x) - oa).dot(na);
-            const double db = (b.poses[i].apply(x) - ob).dot(nb);
+            const double da = (pa.vertices[i][k] - oa).dot(na);
+            const double db = (pb.vertices[i][k] - ob).dot(nb);
             if (!((da > tolerance && db < -tolerance) || (da < -tolerance && db > tolerance)))
                 continue;
             FoldState lo = a, hi = b;
@@ -98,7 +113,7 @@ struct Checker {
                 FoldState mid;
                 if (!solve_between(lo, hi, 0.5 * (lo.angle + hi.angle), mid))
                     break;
-                const double dm = side_of_plane(meshes, s, mid, i, j)[k];
+                const double dm = side_at(mid, i, j, k);
                 if ((dm > 0.0) == (dlo > 0.0)) {
                     lo = mid;
                     dlo = dm;
@@ -148,10 +163,10 @@ std::vector<Crossing> find_crossings(const Scaffold& input, const FoldState& sta
     if (!graph.ok)
         throw std::invalid_argument("find_crossings: " + graph.diagnostics.front().message);
     const std::vector<PatchMesh> meshes = mesh_patches(s);
+    const PosedPatches posed = pose_patches(meshes, state);
     std::vector<Crossing> out;
-    for (const auto& [i, j] :
-         candidate_pairs(meshes, graph.value.body_of_patch, state, tolerance)) {
-        const double d = crossing_depth(meshes, s, state, i, j, tolerance, 0.0);
+    for (const auto& [i, j] : candidate_pairs(posed, graph.value.body_of_patch, tolerance)) {
+        const double d = crossing_depth(meshes, posed, s, i, j, tolerance, 0.0);
         if (d > 0.0)
             out.push_back({s.patches[i].id, s.patches[j].id, state.angle, d});
     }
@@ -216,7 +231,9 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
     SimulationOptions simulation;
     simulation.cancel = options.cancel;
     simulation.dense_linear_algebra = options.dense_linear_algebra;
-    const Result<FoldSweep> sim = simulate_fold(s, angles, simulation);
+    // One solver for the sweep and the checks after it; the scaffold is validated already.
+    const FoldSolver solver(s, graph.value, simulation);
+    const Result<FoldSweep> sim = simulate_validated(solver, angles);
     for (const Diagnostic& d : sim.diagnostics)
         report.diagnostics.push_back(d);
     const FoldSweep& sweep = sim.value;
@@ -257,8 +274,6 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
     if (!sim.ok)
         return report;
 
-    const FoldSolver solver(s, graph.value, simulation);
-
     // Stable: no free motion with the base held still, at every sampled angle strictly between.
     // Components are independent and each owns its solver buffers: one thread per component,
     // every sample in turn; the verdicts are merged in sample order.
@@ -275,7 +290,7 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
     tbb::parallel_for(size_t(0), components, [&](size_t c) {
         motions[c].resize(between.size());
         for (size_t k = 0; k < between.size(); ++k) {
-            stop_if_cancelled(options.cancel, "the validity check");
+            stop_if_cancelled(options.cancel, kWork);
             motions[c][k] = component_free_motion(solver, int(c), configurations[k]);
         }
     });
@@ -318,16 +333,20 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
     const double margin = flat_tolerance + options.clearance;
     std::vector<std::vector<PairAtSample>> samples(sweep.states.size());
     tbb::parallel_for(size_t(0), sweep.states.size(), [&](size_t k) {
-        stop_if_cancelled(options.cancel, "the validity check");
-        const FoldState& st = sweep.states[k];
-        const FoldState* previous = k ? &sweep.states[k - 1] : nullptr;
-        for (const auto& [i, j] : candidate_pairs(meshes, graph.value.body_of_patch, st, margin)) {
-            stop_if_cancelled(options.cancel, "the validity check"); // a pair may be refined
-            PairAtSample p{i, j, checker.depth(st, i, j), 0.0};
-            if (p.depth <= 0.0 && previous)
+        stop_if_cancelled(options.cancel, kWork);
+        // Each patch posed once at this sample and once at the one before, for every pair, into
+        // buffers each thread keeps (nothing in this body waits on other tasks).
+        thread_local PosedPatches here, before;
+        pose_patches(meshes, sweep.states[k], here);
+        if (k)
+            pose_patches(meshes, sweep.states[k - 1], before);
+        for (const auto& [i, j] : candidate_pairs(here, graph.value.body_of_patch, margin)) {
+            stop_if_cancelled(options.cancel, kWork); // a pair may be refined
+            PairAtSample p{i, j, checker.depth(here, i, j), 0.0};
+            if (p.depth <= 0.0 && k)
                 p.through =
-                    std::max(checker.passes_through(*previous, st, i, j, options.refine_depth),
-                             checker.passes_through(*previous, st, j, i, options.refine_depth));
+                    std::max(checker.passes_through(before, here, i, j, options.refine_depth),
+                             checker.passes_through(before, here, j, i, options.refine_depth));
             samples[k].push_back(p);
         }
     });
@@ -341,7 +360,7 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
             double depth = p.depth;
             double at = st.angle;
             if (depth > 0.0 && previous && !was_crossing[key]) {
-                stop_if_cancelled(options.cancel, "the validity check");
+                stop_if_cancelled(options.cancel, kWork);
                 at = checker.onset(*previous, st, p.i, p.j, options.refine_depth);
             } else if (depth <= 0.0 && p.through > 0.0) {
                 depth = p.through;

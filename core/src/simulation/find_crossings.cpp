@@ -126,15 +126,6 @@ double overlap_length(const std::vector<double>& a, const std::vector<double>& b
     return total;
 }
 
-std::vector<Vec3> posed_vertices(const PatchMesh& mesh, const Pose& pose)
-{
-    std::vector<Vec3> out;
-    out.reserve(mesh.vertices.size());
-    for (const Vec3& x : mesh.vertices)
-        out.push_back(pose.apply(x));
-    return out;
-}
-
 bool triangles_meet(const PatchMesh& a, const std::vector<Vec3>& pa, const PatchMesh& b,
                     const std::vector<Vec3>& pb)
 {
@@ -203,15 +194,35 @@ std::vector<PatchMesh> mesh_patches(const Scaffold& scaffold)
     return meshes;
 }
 
-std::vector<std::array<int, 2>> candidate_pairs(const std::vector<PatchMesh>& meshes,
-                                                const std::vector<int>& body_of_patch,
-                                                const FoldState& state, double margin)
+void pose_patches(const std::vector<PatchMesh>& meshes, const FoldState& state, PosedPatches& posed,
+                  const std::vector<int>& only)
 {
-    const int n = int(meshes.size());
+    posed.state = &state;
+    posed.vertices.resize(meshes.size());
+    for (std::vector<Vec3>& v : posed.vertices)
+        v.clear();
+    auto pose = [&](size_t i) {
+        std::vector<Vec3>& out = posed.vertices[i];
+        out.reserve(meshes[i].vertices.size());
+        for (const Vec3& x : meshes[i].vertices)
+            out.push_back(state.poses[i].apply(x));
+    };
+    if (only.empty())
+        for (size_t i = 0; i < meshes.size(); ++i)
+            pose(i);
+    else
+        for (int i : only)
+            pose(size_t(i));
+}
+
+std::vector<std::array<int, 2>>
+candidate_pairs(const PosedPatches& posed, const std::vector<int>& body_of_patch, double margin)
+{
+    const int n = int(posed.vertices.size());
     std::vector<Eigen::AlignedBox3d> boxes(n);
     for (int i = 0; i < n; ++i) {
-        for (const Vec3& x : meshes[i].vertices)
-            boxes[i].extend(state.poses[i].apply(x));
+        for (const Vec3& x : posed.vertices[i])
+            boxes[i].extend(x);
         boxes[i].min().array() -= margin;
         boxes[i].max().array() += margin;
     }
@@ -238,33 +249,34 @@ std::vector<std::array<int, 2>> candidate_pairs(const std::vector<PatchMesh>& me
     return pairs;
 }
 
-std::vector<double> side_of_plane(const std::vector<PatchMesh>& meshes, const Scaffold& scaffold,
-                                  const FoldState& state, int i, int j)
+void side_of_plane(const PosedPatches& posed, const Scaffold& scaffold, int i, int j,
+                   std::vector<double>& side)
 {
-    const Pose& pj = state.poses[j];
+    const Pose& pj = posed.state->poses[j];
     const Vec3 normal = pj.rotation * scaffold.patches[j].normal;
     const Vec3 origin = pj.apply(scaffold.patches[j].origin);
-    std::vector<double> side;
-    side.reserve(meshes[i].vertices.size());
-    for (const Vec3& x : meshes[i].vertices)
-        side.push_back((state.poses[i].apply(x) - origin).dot(normal));
-    return side;
+    side.clear();
+    for (const Vec3& x : posed.vertices[i])
+        side.push_back((x - origin).dot(normal));
 }
 
-double crossing_depth(const std::vector<PatchMesh>& meshes, const Scaffold& scaffold,
-                      const FoldState& state, int i, int j, double tolerance, double clearance)
+double crossing_depth(const std::vector<PatchMesh>& meshes, const PosedPatches& posed,
+                      const Scaffold& scaffold, int i, int j, double tolerance, double clearance)
 {
+    const FoldState& state = *posed.state;
     auto straddle = [](const std::vector<double>& d) {
         const auto [lo, hi] = std::minmax_element(d.begin(), d.end());
         return std::min(*hi, -*lo);
     };
-    const std::vector<double> di = side_of_plane(meshes, scaffold, state, i, j);
+    // Per thread, reused: the validity check calls this for every candidate pair and sample.
+    thread_local std::vector<double> di, dj;
+    side_of_plane(posed, scaffold, i, j, di);
     // Most pairs do not even reach each other's plane: stop before any further work.
     if (clearance <= 0.0 && straddle(di) <= tolerance)
         return 0.0;
-    const std::vector<double> dj = side_of_plane(meshes, scaffold, state, j, i);
-    const std::vector<Vec3> vi = posed_vertices(meshes[i], state.poses[i]);
-    const std::vector<Vec3> vj = posed_vertices(meshes[j], state.poses[j]);
+    side_of_plane(posed, scaffold, j, i, dj);
+    const std::vector<Vec3>& vi = posed.vertices[i];
+    const std::vector<Vec3>& vj = posed.vertices[j];
     double near = 0.0;
     if (clearance > 0.0) {
         const Vec3 ni = state.poses[i].rotation * scaffold.patches[i].normal;

@@ -456,12 +456,21 @@ void FoldSolver::hint_gradient(int c, const BranchHint& hint, const Configuratio
                                int from, int to, Row& row) const
 {
     const int n = int(6 * graph_.components[c].size());
+    // One copy of the card per call, not per column: apply_step moves only this component's
+    // bodies, so restoring those after each column gives q again (a sweep over a 100-patch card
+    // spent a twentieth of its time copying configurations here).
+    thread_local Configuration moved;
+    thread_local Eigen::VectorXd d;
+    moved.assign(q.begin(), q.end());
+    d.setZero(n);
+    const auto& bodies = graph_.components[c];
     for (int col = from; col < to; ++col) {
-        Configuration moved = q;
-        Eigen::VectorXd d = Eigen::VectorXd::Zero(n);
         d[col] = 1e-7 * size_;
         apply_step(c, moved, d);
         row[col - from] = (hint_residual(hint, moved) - f) / d[col];
+        d[col] = 0.0;
+        for (int b : bodies)
+            moved[b] = q[b];
     }
 }
 
@@ -590,7 +599,8 @@ FoldSolver::damped_least_squares(int c, Configuration& q, const std::vector<Bran
                                  Linearize&& linearize, SolveAndApply&& solve_and_apply) const
 {
     const auto& bodies = graph_.components[c];
-    std::vector<BodyPose> saved(bodies.size());
+    thread_local std::vector<BodyPose> saved; // once per thread, not per correction
+    saved.resize(bodies.size());
     double worst = 0.0;
     double current = cost(c, q, hints, &worst);
     double lambda = 1e-6;
@@ -747,12 +757,65 @@ bool FoldSolver::least_squares(int c, Configuration& q, const std::vector<Branch
     }
 }
 
+namespace {
+
+/// True when the symmetric N x N matrix A certainly passes rigid_sized's pivot test: its
+/// Cholesky factor L (no pivoting) exists and λmin(A) ≥ 1 / trace(A⁻¹) = 1 / ‖L⁻¹‖²_F exceeds
+/// 2e-9 of the largest diagonal entry. Every pivot of the pivoted LDLᵀ lies between λmin and
+/// that entry, so it then clears 1e-12 of the largest pivot by a factor of 2000, far beyond
+/// round-off (docs/MATH.md, "A certificate for the stability test"). False means "not sure": the
+/// LDLᵀ decides. Straight loops on a fixed size: Eigen's pivoted LDLᵀ of a 12 x 12 matrix goes
+/// through dynamic-size blocks and cost a validity check over a tenth of its time.
+template <int N> bool clearly_positive_definite(const Eigen::Matrix<double, N, N>& A)
+{
+    double L[N][N];       // lower triangle only
+    double inverse_of[N]; // 1 / L_jj: a bound needs no correctly rounded division
+    double largest = 1.0;
+    for (int i = 0; i < N; ++i)
+        largest = std::max(largest, std::abs(A(i, i)));
+    for (int j = 0; j < N; ++j) {
+        double d = A(j, j);
+        for (int k = 0; k < j; ++k)
+            d -= L[j][k] * L[j][k];
+        if (!(d > 0.0))
+            return false;
+        L[j][j] = std::sqrt(d);
+        inverse_of[j] = 1.0 / L[j][j];
+        for (int i = j + 1; i < N; ++i) {
+            double sum = A(i, j);
+            for (int k = 0; k < j; ++k)
+                sum -= L[i][k] * L[j][k];
+            L[i][j] = sum * inverse_of[j];
+        }
+    }
+    double trace_of_inverse = 0.0; // ‖L⁻¹‖²_F, column by column: L x = e_j
+    for (int j = 0; j < N; ++j) {
+        double x[N];
+        x[j] = inverse_of[j];
+        double column = x[j] * x[j];
+        for (int i = j + 1; i < N; ++i) {
+            double sum = 0.0;
+            for (int k = j; k < i; ++k)
+                sum -= L[i][k] * x[k];
+            x[i] = sum * inverse_of[i];
+            column += x[i] * x[i];
+        }
+        trace_of_inverse += column;
+    }
+    return std::isfinite(trace_of_inverse) && 1.0 / trace_of_inverse > 2e-9 * largest;
+}
+
+} // namespace
+
 template <int N> bool FoldSolver::rigid_sized(int c, const Configuration& q) const
 {
     const int n = int(6 * graph_.components[c].size());
     Eigen::Matrix<double, N, N> A(n, n);
     Eigen::Matrix<double, N, 1> g(n);
     linearize_into(c, q, nullptr, A, g);
+    if constexpr (N != Eigen::Dynamic)
+        if (clearly_positive_definite<N>(A))
+            return true;
     const Eigen::Matrix<double, N, 1> pivots = A.ldlt().vectorD();
     const double scale = std::max(pivots.cwiseAbs().maxCoeff(), 1.0);
     return (pivots.array() > 1e-12 * scale).all();

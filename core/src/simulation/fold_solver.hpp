@@ -43,6 +43,7 @@ public:
     FoldSolver(const FoldSolver&) = delete;
     FoldSolver& operator=(const FoldSolver&) = delete;
 
+    const Scaffold& scaffold() const { return scaffold_; }
     const BodyGraph& graph() const { return graph_; }
     const SimulationOptions& options() const { return options_; }
     double tolerance() const { return tolerance_; }
@@ -143,6 +144,10 @@ private:
     /// solves on all cores, and a system holds the factorisation it is working on.
     mutable tbb::enumerable_thread_specific<std::vector<std::unique_ptr<SparseSystem>>> sparse_;
 };
+
+/// simulate_fold on a scaffold already validated, with its body graph and solver (the validity
+/// check builds those once for the sweep and the checks after it). The angles must be in 0..π.
+Result<FoldSweep> simulate_validated(const FoldSolver& solver, const std::vector<double>& angles);
 
 /// Continuation of one component from the design state toward a sequence of angles.
 class ComponentTrack {

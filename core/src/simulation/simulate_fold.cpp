@@ -14,6 +14,8 @@ namespace popup {
 
 namespace {
 
+const std::string kWork = "the fold simulation"; // built once, not at every checkpoint
+
 std::string degrees(double radians)
 {
     std::ostringstream s;
@@ -72,7 +74,7 @@ struct Start {
 Result<FoldSweep> sweep_from(const Scaffold& s, const BodyGraph& g, const FoldSolver& solver,
                              const Start& start, const std::vector<double>& angles)
 {
-    stop_if_cancelled(solver.options().cancel, "the fold simulation");
+    stop_if_cancelled(solver.options().cancel, kWork);
     Result<FoldSweep> result;
     std::vector<int> order(angles.size());
     std::iota(order.begin(), order.end(), 0);
@@ -106,7 +108,7 @@ Result<FoldSweep> sweep_from(const Scaffold& s, const BodyGraph& g, const FoldSo
             mine.reserve(run->size() * bodies.size());
             size_t k = 0;
             for (; k < run->size(); ++k) {
-                stop_if_cancelled(solver.options().cancel, "the fold simulation");
+                stop_if_cancelled(solver.options().cancel, kWork);
                 if (!track.advance_to(angles[(*run)[k]]))
                     break;
                 for (int b : bodies)
@@ -202,9 +204,16 @@ Result<FoldSweep> simulate_fold(const Scaffold& input, const std::vector<double>
     Result<BodyGraph> graph;
     if (!prepare(input, angles, result, checked, graph))
         return result;
-    const Scaffold& s = checked.value;
-    const BodyGraph& g = graph.value;
-    const FoldSolver solver(s, g, options);
+    const FoldSolver solver(checked.value, graph.value, options);
+    append(result, simulate_validated(solver, angles));
+    return result;
+}
+
+Result<FoldSweep> simulate_validated(const FoldSolver& solver, const std::vector<double>& angles)
+{
+    Result<FoldSweep> result;
+    const Scaffold& s = solver.scaffold();
+    const BodyGraph& g = solver.graph();
     Configuration design = solver.design_configuration();
     solver.drive_base(s.design_angle, design);
     append(result, sweep_from(s, g, solver, {s.design_angle, design, true}, angles));

@@ -20,7 +20,10 @@ struct LoadModelOptions {
 /// model's folder, or an embedded image's bytes) and the diffuse colour of the largest material;
 /// materials of different colours without vertex colours become per-vertex colours.
 /// assimp runs in a child process (fork), so a file that makes it abort or hang is an error,
-/// not the end of the caller. Errors: unreadable_model naming the path and assimp's message (or
+/// not the end of the caller. Errors: non_finite_model naming the vertex, its line and the token
+/// when a text file (OBJ, ASCII STL, ASCII PLY, OFF) writes a coordinate as NaN, infinity or
+/// beyond single precision (checked before assimp, which reads "nan" as a finite number);
+/// unreadable_model naming the path and assimp's message (or
 /// the crash, or the timeout), then check_model's.
 Result<ModelMesh> load_model(const std::string& path, const LoadModelOptions& options = {});
 
