@@ -335,6 +335,51 @@ TEST(MotionLoadAnimation, FbxRoundTripKeepsBonesWeightsAndMotion)
     expect_strip_read_back(export_scene(*scene, "fbxa", "strip.fbx"), 2.0);
 }
 
+TEST(MotionLoadAnimation, AnUnskinnedMeshFollowsTheBoneThatCarriesIt)
+{
+    // The strip without skin, hung below the lower bone (at x = 4 at rest): it moves rigidly
+    // with it. At 2 s the lower bone sits at R(60°)(4, 0) turned by 20°, so the vertex written at
+    // (8, 0.5) (world (12, 0.5) at rest) goes to R(60°)(4, 0) + R(20°)(8, 0.5).
+    auto scene = strip_scene(true);
+    aiMesh* mesh = scene->mMeshes[0];
+    for (unsigned b = 0; b < mesh->mNumBones; ++b)
+        delete mesh->mBones[b];
+    delete[] mesh->mBones;
+    mesh->mBones = nullptr;
+    mesh->mNumBones = 0;
+    aiNode* root = scene->mRootNode;
+    aiNode* body = root->mChildren[0];
+    aiNode* lower = root->mChildren[1]->mChildren[0];
+    root->mChildren[0] = root->mChildren[1];
+    root->mNumChildren = 1;
+    lower->mNumChildren = 1;
+    lower->mChildren = new aiNode* [1] { body };
+    body->mParent = lower;
+    const Result<Animation> r = load_animation(export_scene(*scene, "glb2", "carried.glb"));
+    ASSERT_TRUE(r.ok) << r.diagnostics[0].message;
+    const Animation& a = r.value;
+    ASSERT_EQ(a.mesh.vertices.size(), 10u);
+    const int low = bone_named(a, "Lower");
+    ASSERT_GE(low, 0);
+    for (const auto& weights : a.skin) {
+        ASSERT_EQ(weights.size(), 1u);
+        EXPECT_EQ(weights[0].first, low);
+    }
+    const Vec3 expected = Vec3(4 * std::cos(60 * deg), 4 * std::sin(60 * deg), 0) +
+                          Vec3(8 * std::cos(20 * deg) - 0.5 * std::sin(20 * deg),
+                               8 * std::sin(20 * deg) + 0.5 * std::cos(20 * deg), 0);
+    ASSERT_EQ(a.frames(), 3);
+    double nearest = 1e9;
+    for (const Vec3& p : posed_mesh(a, 2).vertices)
+        nearest = std::min(nearest, (p - expected).norm());
+    EXPECT_LT(nearest, 1e-5);
+    // At the first frame the mesh is where the file puts it: (8, 0.5) + (4, 0).
+    nearest = 1e9;
+    for (const Vec3& p : posed_mesh(a, 0).vertices)
+        nearest = std::min(nearest, (p - Vec3(12, 0.5, 0)).norm());
+    EXPECT_LT(nearest, 1e-5);
+}
+
 TEST(MotionLoadAnimation, AStillSceneHasNoAnimation)
 {
     const auto scene = strip_scene(false);
