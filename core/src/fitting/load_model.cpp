@@ -1,6 +1,7 @@
 #include "popup/fitting/load_model.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -14,9 +15,9 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
-#include "text_coordinates.hpp"
 #include "../io/child_process.hpp"
 #include "model_mesh_bytes.hpp"
+#include "text_coordinates.hpp"
 
 namespace popup {
 
@@ -140,8 +141,8 @@ std::string read_with_assimp(const std::string& path, ModelMesh& mesh)
     importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS,
                                 aiComponent_NORMALS | aiComponent_TANGENTS_AND_BITANGENTS);
     const unsigned steps = aiProcess_RemoveComponent | aiProcess_Triangulate |
-                           aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
-                           aiProcess_SortByPType | aiProcess_ValidateDataStructure;
+                           aiProcess_PreTransformVertices | aiProcess_SortByPType |
+                           aiProcess_ValidateDataStructure;
     const aiScene* scene = nullptr;
     try {
         // Read first, then drop faces no step can handle, then post-process: assimp's steps
@@ -197,29 +198,44 @@ std::string read_with_assimp(const std::string& path, ModelMesh& mesh)
 
     const double nan = std::numeric_limits<double>::quiet_NaN();
     for (const aiMesh* part : parts) {
-        const int offset = int(mesh.vertices.size());
         const aiMaterial* material = material_of(part);
         const Vec3 colour = material_colour(material);
         // Texture coordinates count only where they index `texture` (or when nothing is textured).
         const bool uv_here =
             part->HasTextureCoords(0) && (texture.empty() || material_texture(material) == texture);
+        // Corners with the same position, colour and texture coordinate become one vertex.
+        // Done here, not by aiProcess_JoinIdenticalVertices: assimp 5.2's step joins an OBJ's
+        // corners of different vertex colours (a red and a blue face sharing an edge came back
+        // with one colour).
+        std::map<std::array<std::uint64_t, 8>, int> joined;
+        std::vector<int> index_of(part->mNumVertices);
         for (unsigned v = 0; v < part->mNumVertices; ++v) {
             const aiVector3D& p = part->mVertices[v];
+            const Vec3 c = keep_colours
+                               ? (part->HasVertexColors(0) ? rgb(part->mColors[0][v]) : colour)
+                               : Vec3::Zero();
+            const Vec2 uv = !any_uvs ? Vec2::Zero()
+                            : uv_here
+                                ? Vec2(part->mTextureCoords[0][v].x, part->mTextureCoords[0][v].y)
+                                : Vec2(nan, nan);
+            const std::array<double, 8> values{p.x, p.y, p.z, c.x(), c.y(), c.z(), uv.x(), uv.y()};
+            std::array<std::uint64_t, 8> key{};
+            std::memcpy(key.data(), values.data(), sizeof(values)); // bits: NaN equals itself
+            const auto [at, added] = joined.emplace(key, int(mesh.vertices.size()));
+            index_of[v] = at->second;
+            if (!added)
+                continue;
             mesh.vertices.emplace_back(p.x, p.y, p.z);
             if (keep_colours)
-                mesh.colours.push_back(part->HasVertexColors(0) ? rgb(part->mColors[0][v])
-                                                                : colour);
+                mesh.colours.push_back(c);
             if (any_uvs)
-                mesh.uvs.push_back(
-                    uv_here ? Vec2(part->mTextureCoords[0][v].x, part->mTextureCoords[0][v].y)
-                            : Vec2(nan, nan));
+                mesh.uvs.push_back(uv);
         }
         for (unsigned f = 0; f < part->mNumFaces; ++f) {
             const aiFace& face = part->mFaces[f];
             if (face.mNumIndices == 3)
-                mesh.triangles.push_back({offset + int(face.mIndices[0]),
-                                          offset + int(face.mIndices[1]),
-                                          offset + int(face.mIndices[2])});
+                mesh.triangles.push_back({index_of[face.mIndices[0]], index_of[face.mIndices[1]],
+                                          index_of[face.mIndices[2]]});
         }
     }
     return {};

@@ -281,6 +281,36 @@ TEST(FitLoadModel, ReadsVertexColours)
     }
 }
 
+TEST(FitLoadModel, CornersOfDifferentColoursAtOnePointStayApart)
+{
+    // Written by hand: a red and a blue triangle share the edge (0 0 0)-(1 0 0), each with its
+    // own coloured copies of the two points (OBJ's "v x y z r g b"), and two red triangles share
+    // the same colour there. Expected: the red/blue corners stay 6 vertices, each face keeps its
+    // own colour; the red/red corners join into 4.
+    const fs::path dir = scratch("colour_seams");
+    const fs::path apart = dir / "apart.obj";
+    std::ofstream(apart) << "v 0 0 0 1 0 0\nv 1 0 0 1 0 0\nv 0 1 0 1 0 0\n"
+                            "v 0 0 0 0 0 1\nv 1 0 0 0 0 1\nv 0 0 1 0 0 1\n"
+                            "f 1 2 3\nf 4 6 5\n";
+    const Result<ModelMesh> read = load_model(apart.string());
+    ASSERT_TRUE(read.ok) << read.diagnostics.front().message;
+    ASSERT_EQ(read.value.vertices.size(), 6u);
+    ASSERT_EQ(read.value.colours.size(), 6u);
+    for (const auto& t : read.value.triangles) {
+        const Vec3 colour = read.value.colours[t[0]];
+        EXPECT_TRUE(colour == Vec3(1, 0, 0) || colour == Vec3(0, 0, 1));
+        for (int k = 1; k < 3; ++k)
+            EXPECT_EQ(read.value.colours[t[k]], colour) << "one face, one colour";
+    }
+    const fs::path same = dir / "same.obj";
+    std::ofstream(same) << "v 0 0 0 1 0 0\nv 1 0 0 1 0 0\nv 0 1 0 1 0 0\n"
+                           "v 0 0 0 1 0 0\nv 1 0 0 1 0 0\nv 0 0 1 1 0 0\n"
+                           "f 1 2 3\nf 4 6 5\n";
+    const Result<ModelMesh> joined = load_model(same.string());
+    ASSERT_TRUE(joined.ok) << joined.diagnostics.front().message;
+    EXPECT_EQ(joined.value.vertices.size(), 4u);
+}
+
 TEST(FitLoadModel, ReadsTextureCoordinatesAndTheTexturePath)
 {
     const fs::path dir = scratch("texture");
