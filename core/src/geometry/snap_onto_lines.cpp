@@ -1,5 +1,6 @@
 #include "snap_onto_lines.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -58,6 +59,10 @@ void snap_onto_lines(Loop2& loop, const SnapTargets& targets, double reach)
                     at = x;
         q = at ? *at : foot(q, *near.front());
     }
+    // Two vertices a few nanometres apart may have gone to the same corner: keep one.
+    loop.erase(std::unique(loop.begin(), loop.end()), loop.end());
+    while (loop.size() > 1 && loop.front() == loop.back())
+        loop.pop_back();
 }
 
 } // namespace popup

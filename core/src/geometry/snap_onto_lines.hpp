@@ -17,7 +17,8 @@ struct SnapTargets {
 
 /// Each vertex within `reach` of a corner becomes that corner; else, within `reach` of two
 /// segments that cross, their crossing; else, within `reach` of one segment, its foot on it.
-/// Vertices farther from every target stay where they are.
+/// Vertices farther from every target stay where they are; vertices that land on the same point
+/// as the one before them are dropped.
 void snap_onto_lines(Loop2& loop, const SnapTargets& targets, double reach);
 
 } // namespace popup
