@@ -6,6 +6,7 @@
 
 #include "../geometry/clipper_paths.hpp"
 #include "../geometry/segment_in_region.hpp"
+#include "../geometry/snap_onto_lines.hpp"
 #include "popup/mechanisms/mechanism.hpp"
 
 namespace popup {
@@ -61,6 +62,18 @@ std::string title(const Scaffold& s, int id)
 DiagnosticSubject about_profile(int patch_id)
 {
     return {{patch_id}, std::string("Profile"), std::nullopt};
+}
+
+// How far Clipper may put a vertex that belongs on a line off it: half a unit per coordinate
+// when it rounds an input vertex, about twice that for a crossing it computes; with a margin.
+constexpr double clipper_rounding = 4.0 / clipper_scale;
+
+std::vector<const Loop2*> loops_of(const Loop2& outer, const std::vector<Loop2>& holes)
+{
+    std::vector<const Loop2*> loops{&outer};
+    for (const Loop2& h : holes)
+        loops.push_back(&h);
+    return loops;
 }
 
 // A fold or a slit of the patch, as a segment to clip.
@@ -158,7 +171,24 @@ Result<ProfileApplied> apply_profile(Scaffold& scaffold, int patch_id, const Pro
         return r;
     }
     const size_t kept = holding.empty() ? 0 : holding.front();
-    const Region& piece = pieces[kept];
+    Region piece = pieces[kept];
+    // Back onto the exact corners, edges and folds of the patch: off them by a grid unit, the
+    // folds the sheets draw through the outline's corners leave the card remade from them out of
+    // line, and a linkage with parallel folds (a box) then jams (docs/DESIGN.md).
+    SnapTargets exact;
+    for (const Loop2* loop : loops_of(outer, holes))
+        for (size_t i = 0; i < loop->size(); ++i) {
+            exact.corners.push_back((*loop)[i]);
+            exact.lines.push_back({(*loop)[i], (*loop)[(i + 1) % loop->size()]});
+        }
+    for (const Edge& e : edges) {
+        exact.corners.push_back(f.to_frame(e.from));
+        exact.corners.push_back(f.to_frame(e.to));
+        exact.lines.push_back({f.to_frame(e.from), f.to_frame(e.to)});
+    }
+    snap_onto_lines(piece.outer, exact, clipper_rounding);
+    for (Loop2& hole : piece.holes)
+        snap_onto_lines(hole, exact, clipper_rounding);
     std::vector<Intervals> kept_along;
     for (const Edge& e : edges) {
         kept_along.push_back(clip(piece, e));

@@ -14,6 +14,7 @@
 #include "popup/sheets/sheet_layout.hpp"
 #include "popup/sheets/verify_sheets.hpp"
 #include "popup/simulation/check_validity.hpp"
+#include "popup/simulation/simulate_fold.hpp"
 
 using namespace popup;
 
@@ -357,4 +358,83 @@ TEST(ApplyProfile, ABoxFrontPanelWithChamferedCornersStaysValid)
     for (const Diagnostic& d : v.diagnostics)
         ADD_FAILURE() << d.message;
     expect_laid_out_and_verified(s);
+}
+
+// A box 100/3 mm high: its top folds (z = 100/3) lie off Clipper's nanometre grid, which the
+// profile's clipping rounds to. L stands in the plane x = 20 (the ground depth), y 60..120; in
+// its frame u runs along y from y = 90 and v up from the ground. The notch keeps 20 mm of its
+// ground fold (y 80..100) and its joints with the end panels from v = 10 up. Profiles change no
+// fold line, so the card moves as the same box without a profile; and the sheets of the
+// profiled card must refold onto that motion at every angle, not only at the design angle
+// (docs/DESIGN.md, "Profiles keep their folds exact").
+TEST(ApplyProfile, FoldsOffTheNanometreGridStayExactAndTheSheetsRefoldAtEveryAngle)
+{
+    const double height = 100.0 / 3;
+    auto box = [&] {
+        Scaffold s = card();
+        BoxFoldParams p;
+        p.offset = 60;
+        p.width = 60;
+        p.depth_ground = 20;
+        p.depth_backdrop = 20;
+        p.height = height;
+        EXPECT_TRUE(add_box_fold(s, central_fold(s), p, "B1").ok);
+        return s;
+    };
+    const Scaffold plain = box();
+    Scaffold s = box();
+    Profile notch;
+    notch.name = "Notch";
+    notch.outer = {{-10, 0}, {10, 0},   {10, 10},  {35, 10},
+                   {35, 40}, {-35, 40}, {-35, 10}, {-10, 10}};
+    ASSERT_TRUE(apply_profile(s, "B1", "L", notch).ok);
+
+    const Patch& l = patch_named(s, "B1.L");
+    int on_top = 0;
+    for (const Vec3& x : l.outer) {
+        EXPECT_NEAR(x.x(), 20.0, 1e-12);
+        if (std::abs(x.z() - height) < 1e-3) {
+            ++on_top;
+            EXPECT_NEAR(x.z(), height, 1e-12); // on the top fold, not a grid unit off it
+            EXPECT_NEAR(std::min(std::abs(x.y() - 60), std::abs(x.y() - 120)), 0, 1e-12);
+        }
+    }
+    EXPECT_EQ(on_top, 2);
+    const auto ground = folds_between(s, s.ground, l.id);
+    ASSERT_EQ(ground.size(), 1u);
+    EXPECT_NEAR((ground[0]->to - ground[0]->from).norm(), 20, 1e-12);
+    for (const char* end : {"B1.FL", "B1.BL"}) {
+        const auto joint = folds_between(s, l.id, patch_named(s, end).id);
+        ASSERT_EQ(joint.size(), 1u) << end;
+        EXPECT_NEAR((joint[0]->to - joint[0]->from).norm(), height - 10, 1e-12) << end;
+        for (const Vec3* x : {&joint[0]->from, &joint[0]->to})
+            EXPECT_NEAR(std::abs(x->z() - 5 - height / 2), height / 2 - 5, 1e-12) << end;
+    }
+
+    std::vector<double> angles;
+    for (int k = 0; k <= 12; ++k)
+        angles.push_back(M_PI * (1 - k / 12.0));
+    const Result<FoldSweep> as_plain = simulate_fold(plain, angles);
+    ASSERT_TRUE(as_plain.ok && as_plain.value.complete);
+    const Result<FoldSweep> profiled = simulate_fold(s, angles);
+    ASSERT_TRUE(profiled.ok && profiled.value.complete);
+    for (size_t k = 0; k < angles.size(); ++k)
+        for (size_t i = 0; i < plain.patches.size(); ++i) {
+            const Loop3 a = posed_outline(plain.patches[i], as_plain.value.states[k].poses[i]);
+            const Loop3 b = posed_outline(plain.patches[i], profiled.value.states[k].poses[i]);
+            for (size_t j = 0; j < a.size(); ++j)
+                EXPECT_NEAR((a[j] - b[j]).norm(), 0, 1e-6) << plain.patches[i].name;
+        }
+
+    SheetOptions o;
+    o.nest.paper = paper_by_name("A3").value;
+    const Result<SheetSet> laid = layout_sheets(s, o);
+    ASSERT_TRUE(laid.ok) << (laid.diagnostics.empty() ? "" : laid.diagnostics.front().message);
+    const Result<RoundTrip> trip = verify_sheets(s, draw_sheets(laid.value));
+    ASSERT_TRUE(trip.ok);
+    for (const Diagnostic& d : trip.diagnostics)
+        ADD_FAILURE() << d.message;
+    EXPECT_TRUE(trip.value.ok);
+    EXPECT_EQ(trip.value.angles, 13);      // every angle asked for, not the design angle alone
+    EXPECT_LE(trip.value.max_error, 1e-6); // mm, each refolded patch against the simulated one
 }
