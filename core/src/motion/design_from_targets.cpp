@@ -152,6 +152,7 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
         if (progress)
             progress->store(0.2 * double(j + 1) / targets.chains.size());
     }
+    prepare_alike(p);
     r.timings_s.push_back({"mapping", seconds_since(t)});
 
     std::map<int, std::string> reasons; // chain -> why stationary
@@ -224,7 +225,10 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
         why << "its " << to_string(state.slots[loser].mechanism.kind)
             << " mechanism collides with the one carrying " << chain_names(p, state.slots[other])
             << " (volumes overlap by " << worst.depth
-            << " mm) and they move too differently to share a patch";
+            << " mm) and they move too differently to share a patch (paths "
+            << path_distance(p.chains[state.slots[loser].chains.front()],
+                             p.chains[state.slots[other].chains.front()])
+            << " mm apart, RMS)";
         demote(p, state, loser, why.str(), reasons);
     }
     r.timings_s.push_back({"collision repair", seconds_since(t)});
@@ -349,7 +353,8 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
                     if (k != j)
                         others += (others.empty() ? "" : ", ") + p.chains[k].name;
                 cr.reason = "shares its " + cr.mapping + " mechanism with " + others +
-                            " (their mechanisms collided and they move alike)";
+                            " (they move alike: paths within " +
+                            std::to_string(p.alike_fraction * p.diagonal) + " mm RMS)";
             } else if (s.mechanism.kind == MotionKind::stationary) {
                 cr.status = "stationary";
                 cr.reason = reasons.count(j) ? reasons[j]

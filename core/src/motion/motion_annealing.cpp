@@ -165,15 +165,19 @@ private:
             // carries both chains; parameters weighted by the chains' vertex shares.
             if (n < 2)
                 return false;
-            std::vector<std::pair<int, int>> pairs;
+            // Only chains that move alike may share a patch.
+            std::vector<std::pair<int, int>> pairs, colliding;
             for (int i = 0; i < n; ++i)
                 for (int j = i + 1; j < n; ++j)
-                    if (depths_[i][j] > 0)
+                    if (alike(state_.slots[i], state_.slots[j])) {
                         pairs.push_back({i, j});
+                        if (depths_[i][j] > 0)
+                            colliding.push_back({i, j});
+                    }
+            if (!colliding.empty())
+                pairs = colliding;
             if (pairs.empty())
-                for (int i = 0; i < n; ++i)
-                    for (int j = i + 1; j < n; ++j)
-                        pairs.push_back({i, j});
+                return false;
             const auto [i, j] = pairs[pick(int(pairs.size()))];
             const Slot &a = state_.slots[i], &b = state_.slots[j];
             const double wa = chain_weight(p_, a), wb = chain_weight(p_, b);
@@ -224,6 +228,15 @@ private:
         r.mechanism = p_.candidates[chain][kinds[pick(int(kinds.size()))]].mechanism;
         q.removed = {i};
         q.added = {r};
+        return true;
+    }
+
+    bool alike(const Slot& a, const Slot& b) const
+    {
+        for (int j : a.chains)
+            for (int k : b.chains)
+                if (p_.alike.empty() || !p_.alike[j][k])
+                    return false;
         return true;
     }
 
@@ -371,6 +384,40 @@ private:
 };
 
 } // namespace
+
+double path_distance(const ChainTarget& a, const ChainTarget& b)
+{
+    auto at = [](const ChainTarget& t, double s) {
+        const auto it = std::lower_bound(t.s.begin(), t.s.end(), s);
+        if (it == t.s.begin())
+            return t.target.front();
+        if (it == t.s.end())
+            return t.target.back();
+        const std::size_t i = std::size_t(it - t.s.begin());
+        const double span = t.s[i] - t.s[i - 1];
+        const double u = span > 0 ? (s - t.s[i - 1]) / span : 1.0;
+        return Vec2((1 - u) * t.target[i - 1] + u * t.target[i]);
+    };
+    std::vector<double> s = a.s;
+    s.insert(s.end(), b.s.begin(), b.s.end());
+    std::sort(s.begin(), s.end());
+    if (s.empty())
+        return 0.0;
+    double sum = 0;
+    for (double si : s)
+        sum += (at(a, si) - at(b, si)).squaredNorm();
+    return std::sqrt(sum / s.size());
+}
+
+void prepare_alike(AnnealProblem& p)
+{
+    const std::size_t n = p.chains.size();
+    p.alike.assign(n, std::vector<bool>(n, false));
+    for (std::size_t j = 0; j < n; ++j)
+        for (std::size_t k = 0; k < n; ++k)
+            p.alike[j][k] =
+                j == k || path_distance(p.chains[j], p.chains[k]) <= p.alike_fraction * p.diagonal;
+}
 
 double slot_cost(const AnnealProblem& p, const Slot& slot)
 {

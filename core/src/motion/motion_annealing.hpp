@@ -31,7 +31,19 @@ struct AnnealProblem {
     double depth_weight = 15.0;
     double collision_weight = 1e5;
     VolumeOptions volumes;
+    /// Chains whose target paths stay this close (RMS, as a fraction of the diagonal) move
+    /// alike and may share one mechanism (the merge move).
+    double alike_fraction = 0.05;
+    /// alike[j][k]: chains j and k move alike (filled by prepare_alike).
+    std::vector<std::vector<bool>> alike;
 };
+
+/// RMS distance (mm) between two chains' target paths, both interpolated linearly in s over the
+/// union of their samples.
+double path_distance(const ChainTarget& a, const ChainTarget& b);
+
+/// Fills problem.alike from path_distance and alike_fraction.
+void prepare_alike(AnnealProblem& problem);
 
 struct AnnealOptions {
     long iterations = 4000;
