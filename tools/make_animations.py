@@ -240,7 +240,8 @@ def horizontal_tip(p, s):
 
 def diagonal_tip(p, s):
     """Step nose on a vertical-spine v-fold's wings (popupcore.v_fold_wings + step_nose), at the
-    step's offset along the spine: the composition of docs/MATH.md, Diagonal translation."""
+    middle of the step's width along the spine (the carried patch's middle, as for the
+    horizontal translation): the composition of docs/MATH.md, Diagonal translation."""
     import popupcore
 
     v = popupcore.VFoldParams()
@@ -257,7 +258,7 @@ def diagonal_tip(p, s):
         point = (
             np.array(wings.origin)
             + nose[0] * np.cross(axis, up)
-            + step.offset * axis
+            + (step.offset + 0.5 * step.width) * axis
             + nose[1] * up
         )
         out.append(point[:2])
