@@ -149,6 +149,8 @@ def cylinder(name, head, tail, radius, bones, rings=4, sides=10):
     def t(v):
         return max(0.0, min(1.0, (Vector(v) - head).dot(axis) / length))
 
+    if first == second:  # one bone: every vertex fully its own (none left unweighted)
+        return _part(name, verts, faces, {first: lambda v: 1.0})
     blend = {first: lambda v: 1.0 - _ramp(t(v)), second: lambda v: _ramp(t(v))}
     return _part(name, verts, faces, blend)
 
