@@ -284,12 +284,7 @@ def test_the_design_never_collides(name, seed):
 
 def test_two_crossing_arms_that_move_alike_are_merged():
     result = design("crossing_alike")
-    arms = (
-        [chain(result, n) for n in ("LeftArmFore_end", "RightArmFore_end")]
-        if any(c.name.endswith("_end") for c in result.chains)
-        else [c for c in result.chains if "Arm" in c.name]
-    )
-    assert len(arms) == 2
+    arms = [chain_for(result, bone) for bone in ("LeftArmFore", "RightArmFore")]
     statuses = sorted(c.status for c in arms)
     assert "stationary" not in statuses, [(c.name, c.reason) for c in arms]
     assert "merged" in statuses, [(c.name, c.status, c.reason) for c in arms]
