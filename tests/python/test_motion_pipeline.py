@@ -323,3 +323,25 @@ def test_the_same_seed_gives_the_same_design():
     animation = popupcore.load_animation(os.path.join(DATA, "character.bvh"))
     again = popupcore.design_motion(animation, options_for("character", seed=7))
     assert snapshot(first) == snapshot(again)
+
+
+def test_trajectory_json_example_reads_with_its_points():
+    """tests/data/animations/trajectories.json (docs/ANIMATION_INPUT.md's format): each effector's
+    bone is at its listed point at every frame, the head hanging from the hip."""
+    path = os.path.join(DATA, "trajectories.json")
+    with open(path, encoding="utf-8") as f:
+        doc = json.load(f)
+    animation = popupcore.load_trajectories(path)
+    frames = len(doc["effectors"][0]["points"])
+    assert animation.frames == frames
+    assert np.asarray(animation.frame_times_s) == pytest.approx(np.arange(frames) / 30.0)
+    names = [name for name, _ in animation.bones]
+    parents = dict(animation.bones)
+    assert names[parents["head"]] == "hip"
+    for frame in (0, frames // 2, frames - 1):
+        pose = popupcore.forward_kinematics(animation, frame)
+        for effector in doc["effectors"]:
+            point = np.zeros(3)
+            point[: len(effector["points"][frame])] = effector["points"][frame]
+            got = np.asarray(pose[names.index(effector["name"])])[:3, 3]
+            assert got == pytest.approx(point, abs=1e-9), (effector["name"], frame)
