@@ -203,7 +203,8 @@ std::string export_scene(const aiScene& scene, const char* format, const std::st
     return path.string();
 }
 
-void expect_strip_read_back(const std::string& path)
+/// Reads back the strip; the pose of tick 20 is expected at `last_time_s` (the file's own time).
+void expect_strip_read_back(const std::string& path, double last_time_s)
 {
     const Result<Animation> r = load_animation(path);
     ASSERT_TRUE(r.ok) << path << ": " << r.diagnostics[0].message;
@@ -230,13 +231,11 @@ void expect_strip_read_back(const std::string& path)
         }
         EXPECT_TRUE(found) << path << ": written vertex " << w << " not read back";
     }
-    // At 2 s (tick 20) the upper bone has turned 60°, the lower 20° in all: vertex (8, 0.5)
-    // goes to R(60°)(4, 0) + R(20°)(4, 0.5).
-    int at = -1;
-    for (int f = 0; f < a.frames(); ++f)
-        if (std::abs(a.frame_times_s[f] - 2.0) < 1e-6)
-            at = f;
-    ASSERT_GE(at, 0) << path << ": no frame at 2 s";
+    // At tick 20 the upper bone has turned 60°, the lower 20° in all: vertex (8, 0.5) goes to
+    // R(60°)(4, 0) + R(20°)(4, 0.5).
+    ASSERT_EQ(a.frames(), 3) << path;
+    EXPECT_NEAR(a.frame_times_s[2], last_time_s, 1e-6) << path;
+    const int at = 2;
     const ModelMesh posed = posed_mesh(a, at);
     const Vec3 expected = Vec3(4 * std::cos(60 * deg), 4 * std::sin(60 * deg), 0) +
                           Vec3(4 * std::cos(20 * deg) - 0.5 * std::sin(20 * deg),
@@ -255,7 +254,8 @@ TEST(MotionLoadAnimation, BvhArmFollowsItsAnalyticTrajectory)
     ASSERT_TRUE(r.ok) << r.diagnostics[0].message;
     const Animation& a = r.value;
     ASSERT_EQ(a.frames(), 12);
-    EXPECT_NEAR(a.frame_times_s[11], 11 * 0.04, 1e-9);
+    // BVH's frame time is kept as a float: 0.04 to 1e-9 relative.
+    EXPECT_NEAR(a.frame_times_s[11], 11 * 0.04, 11 * 0.04 * 1e-7);
     const int shoulder = bone_named(a, "Shoulder"), elbow = bone_named(a, "Elbow");
     ASSERT_GE(shoulder, 0);
     ASSERT_GE(elbow, 0);
@@ -298,14 +298,30 @@ TEST(MotionLoadAnimation, SingleFrameAndBadFilesAreNamedErrors)
 TEST(MotionLoadAnimation, GltfRoundTripKeepsBonesWeightsAndMotion)
 {
     const auto scene = strip_scene(true);
-    expect_strip_read_back(export_scene(*scene, "glb2", "strip.glb"));
-    expect_strip_read_back(export_scene(*scene, "gltf2", "strip.gltf"));
+    // glTF keeps seconds: tick 20 at 10 ticks per second is 2 s.
+    expect_strip_read_back(export_scene(*scene, "glb2", "strip.glb"), 2.0);
+    expect_strip_read_back(export_scene(*scene, "gltf2", "strip.gltf"), 2.0);
 }
 
 TEST(MotionLoadAnimation, ColladaRoundTripKeepsBonesWeightsAndMotion)
 {
     const auto scene = strip_scene(true);
-    expect_strip_read_back(export_scene(*scene, "collada", "strip.dae"));
+    const std::string path = export_scene(*scene, "collada", "strip.dae");
+    // assimp 5.2's Collada exporter writes the key times in ticks where Collada means seconds
+    // (<float_array id="Upper_matrix-input-array"> 0 10 20): the file says 20 s, and that is
+    // what a reader must give. Read the written time back from the file itself.
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string dae = text.str();
+    const size_t array = dae.find("Upper_matrix-input-array");
+    ASSERT_NE(array, std::string::npos);
+    const size_t open = dae.find('>', array) + 1, close = dae.find('<', open);
+    std::istringstream times(dae.substr(open, close - open));
+    double t = 0.0, last = -1.0;
+    while (times >> t)
+        last = t;
+    expect_strip_read_back(path, last);
 }
 
 TEST(MotionLoadAnimation, AStillSceneHasNoAnimation)
