@@ -171,7 +171,7 @@ def test_bvh_end_effector_paths_are_the_known_paths(name):
     # scale 1 and the bounding box's centre: the file's (x, y) are the card's
     to_card = np.asarray(targets.animation_to_card)
     assert to_card[:2, :2] == pytest.approx(np.eye(2), abs=1e-9)
-    assert to_card[:2, 3] == pytest.approx([0.0, 0.0], abs=1e-6)
+    assert to_card[:2, 3] == pytest.approx([0.0, 0.0], abs=1e-4)  # the file has 6 decimals
     names = [c.name for c in targets.chains]
     for bone, entry in m["known"].items():
         if entry["kind"] == "still":
