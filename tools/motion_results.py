@@ -93,6 +93,7 @@ def row(label, result, seconds):
         "valid": result.valid,
         "seconds": seconds,
         "mechanisms": len(result.mechanisms),
+        "samples": min(len(c.s) for c in result.chains),
         "notes": "; ".join(stationary),
     }
 
@@ -110,12 +111,13 @@ def markdown(rows, seed, iterations):
         "moves in the card's plane: the goal is a weighted error under %.2f."
         % (seed, iterations or "the default", GOAL),
         "",
-        "| animation | chains | mappings | mechanisms | weighted error | goal < 0.03 | valid | time (s) |",
-        "|---|---|---|---|---|---|---|---|",
+        "| animation | chains | mappings | mechanisms | fewest samples | weighted error "
+        "| goal < 0.03 | valid | time (s) |",
+        "|---|---|---|---|---|---|---|---|---|",
     ]
     for r in rows:
         lines.append(
-            f"| {r['label']} | {r['chains']} | {r['mappings']} | {r['mechanisms']} | "
+            f"| {r['label']} | {r['chains']} | {r['mappings']} | {r['mechanisms']} | {r['samples']} | "
             f"{r['weighted_error']:.4f} | {'yes' if r['weighted_error'] < GOAL else 'NO'} | "
             f"{'yes' if r['valid'] else 'NO'} | {r['seconds']:.2f} |"
         )
@@ -130,6 +132,15 @@ def markdown(rows, seed, iterations):
     notes = [f"- {r['label']}: stationary {r['notes']}" for r in rows if r["notes"]]
     if notes:
         lines += ["", "Chains made stationary, with the report's reason:", ""] + notes
+    lines += [
+        "",
+        "Reading the table: E_m is measured at the adaptive samples of each path (thesis §6.2, "
+        "flatness τangle = 2°). A straight path is flat, so it keeps only its two end points "
+        '("fewest samples" 2): its error then says only that the mechanism starts and ends in '
+        "the right places, not how it moves between (line_vertical, line_horizontal and "
+        "rig_horizontal score 0 that way, whatever their mapping). The rigs' known paths "
+        "(tests/python/test_motion_pipeline.py) are the stricter check.",
+    ]
     failing = [r["label"] for r in rows if r["weighted_error"] >= GOAL]
     lines += [
         "",
