@@ -344,10 +344,11 @@ def identifiable(kind, p):
 
 
 def _arm_rotation():
-    """Hand on a circle: shoulder at (-20, 110) turning 30° → 120°, radius 60 (closed → open)."""
+    """Hand on a circle: shoulder at (-40, 110) turning 0° → 90°, radius 40 (closed → open): it
+    starts on the fold and swings onto the backdrop page, where a rotation arm moves."""
     s = s_values()
-    centre, radius = (-20.0, 110.0), 60.0
-    angle = 30.0 + 90.0 * s
+    centre, radius = (-40.0, 110.0), 40.0
+    angle = 90.0 * s
     root = Joint("Shoulder", (0, 0, 0), ROOT_CHANNELS, end=(radius, 0, 0))
     motion = {
         "Shoulder": {
@@ -362,7 +363,7 @@ def _arm_rotation():
             "kind": "circle",
             "centre": list(centre),
             "radius": radius,
-            "degrees": [30.0, 120.0],
+            "degrees": [0.0, 90.0],
             "mapping": "rotation",
         }
     }
@@ -597,7 +598,7 @@ def _synthetic(names):
 
 
 ANIMATIONS = {
-    "arm_rotation": (_arm_rotation, "a hand turning 90° about the shoulder, radius 60 mm"),
+    "arm_rotation": (_arm_rotation, "a hand turning 90° about the shoulder, radius 40 mm"),
     "line_vertical": (_line_vertical, "a hand rising 40 mm along the central fold (rotations)"),
     "line_horizontal": (
         _line_horizontal,

@@ -141,6 +141,12 @@ def markdown(rows, seed, iterations):
         "rig_horizontal score 0 that way, whatever their mapping). The rigs' known paths "
         "(tests/python/test_motion_pipeline.py) are the stricter check.",
     ]
+    lines += [
+        "",
+        "Times above are one run each on a shared machine, loading included. The pipeline's speed "
+        "goal (<= 1 s at <= 16 mechanisms) is BM_DesignMotion in bench/design_motion_bench.cpp "
+        "(`make bench`), on generated characters of 4, 8 and 16 arms.",
+    ]
     failing = [r["label"] for r in rows if r["weighted_error"] >= GOAL]
     lines += [
         "",
