@@ -144,6 +144,8 @@ void read_with_assimp(const std::string& path, Read& out)
                                 aiPrimitiveType_POINT | aiPrimitiveType_LINE);
     // BVH has no mesh: assimp would make one that draws the skeleton.
     importer.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);
+    // FBX: one node per bone, not helper nodes for each pivot ("$AssimpFbx$_Rotation").
+    importer.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, false);
     const aiScene* scene = importer.ReadFile(
         path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
     if (!scene) {
