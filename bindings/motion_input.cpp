@@ -170,7 +170,8 @@ void bind_motion_input(py::module_& m)
         .def_readwrite("card_depth", &MotionView::card_depth)
         .def_readwrite("first_frame", &MotionView::first_frame)
         .def_readwrite("last_frame", &MotionView::last_frame)
-        .def_readwrite("angle_tolerance", &MotionView::angle_tolerance);
+        .def_readwrite("angle_tolerance", &MotionView::angle_tolerance)
+        .def_readwrite("min_intervals", &MotionView::min_intervals);
 
     py::class_<ChainPath>(m, "ChainPath",
                           "A chain's target motion on the card: s in [0, 1] (θ = 180°·s), "

@@ -40,11 +40,18 @@ struct Sampler {
 } // namespace
 
 std::vector<double> adaptive_samples(const std::function<Vec2(double)>& path, double tolerance_deg,
-                                     double still, int max_depth)
+                                     double still, int max_depth, int min_intervals)
 {
     Sampler sampler{path, tolerance_deg * M_PI / 180.0, still, max_depth, {0.0}};
-    sampler.split(0.0, path(0.0), 1.0, path(1.0), 0);
-    sampler.s.push_back(1.0);
+    const int n = std::max(1, min_intervals);
+    Vec2 start = path(0.0);
+    for (int i = 0; i < n; ++i) {
+        const double a = double(i) / n, b = i + 1 == n ? 1.0 : double(i + 1) / n;
+        const Vec2 end = path(b);
+        sampler.split(a, start, b, end, 0);
+        sampler.s.push_back(b);
+        start = end;
+    }
     return sampler.s;
 }
 

@@ -78,6 +78,9 @@ Result<MotionTargets> motion_targets(const Animation& animation, const MotionVie
     if (!(view.angle_tolerance > 0.0 && view.angle_tolerance < 90.0))
         return refuse("angle_tolerance",
                       "= " + text(view.angle_tolerance) + " degrees, must be in (0, 90)");
+    if (view.min_intervals < 1 || view.min_intervals > 1000)
+        return refuse("min_intervals",
+                      "= " + std::to_string(view.min_intervals) + ", must be in 1..1000");
     const int first = view.first_frame;
     const int last = view.last_frame < 0 ? frames - 1 : view.last_frame;
     if (first < 0 || first > frames - 1)
@@ -187,7 +190,7 @@ Result<MotionTargets> motion_targets(const Animation& animation, const MotionVie
                 return card(forward_kinematics(animation, frame_at(s))[tip].translation())
                     .head<2>();
             },
-            view.angle_tolerance, still);
+            view.angle_tolerance, still, 16, view.min_intervals);
         for (double s : path.s) {
             const std::vector<Eigen::Isometry3d> pose = forward_kinematics(animation, frame_at(s));
             path.effector.push_back(card(pose[tip].translation()).head<2>());

@@ -48,6 +48,13 @@ TEST(MotionSampling, AStraightPathKeepsOnlyItsEnds)
     const auto eased =
         adaptive_samples([](double s) { return Vec2(2 + 3 * s * s * s, 1 - s * s * s); }, 2.0);
     EXPECT_EQ(eased, (std::vector<double>{0.0, 1.0}));
+    // Started from 8 equal intervals (MotionView's default), the line keeps s = k/8: eq 6.6 then
+    // sees a mechanism that keeps the line but not the pace.
+    const auto paced = adaptive_samples(
+        [](double s) { return Vec2(2 + 3 * s * s * s, 1 - s * s * s); }, 2.0, 1e-9, 16, 8);
+    ASSERT_EQ(paced.size(), 9u);
+    for (int k = 0; k <= 8; ++k)
+        EXPECT_DOUBLE_EQ(paced[k], k / 8.0);
 }
 
 TEST(MotionSampling, ACircleIsSampledWithinTheTurningBound)

@@ -9,9 +9,13 @@ namespace popup {
 /// Adaptive sampling of a planar path s -> p(s), s in [0, 1] (thesis §6.2 after [dF95]): an
 /// interval [a, b] is split at its middle while the polyline through p at a, (3a+b)/4, (a+b)/2,
 /// (a+3b)/4, b turns by more than `tolerance_deg` at any inner point (a turn next to a piece
-/// shorter than `still` counts as none). Returns ascending s with 0 and 1; a straight path gives
-/// {0, 1}. Stops splitting at intervals of 2^-max_depth. docs/MATH.md, Motion targets.
+/// shorter than `still` counts as none). The splitting starts from `min_intervals` equal
+/// intervals, so a straight path keeps min_intervals + 1 samples: turning alone cannot see speed,
+/// and eq 6.6 on a line's two ends cannot tell a mechanism that moves at the animation's pace from
+/// one that does not. Returns ascending s with 0 and 1. Stops splitting at intervals of
+/// 2^-max_depth of a starting interval. docs/MATH.md, Motion targets.
 std::vector<double> adaptive_samples(const std::function<Vec2(double)>& path, double tolerance_deg,
-                                     double still = 1e-9, int max_depth = 16);
+                                     double still = 1e-9, int max_depth = 16,
+                                     int min_intervals = 1);
 
 } // namespace popup

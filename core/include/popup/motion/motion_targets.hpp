@@ -24,6 +24,9 @@ struct MotionView {
     int first_frame = 0;
     int last_frame = -1;          ///< -1: the last
     double angle_tolerance = 2.0; ///< τangle (degrees) of the adaptive sampling (thesis §6.2)
+    /// The adaptive sampling starts from this many equal intervals of s, so a straight path keeps
+    /// samples along it and eq 6.6 sees its pace (adaptive_samples.hpp).
+    int min_intervals = 8;
 };
 
 /// A chain's target motion on the card. s in [0, 1] is the frame parameter: s = 0 the first
