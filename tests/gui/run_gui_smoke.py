@@ -36,6 +36,7 @@ COMMANDS = [
     "PopUp_Animate",
     "PopUp_LoadDesign",
     "PopUp_FromModel",
+    "PopUp_FromAnimation",
     "PopUp_CuttingSheet",
     "PopUp_ExportSheets",
 ]
@@ -45,6 +46,7 @@ OTHER_COMMANDS = [
     "PopUp_Animate",
     "PopUp_LoadDesign",
     "PopUp_FromModel",
+    "PopUp_FromAnimation",
     "PopUp_CuttingSheet",
     "PopUp_ExportSheets",
 ]

@@ -13,6 +13,7 @@ from popupwb.commands import (
     create_cutting_sheet,
     create_mechanism,
     export_sheets,
+    from_animation,
     from_model,
     load_design,
 )
@@ -20,7 +21,12 @@ from popupwb.mechanism_registry import MOTION_COMMAND_IDS, STRUCTURE_COMMAND_IDS
 
 SEPARATOR = "Separator"
 
-CARD_COMMANDS = [create_card.COMMAND_ID, load_design.COMMAND_ID, from_model.COMMAND_ID]
+CARD_COMMANDS = [
+    create_card.COMMAND_ID,
+    load_design.COMMAND_ID,
+    from_model.COMMAND_ID,
+    from_animation.COMMAND_ID,
+]
 MECHANISM_COMMANDS = list(STRUCTURE_COMMAND_IDS)
 MOTION_COMMANDS = list(MOTION_COMMAND_IDS)
 CHECK_COMMANDS = [check_validity.COMMAND_ID, animate.COMMAND_ID]

@@ -85,5 +85,5 @@ def write_paths_plot(path, chains, card_width, card_depth, title=""):
         axes.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False)
     axes.grid(True, lw=0.3, alpha=0.5)
     figure.tight_layout()
-    figure.savefig(path, metadata={"Software": None})
+    figure.savefig(path, format="png", metadata={"Software": None})
     return path
