@@ -250,7 +250,7 @@ def _write_design(args, cli, result, animation, stages, files, say):
 
 
 def _write_pictures(args, result, animation, stages, files, say):
-    from popupwb.motion.motion_movie import MovieError, write_movie
+    from popupwb.motion.motion_movie import MovieError, character_frames, write_movie
     from popupwb.motion.paths_plot import write_paths_plot
 
     title = os.path.basename(args.animation)
@@ -268,8 +268,12 @@ def _write_pictures(args, result, animation, stages, files, say):
             files["movie"], _, _ = write_movie(
                 os.path.join(args.out, MOVIE_FILE),
                 result.scaffold,
-                animation,
-                result.targets,
+                character_frames(
+                    animation,
+                    result.targets.animation_to_card,
+                    result.targets.first_frame,
+                    result.targets.last_frame,
+                ),
                 result.chains,
                 title=title,
             )

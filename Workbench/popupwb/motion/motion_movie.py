@@ -4,8 +4,9 @@ angle θ = 180°·s and the animation frame first + s·(last − first), s = k /
 pairing the design is made for, docs/MATH.md "Motion targets").
 
 Left, the card: the simulated scaffold (popupcore.simulate_fold from the design state) posed at θ,
-each patch's outline drawn with Pillow, seen from the viewer's side (+z, card x to the right and
-y up, the view the target paths are measured in), far patches first, shaded by their normal.
+each patch filled through a z-buffer (numpy, Pillow's polygon masks) and shaded by its normal,
+seen by a camera above the open card (card x to the right, y up: the view the target paths are
+measured in) leaning TILT_DEGREES toward its front edge, so what stands up shows.
 Right, the character: its bones (popupcore.forward_kinematics, fractional frames interpolated) and,
 when it has one, its skinned mesh (popupcore.posed_mesh), mapped to the card by animation_to_card
 and projected the same way. Both halves share one scale and the faint target paths, so the
@@ -43,6 +44,7 @@ POINT_COLOURS = (
     (227, 119, 194),
 )
 LIGHT = np.array([0.3, -0.4, 0.87])
+TILT_DEGREES = 30.0  # the camera above the open card, leaning toward its front edge (y = 0)
 
 
 class MovieError(ValueError):
@@ -122,39 +124,117 @@ def character_frames(animation, animation_to_card, first_frame, last_frame, coun
 
 
 class _View:
-    """Card mm (x, y) to panel pixels: one scale for both panels, y up."""
+    """Card mm to panel pixels through the camera: screen x is card x, screen up is
+    y cos t + z sin t (the open card seen from in front, TILT above its plane's normal), one
+    scale for both panels; depth toward the camera is z cos t - y sin t."""
 
-    def __init__(self, lo, hi):
+    def __init__(self, points):
+        screen = self.screen(points)
+        lo, hi = screen.min(axis=0), screen.max(axis=0)
         span = max(float(hi[0] - lo[0]), float(hi[1] - lo[1]), 1e-9)
         self.scale = (PANEL_PX - 2 * MARGIN_PX) / span
-        self.centre = 0.5 * (np.asarray(lo, dtype=float) + np.asarray(hi, dtype=float))
+        self.centre = 0.5 * (lo + hi)
+
+    @staticmethod
+    def screen(points):
+        p = np.asarray(points, dtype=float)
+        p = p.reshape(-1, p.shape[-1])
+        if p.shape[1] == 2:  # a point of the card's plane
+            p = np.c_[p, np.zeros(len(p))]
+        tilt = math.radians(TILT_DEGREES)
+        return np.c_[p[:, 0], p[:, 1] * math.cos(tilt) + p[:, 2] * math.sin(tilt)]
+
+    @staticmethod
+    def depth(points):
+        p = np.asarray(points, dtype=float).reshape(-1, 3)
+        tilt = math.radians(TILT_DEGREES)
+        return p[:, 2] * math.cos(tilt) - p[:, 1] * math.sin(tilt)
+
+    def pixels(self, points, left=0):
+        """(N, 2) float pixel coordinates."""
+        q = self.screen(points)
+        x = left + PANEL_PX / 2 + (q[:, 0] - self.centre[0]) * self.scale
+        y = HEADER_PX + PANEL_PX / 2 - (q[:, 1] - self.centre[1]) * self.scale
+        return np.c_[x, y]
 
     def __call__(self, points, left=0):
-        p = np.asarray(points, dtype=float).reshape(-1, np.shape(points)[-1])[:, :2]
-        x = left + PANEL_PX / 2 + (p[:, 0] - self.centre[0]) * self.scale
-        y = HEADER_PX + PANEL_PX / 2 - (p[:, 1] - self.centre[1]) * self.scale
-        return [(float(a), float(b)) for a, b in zip(x, y)]
+        return [(float(a), float(b)) for a, b in self.pixels(points, left)]
 
 
-def _draw_polygons(draw, view, polygons, colour_of, left, outline):
-    order = sorted(range(len(polygons)), key=lambda i: float(np.mean(polygons[i][:, 2])))
-    for i in order:  # far (low z) first: the viewer looks down from +z
-        polygon = polygons[i]
+def _render(image, view, polygons, colours, left, outline):
+    """Draws planar `polygons` (each Kx3, card mm) into the panel at `left` with a z-buffer:
+    each pixel shows the polygon nearest the camera there, its depth from the polygon's plane,
+    so folded patches hide what is behind them whatever their order. Region borders are
+    outlined with `outline` (None: not); polygons seen edge-on are drawn as lines."""
+    from PIL import Image, ImageDraw
+
+    width, height = image.size
+    zbuffer = np.full((height, PANEL_PX), -np.inf)
+    ids = np.full((height, PANEL_PX), -1, dtype=np.int64)
+    edge_on = []
+    for i, polygon in enumerate(polygons):
         if len(polygon) < 3:
             continue
-        draw.polygon(view(polygon, left), fill=colour_of(i), outline=outline)
+        pixels = view.pixels(polygon, 0)
+        depth = view.depth(polygon)
+        x0, y0 = np.floor(pixels.min(axis=0)).astype(int)
+        x1, y1 = np.ceil(pixels.max(axis=0)).astype(int) + 1
+        x0, y0, x1, y1 = max(x0, 0), max(y0, 0), min(x1, PANEL_PX), min(y1, height)
+        doubled = np.sum(
+            pixels[:, 0] * np.roll(pixels[:, 1], -1) - np.roll(pixels[:, 0], -1) * pixels[:, 1]
+        )
+        if abs(doubled) < 2.0 or x1 <= x0 or y1 <= y0:  # under a pixel of area: edge-on
+            edge_on.append(i)
+            continue
+        mask = Image.new("1", (x1 - x0, y1 - y0), 0)
+        ImageDraw.Draw(mask).polygon([(float(a - x0), float(b - y0)) for a, b in pixels], fill=1)
+        inside = np.asarray(mask, dtype=bool)
+        # The polygon is planar: its depth is affine in the pixel coordinates.
+        system = np.c_[pixels, np.ones(len(pixels))]
+        (a, b, c), *_ = np.linalg.lstsq(system, depth, rcond=None)
+        rows, cols = np.nonzero(inside)
+        z = a * (cols + x0 + 0.5) + b * (rows + y0 + 0.5) + c
+        current = zbuffer[rows + y0, cols + x0]
+        nearer = z > current
+        zbuffer[rows[nearer] + y0, cols[nearer] + x0] = z[nearer]
+        ids[rows[nearer] + y0, cols[nearer] + x0] = i
+    palette = np.array([BACKGROUND] + [tuple(c) for c in colours], dtype=np.uint8)
+    picture = palette[ids + 1]
+    if outline is not None:
+        border = np.zeros_like(ids, dtype=bool)
+        border[:, 1:] |= ids[:, 1:] != ids[:, :-1]
+        border[1:, :] |= ids[1:, :] != ids[:-1, :]
+        picture[border] = outline
+    drawn = np.asarray(image).copy()
+    region = drawn[:, left : left + PANEL_PX]
+    covered = ids >= 0
+    if outline is not None:
+        covered |= border
+    region[covered] = picture[covered]
+    image.paste(Image.fromarray(drawn))
+    draw = ImageDraw.Draw(image)
+    for i in edge_on:
+        draw.line(view(np.vstack([polygons[i], polygons[i][:1]]), left), fill=outline or BONE)
 
 
-def write_movie(path, scaffold, animation, targets, chains=(), title="", count=FRAMES):
-    """Writes the GIF to `path` and returns (path, frames, (width, height)). `targets` is the
-    MotionResult's MotionTargets (animation_to_card, first_frame, last_frame); `chains` the
-    ChainReports whose target and achieved paths are drawn faintly with the moving points."""
+def _paint_flat(draw, view, triangles):
+    """The character's mesh projected on the card's plane (as its paths are), far triangles
+    first: small triangles, so the painter's order is enough."""
+    depth = triangles[:, :, 2].mean(axis=1)
+    for i in np.argsort(depth, kind="stable"):
+        draw.polygon(view(triangles[i][:, :2], PANEL_PX), fill=_shade(MESH, _normal(triangles[i])))
+
+
+def write_movie(path, scaffold, character, chains=(), title="", count=FRAMES):
+    """Writes the GIF to `path` and returns (path, frames, (width, height)). `character` is
+    character_frames(...) of the same `count` (the right half), `chains` the ChainReports whose
+    target and achieved paths are drawn faintly, with the moving points on them."""
     from PIL import Image, ImageDraw, ImageFont
 
     cards = card_frames(scaffold, count)
-    people = character_frames(
-        animation, targets.animation_to_card, targets.first_frame, targets.last_frame, count
-    )
+    people = list(character)
+    if len(people) != len(cards):
+        raise ValueError(f"character: {len(people)} frames, must be {len(cards)} as the card's")
     paths = [
         (
             np.asarray(c.target, dtype=float).reshape(-1, 2),
@@ -163,11 +243,10 @@ def write_movie(path, scaffold, animation, targets, chains=(), title="", count=F
         )
         for c in chains
     ]
-    everything = [o[:, :2] for _, outlines, _ in cards for o in outlines]
-    everything += [np.array(seg)[:, :2] for _, segments, _ in people for seg in segments]
-    everything += [p for t, a, _ in paths for p in (t, a) if len(p)]
-    stacked = np.vstack(everything)
-    view = _View(stacked.min(axis=0), stacked.max(axis=0))
+    everything = [o for _, outlines, _ in cards for o in outlines]
+    everything += [np.array(seg) for _, segments, _ in people for seg in segments]
+    everything += [np.c_[p, np.zeros(len(p))] for t, a, _ in paths for p in (t, a) if len(p)]
+    view = _View(np.vstack(everything))
     font = ImageFont.load_default()
     size = (2 * PANEL_PX, PANEL_PX + HEADER_PX)
     images = []
@@ -183,18 +262,12 @@ def write_movie(path, scaffold, animation, targets, chains=(), title="", count=F
             _shade(CARD if i in card else PAPER, _normal(outline))
             for i, outline in enumerate(outlines)
         ]
-        _draw_polygons(draw, view, outlines, lambda i: colours[i], 0, EDGE)
+        _render(image, view, outlines, colours, 0, EDGE)
+        draw = ImageDraw.Draw(image)
         if triangles is not None and len(triangles):
-            _draw_polygons(
-                draw,
-                view,
-                list(triangles),
-                lambda i: _shade(MESH, _normal(triangles[i])),
-                PANEL_PX,
-                None,
-            )
-        for a, b in segments:
-            draw.line(view(np.array([a, b]), PANEL_PX), fill=BONE, width=3)
+            _paint_flat(draw, view, triangles)
+        for a, b in segments:  # on the card's plane, where its paths are measured
+            draw.line(view(np.array([a, b])[:, :2], PANEL_PX), fill=BONE, width=3)
         for j, (target, achieved, samples) in enumerate(paths):
             colour = POINT_COLOURS[j % len(POINT_COLOURS)]
             for points, left in ((achieved, 0), (target, PANEL_PX)):
