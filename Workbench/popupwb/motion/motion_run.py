@@ -9,9 +9,6 @@ naming the file or the option, the value and the allowed range.
 import math
 import os
 import threading
-import time
-
-import numpy as np
 
 from popupwb.fitting.fit_run import Stages, card_size_for_paper, direction  # noqa: F401
 
@@ -155,12 +152,14 @@ def design(animation, options, cancel=None, on_progress=None):
 
     progress = popupcore.MotionProgress() if hasattr(popupcore, "MotionProgress") else None
     if on_progress is None or progress is None:
-        return popupcore.design_motion(animation, options, cancel, progress)
+        return popupcore.design_motion(animation, options, cancel=cancel, progress=progress)
     outcome = {}
 
     def work():
         try:
-            outcome["result"] = popupcore.design_motion(animation, options, cancel, progress)
+            outcome["result"] = popupcore.design_motion(
+                animation, options, cancel=cancel, progress=progress
+            )
         except BaseException as error:  # handed back to the caller's thread
             outcome["error"] = error
 
@@ -173,12 +172,3 @@ def design(animation, options, cancel=None, on_progress=None):
         raise outcome["error"]
     on_progress(1.0)
     return outcome["result"]
-
-
-def fold_angles(count):
-    """`count` fold angles (radians) from open flat (180°) to closed (0), evenly."""
-    return list(np.linspace(math.pi, 0.0, int(count)))
-
-
-def elapsed(start):
-    return time.perf_counter() - start
