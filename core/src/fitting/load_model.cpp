@@ -1,27 +1,21 @@
 #include "popup/fitting/load_model.hpp"
 
 #include <algorithm>
-#include <cerrno>
-#include <chrono>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 #include <filesystem>
 #include <limits>
 #include <map>
 #include <sstream>
 #include <tuple>
 
-#include <poll.h>
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <assimp/Importer.hpp>
 #include <assimp/config.h>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+
+#include "../io/child_process.hpp"
+#include "model_mesh_bytes.hpp"
 
 namespace popup {
 
@@ -230,172 +224,38 @@ std::string read_with_assimp(const std::string& path, ModelMesh& mesh)
     return {};
 }
 
-// The mesh crosses from the reading child to the caller as plain bytes.
-struct Writer {
-    std::string bytes;
-    template <class T> void put(const T& value)
-    {
-        bytes.append(reinterpret_cast<const char*>(&value), sizeof(T));
-    }
-    template <class T> void put_all(const std::vector<T>& values)
-    {
-        put(std::uint64_t(values.size()));
-        bytes.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
-    }
-    void put_text(const std::string& text)
-    {
-        put(std::uint64_t(text.size()));
-        bytes.append(text);
-    }
-};
-
-struct Reader {
-    const std::string& bytes;
-    size_t at = 0;
-    bool fine = true;
-    template <class T> T get()
-    {
-        T value{};
-        if (at + sizeof(T) > bytes.size()) {
-            fine = false;
-            return value;
-        }
-        std::memcpy(static_cast<void*>(&value), bytes.data() + at, sizeof(T));
-        at += sizeof(T);
-        return value;
-    }
-    template <class T> void get_all(std::vector<T>& values)
-    {
-        const auto n = get<std::uint64_t>();
-        if (!fine || n > (bytes.size() - at) / sizeof(T)) {
-            fine = false;
-            return;
-        }
-        values.resize(n);
-        std::memcpy(static_cast<void*>(values.data()), bytes.data() + at, n * sizeof(T));
-        at += n * sizeof(T);
-    }
-    std::string get_text()
-    {
-        const auto n = get<std::uint64_t>();
-        if (!fine || n > bytes.size() - at) {
-            fine = false;
-            return {};
-        }
-        at += n;
-        return bytes.substr(at - n, n);
-    }
-};
-
+// The mesh crosses from the reading child to the caller as plain bytes: why not, then the mesh.
 std::string encode(const std::string& why, const ModelMesh& mesh)
 {
-    Writer w;
+    ByteWriter w;
     w.put_text(why);
-    w.put_all(mesh.vertices);
-    w.put_all(mesh.triangles);
-    w.put_all(mesh.colours);
-    w.put_all(mesh.uvs);
-    w.put_text(mesh.texture);
-    w.put_all(mesh.texture_bytes);
-    w.put_text(mesh.texture_format);
-    w.put(mesh.texture_width);
-    w.put(mesh.texture_height);
-    w.put(mesh.base_colour);
+    put_mesh(w, mesh);
     return w.bytes;
 }
 
-/// False when the bytes are not a whole message.
-bool decode(const std::string& bytes, std::string& why, ModelMesh& mesh)
-{
-    Reader r{bytes};
-    why = r.get_text();
-    r.get_all(mesh.vertices);
-    r.get_all(mesh.triangles);
-    r.get_all(mesh.colours);
-    r.get_all(mesh.uvs);
-    mesh.texture = r.get_text();
-    r.get_all(mesh.texture_bytes);
-    mesh.texture_format = r.get_text();
-    mesh.texture_width = r.get<int>();
-    mesh.texture_height = r.get<int>();
-    mesh.base_colour = r.get<Vec3>();
-    return r.fine && r.at == bytes.size();
-}
-
-/// Runs assimp in a child process: some of its readers loop forever or abort (ai_assert) on a
-/// malformed file, which must not take the caller (FreeCAD, the CLI) with them. Returns why not
-/// ("" when read).
+/// Reads the file in a child process (child_process.hpp). Returns why not ("" when read).
 std::string read_isolated(const std::string& path, double timeout_s, ModelMesh& mesh)
 {
-    int channel[2];
-    if (pipe(channel) != 0)
-        return std::string("cannot open a pipe: ") + std::strerror(errno);
-    const pid_t child = fork();
-    if (child < 0) {
-        close(channel[0]);
-        close(channel[1]);
-        return std::string("cannot start the reader: ") + std::strerror(errno);
-    }
-    if (child == 0) {
-        close(channel[0]);
-        ModelMesh read;
-        std::string why;
-        try {
-            why = read_with_assimp(path, read);
-        } catch (const std::exception& e) {
-            why = std::string("assimp failed: ") + e.what();
-        }
-        const std::string bytes = encode(why, read);
-        for (size_t at = 0; at < bytes.size();) {
-            const ssize_t n = write(channel[1], bytes.data() + at, bytes.size() - at);
-            if (n <= 0)
-                _exit(1);
-            at += size_t(n);
-        }
-        _exit(0);
-    }
-    close(channel[1]);
     std::string bytes;
-    char buffer[1 << 16];
-    const auto deadline =
-        std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
-    bool timed_out = false;
-    for (;;) {
-        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-            deadline - std::chrono::steady_clock::now());
-        pollfd ready{channel[0], POLLIN, 0};
-        const int polled = poll(&ready, 1, int(std::max<long>(0, left.count())));
-        if (polled < 0 && errno == EINTR)
-            continue;
-        if (polled == 0) {
-            timed_out = true;
-            break;
-        }
-        const ssize_t n = read(channel[0], buffer, sizeof buffer);
-        if (n < 0 && errno == EINTR)
-            continue;
-        if (n <= 0)
-            break;
-        bytes.append(buffer, size_t(n));
-    }
-    close(channel[0]);
-    if (timed_out)
-        kill(child, SIGKILL);
-    int status = 0;
-    while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
-    }
-    if (timed_out) {
-        std::ostringstream s;
-        s << "assimp did not finish reading it within " << timeout_s << " s";
-        return s.str();
-    }
-    if (WIFSIGNALED(status))
-        return "assimp crashed reading it (signal " + std::to_string(WTERMSIG(status)) + ", " +
-               strsignal(WTERMSIG(status)) + ")";
-    std::string why;
-    if (!decode(bytes, why, mesh))
-        return "the reader process ended without a whole answer (exit status " +
-               std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")";
+    const std::string failed = run_in_child(
+        [&] {
+            ModelMesh read;
+            std::string why;
+            try {
+                why = read_with_assimp(path, read);
+            } catch (const std::exception& e) {
+                why = std::string("assimp failed: ") + e.what();
+            }
+            return encode(why, read);
+        },
+        timeout_s, bytes);
+    if (!failed.empty())
+        return failed;
+    ByteReader r{bytes};
+    const std::string why = r.get_text();
+    get_mesh(r, mesh);
+    if (!r.whole())
+        return "the reader process ended without a whole answer";
     return why;
 }
 

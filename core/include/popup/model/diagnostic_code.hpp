@@ -65,6 +65,12 @@ namespace popup {
     X(bad_model_size)                                                                              \
     X(mechanism_dropped)                                                                           \
     X(no_design_found)                                                                             \
+    /* animations: motion from an animated character */                                            \
+    X(bad_animation)                                                                               \
+    X(skeleton_cycle)                                                                              \
+    X(no_animation)                                                                                \
+    X(single_frame)                                                                                \
+    X(non_finite_animation)                                                                        \
     /* profiles: outlines on patches */                                                            \
     X(bad_profile)                                                                                 \
     X(profile_misses_hinge)                                                                        \

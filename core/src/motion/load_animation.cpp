@@ -1,0 +1,485 @@
+// load_animation: an animated character through assimp, read in a child process as load_model
+// reads a model (core/src/io/child_process.hpp).
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include <assimp/Importer.hpp>
+#include <assimp/config.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include "../fitting/model_mesh_bytes.hpp"
+#include "../io/child_process.hpp"
+#include "popup/motion/animation.hpp"
+
+namespace popup {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+using Affine = Eigen::Matrix4d;
+
+Affine affine(const aiMatrix4x4& m)
+{
+    Affine a;
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c)
+            a(r, c) = m[r][c];
+    return a;
+}
+
+/// The rigid part of an affine transform whose linear part is a rotation times a uniform scale
+/// (what animation rigs use): the rotation nearest to it, and its translation unchanged.
+Eigen::Isometry3d rigid_part(const Affine& a)
+{
+    const Eigen::JacobiSVD<Mat3> svd(a.topLeftCorner<3, 3>(),
+                                     Eigen::ComputeFullU | Eigen::ComputeFullV);
+    Mat3 r = svd.matrixU() * svd.matrixV().transpose();
+    if (r.determinant() < 0) { // a mirror: keep a rotation, flip the weakest axis
+        Mat3 u = svd.matrixU();
+        u.col(2) *= -1.0;
+        r = u * svd.matrixV().transpose();
+    }
+    Eigen::Isometry3d out = Eigen::Isometry3d::Identity();
+    out.linear() = r;
+    out.translation() = a.topRightCorner<3, 1>();
+    return out;
+}
+
+double uniform_scale(const Affine& a)
+{
+    return std::cbrt(std::abs(a.topLeftCorner<3, 3>().determinant()));
+}
+
+/// A channel's value at a time in ticks: neighbouring keys lerped (slerped for rotations), the
+/// end keys held outside them.
+template <class Key, class Blend>
+auto sample(const Key* keys, unsigned count, double time, Blend blend)
+{
+    if (count == 1 || time <= keys[0].mTime)
+        return keys[0].mValue;
+    if (time >= keys[count - 1].mTime)
+        return keys[count - 1].mValue;
+    const Key* next = std::upper_bound(keys, keys + count, time,
+                                       [](double t, const Key& k) { return t < k.mTime; });
+    const Key* prev = next - 1;
+    const double span = next->mTime - prev->mTime;
+    const double u = span > 0 ? (time - prev->mTime) / span : 0.0;
+    return blend(prev->mValue, next->mValue, float(u));
+}
+
+Affine channel_transform(const aiNodeAnim* channel, double time, const Affine& rest)
+{
+    aiVector3D position, scaling;
+    aiQuaternion rotation;
+    aiMatrix4x4 r;
+    aiVector3D rest_scaling, rest_position;
+    aiQuaternion rest_rotation;
+    aiMatrix4x4 rest_ai;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            rest_ai[i][j] = float(rest(i, j));
+    rest_ai.Decompose(rest_scaling, rest_rotation, rest_position);
+    auto lerp = [](const aiVector3D& a, const aiVector3D& b, float u) { return a + (b - a) * u; };
+    auto slerp = [](const aiQuaternion& a, const aiQuaternion& b, float u) {
+        aiQuaternion out;
+        aiQuaternion::Interpolate(out, a, b, u);
+        return out.Normalize();
+    };
+    position = channel->mNumPositionKeys
+                   ? sample(channel->mPositionKeys, channel->mNumPositionKeys, time, lerp)
+                   : rest_position;
+    rotation = channel->mNumRotationKeys
+                   ? sample(channel->mRotationKeys, channel->mNumRotationKeys, time, slerp)
+                   : rest_rotation;
+    scaling = channel->mNumScalingKeys
+                  ? sample(channel->mScalingKeys, channel->mNumScalingKeys, time, lerp)
+                  : rest_scaling;
+    // Rotations in double: assimp's float matrices would cost 1e-7 per frame.
+    const Eigen::Quaterniond q(rotation.w, rotation.x, rotation.y, rotation.z);
+    Affine m = Affine::Identity();
+    m.topLeftCorner<3, 3>() =
+        q.normalized().toRotationMatrix() * Vec3(scaling.x, scaling.y, scaling.z).asDiagonal();
+    m.topRightCorner<3, 1>() = Vec3(position.x, position.y, position.z);
+    return m;
+}
+
+/// What the child sends back: a diagnostic code name and why ("" when read), then the animation.
+struct Read {
+    std::string code = "unreadable_model";
+    std::string why;
+    Animation animation;
+};
+
+void collect(const aiNode* node, int parent_node, std::vector<const aiNode*>& nodes,
+             std::vector<int>& parents)
+{
+    const int me = int(nodes.size());
+    nodes.push_back(node);
+    parents.push_back(parent_node);
+    for (unsigned c = 0; c < node->mNumChildren; ++c)
+        collect(node->mChildren[c], me, nodes, parents);
+}
+
+void read_with_assimp(const std::string& path, Read& out)
+{
+    Assimp::Importer importer;
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
+                                aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    const aiScene* scene =
+        importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                                    aiProcess_SortByPType | aiProcess_ValidateDataStructure);
+    if (!scene) {
+        out.why = std::string("assimp could not read it: ") + importer.GetErrorString();
+        return;
+    }
+    if (!scene->mRootNode) {
+        out.why = "assimp read no node hierarchy";
+        return;
+    }
+    if (scene->mNumAnimations == 0 || !scene->mAnimations[0] ||
+        scene->mAnimations[0]->mNumChannels == 0) {
+        out.code = "no_animation";
+        out.why = "it has no animation (no keyframe channels)";
+        return;
+    }
+    const aiAnimation* clip = scene->mAnimations[0];
+    const double ticks_per_second = clip->mTicksPerSecond > 0 ? clip->mTicksPerSecond : 25.0;
+
+    std::vector<const aiNode*> nodes;
+    std::vector<int> node_parent;
+    collect(scene->mRootNode, -1, nodes, node_parent);
+    std::map<std::string, int> node_named;
+    for (size_t i = 0; i < nodes.size(); ++i)
+        node_named.emplace(nodes[i]->mName.C_Str(), int(i)); // the first of a repeated name
+
+    // Bones: animated nodes, skin bones, their ancestors, and the childless nodes below an
+    // animated one (BVH end sites).
+    std::vector<const aiNodeAnim*> channel_of(nodes.size(), nullptr);
+    std::vector<char> is_bone(nodes.size(), 0), animated_below(nodes.size(), 0);
+    for (unsigned c = 0; c < clip->mNumChannels; ++c) {
+        auto it = node_named.find(clip->mChannels[c]->mNodeName.C_Str());
+        if (it != node_named.end()) {
+            channel_of[it->second] = clip->mChannels[c];
+            is_bone[it->second] = 1;
+        }
+    }
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m)
+        for (unsigned b = 0; b < scene->mMeshes[m]->mNumBones; ++b) {
+            auto it = node_named.find(scene->mMeshes[m]->mBones[b]->mName.C_Str());
+            if (it != node_named.end())
+                is_bone[it->second] = 1;
+        }
+    for (size_t i = 0; i < nodes.size(); ++i) { // parents come first in `nodes`
+        const int p = node_parent[i];
+        animated_below[i] = (p >= 0 && (animated_below[p] || channel_of[p])) ? 1 : 0;
+        if (animated_below[i] && nodes[i]->mNumChildren == 0 && nodes[i]->mNumMeshes == 0)
+            is_bone[i] = 1;
+    }
+    for (int i = int(nodes.size()) - 1; i >= 0; --i)
+        if (is_bone[i] && node_parent[i] >= 0)
+            is_bone[node_parent[i]] = 1;
+    std::vector<int> bone_of(nodes.size(), -1);
+    Animation& animation = out.animation;
+    animation.source = path;
+    for (size_t i = 0; i < nodes.size(); ++i)
+        if (is_bone[i]) {
+            bone_of[i] = int(animation.bones.size());
+            const int p = node_parent[i];
+            animation.bones.push_back({nodes[i]->mName.C_Str(), p >= 0 ? bone_of[p] : -1});
+        }
+    std::vector<int> node_of_bone;
+    for (size_t i = 0; i < nodes.size(); ++i)
+        if (is_bone[i])
+            node_of_bone.push_back(int(i));
+    const int n = int(node_of_bone.size());
+
+    // Frames: every key time of every channel.
+    std::set<double> ticks;
+    for (unsigned c = 0; c < clip->mNumChannels; ++c) {
+        const aiNodeAnim* ch = clip->mChannels[c];
+        for (unsigned k = 0; k < ch->mNumPositionKeys; ++k)
+            ticks.insert(ch->mPositionKeys[k].mTime);
+        for (unsigned k = 0; k < ch->mNumRotationKeys; ++k)
+            ticks.insert(ch->mRotationKeys[k].mTime);
+        for (unsigned k = 0; k < ch->mNumScalingKeys; ++k)
+            ticks.insert(ch->mScalingKeys[k].mTime);
+    }
+    std::vector<double> frame_ticks;
+    for (double t : ticks)
+        if (frame_ticks.empty() || t - frame_ticks.back() > 1e-6 * std::max(1.0, std::abs(t)))
+            frame_ticks.push_back(t);
+    for (double t : frame_ticks)
+        animation.frame_times_s.push_back(t / ticks_per_second);
+
+    // Global affine transforms per frame, made rigid (a rig's uniform scale, as FBX's 0.01
+    // armature, goes into the bones' positions and the mesh, not their transforms).
+    std::vector<Affine> rest(n);
+    for (int b = 0; b < n; ++b)
+        rest[b] = affine(nodes[node_of_bone[b]]->mTransformation);
+    std::vector<Affine> global_at_first(n);
+    for (size_t f = 0; f < frame_ticks.size(); ++f) {
+        std::vector<Affine> global(n);
+        std::vector<Eigen::Isometry3d> rigid(n);
+        for (int b = 0; b < n; ++b) {
+            const aiNodeAnim* ch = channel_of[node_of_bone[b]];
+            const Affine local = ch ? channel_transform(ch, frame_ticks[f], rest[b]) : rest[b];
+            const int p = animation.bones[b].parent;
+            global[b] = p >= 0 ? Affine(global[p] * local) : local;
+            rigid[b] = rigid_part(global[b]);
+        }
+        std::vector<Eigen::Isometry3d> local(n);
+        for (int b = 0; b < n; ++b) {
+            const int p = animation.bones[b].parent;
+            local[b] = p >= 0 ? rigid[p].inverse() * rigid[b] : rigid[b];
+            local[b].linear() =
+                Eigen::Quaterniond(local[b].linear()).normalized().toRotationMatrix();
+        }
+        animation.local.push_back(std::move(local));
+        if (f == 0)
+            global_at_first = global;
+    }
+
+    // The skinned mesh: vertices scaled to the bones' units, offsets made rigid.
+    animation.bind_inverse.assign(n, Eigen::Isometry3d::Identity());
+    std::vector<char> bind_set(n, 0);
+    std::map<const aiMesh*, int> node_of_mesh;
+    for (size_t i = 0; i < nodes.size(); ++i)
+        for (unsigned k = 0; k < nodes[i]->mNumMeshes; ++k)
+            if (nodes[i]->mMeshes[k] < scene->mNumMeshes)
+                node_of_mesh.emplace(scene->mMeshes[nodes[i]->mMeshes[k]], int(i));
+    /// The nearest bone at or above a node, and the node's transform below that bone.
+    auto carrier = [&](int node, Affine& below) {
+        below = Affine::Identity();
+        for (int i = node; i >= 0; i = node_parent[i]) {
+            if (bone_of[i] >= 0)
+                return bone_of[i];
+            below = affine(nodes[i]->mTransformation) * below;
+        }
+        return -1;
+    };
+    ModelMesh& mesh = animation.mesh;
+    mesh.source = path;
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+        const aiMesh* part = scene->mMeshes[m];
+        if (!(part->mPrimitiveTypes & aiPrimitiveType_TRIANGLE))
+            continue;
+        Affine below_bone = Affine::Identity();
+        const int host_bone =
+            node_of_mesh.count(part) ? carrier(node_of_mesh[part], below_bone) : -1;
+        if (part->mNumBones == 0 && host_bone < 0)
+            continue; // neither skinned nor carried by a bone: not part of the character
+        std::vector<std::vector<std::pair<int, double>>> weights(part->mNumVertices);
+        double scale = 1.0; // mesh units to the bones' units
+        bool scale_known = false;
+        for (unsigned k = 0; k < part->mNumBones; ++k) {
+            const aiBone* bone = part->mBones[k];
+            auto it = node_named.find(bone->mName.C_Str());
+            if (it == node_named.end() || bone_of[it->second] < 0)
+                continue;
+            const int b = bone_of[it->second];
+            // world = G_b · offset · v = rigid(G_b) · (σ_b · offset) · v, σ_b G_b's scale.
+            const Affine scaled = uniform_scale(global_at_first[b]) * affine(bone->mOffsetMatrix);
+            if (!scale_known) {
+                scale = uniform_scale(scaled);
+                scale_known = scale > 0;
+            }
+            if (!bind_set[b]) {
+                Affine unit = scaled;
+                unit.topLeftCorner<3, 3>() /= scale;
+                animation.bind_inverse[b] = rigid_part(unit);
+                bind_set[b] = 1;
+            }
+            for (unsigned w = 0; w < bone->mNumWeights; ++w) {
+                const aiVertexWeight& vw = bone->mWeights[w];
+                if (vw.mVertexId < part->mNumVertices && vw.mWeight > 0)
+                    weights[vw.mVertexId].emplace_back(b, vw.mWeight);
+            }
+        }
+        // An unskinned part, or unweighted vertices, follow the bone that carries the mesh:
+        // their place at the first frame, expressed in that bone's bind space.
+        Affine carried = Affine::Identity();
+        if (host_bone >= 0) {
+            if (!bind_set[host_bone]) {
+                animation.bind_inverse[host_bone] =
+                    rigid_part(global_at_first[host_bone]).inverse();
+                bind_set[host_bone] = 1;
+            }
+            // v' with rigid(G(0)) · bind_inverse · v' = G(0) · below · v, its first-frame place.
+            carried = animation.bind_inverse[host_bone].inverse().matrix() *
+                      rigid_part(global_at_first[host_bone]).inverse().matrix() *
+                      global_at_first[host_bone] * below_bone;
+        }
+        const int offset = int(mesh.vertices.size());
+        for (unsigned v = 0; v < part->mNumVertices; ++v) {
+            const Vec3 p(part->mVertices[v].x, part->mVertices[v].y, part->mVertices[v].z);
+            auto& w = weights[v];
+            if (w.empty() && host_bone >= 0) {
+                mesh.vertices.push_back((carried * p.homogeneous()).head<3>());
+                w.emplace_back(host_bone, 1.0);
+            } else {
+                mesh.vertices.push_back(scale * p);
+            }
+            double sum = 0.0;
+            for (const auto& bw : w)
+                sum += bw.second;
+            for (auto& bw : w)
+                bw.second = sum > 0 ? bw.second / sum : 1.0 / double(w.size());
+            if (w.empty())
+                w.emplace_back(0, 1.0); // no bone and no host: the root's
+            animation.skin.push_back(std::move(w));
+        }
+        for (unsigned f = 0; f < part->mNumFaces; ++f) {
+            const aiFace& face = part->mFaces[f];
+            if (face.mNumIndices == 3)
+                mesh.triangles.push_back({offset + int(face.mIndices[0]),
+                                          offset + int(face.mIndices[1]),
+                                          offset + int(face.mIndices[2])});
+        }
+    }
+    out.code.clear();
+}
+
+// Across the pipe: code, why, then the animation's fields in order.
+std::string encode(const Read& read)
+{
+    ByteWriter w;
+    w.put_text(read.code);
+    w.put_text(read.why);
+    const Animation& a = read.animation;
+    w.put(std::uint64_t(a.bones.size()));
+    for (const Bone& b : a.bones) {
+        w.put_text(b.name);
+        w.put(b.parent);
+    }
+    w.put_all(a.frame_times_s);
+    std::vector<double> numbers;
+    for (const auto& frame : a.local)
+        for (const Eigen::Isometry3d& t : frame)
+            numbers.insert(numbers.end(), t.matrix().data(), t.matrix().data() + 16);
+    w.put_all(numbers);
+    put_mesh(w, a.mesh);
+    numbers.clear();
+    for (const Eigen::Isometry3d& t : a.bind_inverse)
+        numbers.insert(numbers.end(), t.matrix().data(), t.matrix().data() + 16);
+    w.put_all(numbers);
+    std::vector<int> counts, bones;
+    std::vector<double> weights;
+    for (const auto& vertex : a.skin) {
+        counts.push_back(int(vertex.size()));
+        for (const auto& [b, weight] : vertex) {
+            bones.push_back(b);
+            weights.push_back(weight);
+        }
+    }
+    w.put_all(counts);
+    w.put_all(bones);
+    w.put_all(weights);
+    return w.bytes;
+}
+
+bool decode(const std::string& bytes, Read& read)
+{
+    ByteReader r{bytes};
+    read.code = r.get_text();
+    read.why = r.get_text();
+    Animation& a = read.animation;
+    const auto n = r.get<std::uint64_t>();
+    if (!r.fine || n > bytes.size())
+        return false;
+    for (std::uint64_t b = 0; b < n && r.fine; ++b) {
+        Bone bone;
+        bone.name = r.get_text();
+        bone.parent = r.get<int>();
+        a.bones.push_back(bone);
+    }
+    r.get_all(a.frame_times_s);
+    std::vector<double> numbers;
+    r.get_all(numbers);
+    if (!r.fine || numbers.size() != a.frame_times_s.size() * n * 16)
+        return false;
+    auto isometry = [&](size_t at) {
+        Eigen::Isometry3d t;
+        t.matrix() = Eigen::Map<const Eigen::Matrix4d>(numbers.data() + at);
+        return t;
+    };
+    a.local.assign(a.frame_times_s.size(), std::vector<Eigen::Isometry3d>(n));
+    for (size_t f = 0; f < a.local.size(); ++f)
+        for (size_t b = 0; b < n; ++b)
+            a.local[f][b] = isometry(16 * (f * n + b));
+    get_mesh(r, a.mesh);
+    r.get_all(numbers);
+    if (!r.fine || numbers.size() != n * 16)
+        return false;
+    for (size_t b = 0; b < n; ++b)
+        a.bind_inverse.push_back(isometry(16 * b));
+    std::vector<int> counts, bones;
+    std::vector<double> weights;
+    r.get_all(counts);
+    r.get_all(bones);
+    r.get_all(weights);
+    if (!r.whole() || bones.size() != weights.size())
+        return false;
+    size_t at = 0;
+    for (int count : counts) {
+        if (count < 0 || at + size_t(count) > bones.size())
+            return false;
+        std::vector<std::pair<int, double>> vertex;
+        for (int k = 0; k < count; ++k, ++at)
+            vertex.emplace_back(bones[at], weights[at]);
+        a.skin.push_back(std::move(vertex));
+    }
+    return at == bones.size();
+}
+
+} // namespace
+
+Result<Animation> load_animation(const std::string& path, const LoadAnimationOptions& options)
+{
+    Result<Animation> result;
+    auto refuse = [&](DiagnosticCode code, const std::string& why) {
+        result.fail(code, "animation file " + path + ": " + why, about_parameter(path));
+        return result;
+    };
+    std::error_code error;
+    if (path.empty())
+        return refuse(DiagnosticCode::unreadable_model, "no path given");
+    if (!fs::exists(path, error))
+        return refuse(DiagnosticCode::unreadable_model, "no such file");
+    if (!fs::is_regular_file(path, error))
+        return refuse(DiagnosticCode::unreadable_model, "not a regular file");
+    if (!(options.timeout_s > 0.0))
+        return refuse(DiagnosticCode::unreadable_model,
+                      "timeout_s = " + std::to_string(options.timeout_s) + ", must be > 0");
+    std::string bytes;
+    const std::string failed = run_in_child(
+        [&] {
+            Read read;
+            try {
+                read_with_assimp(path, read);
+            } catch (const std::exception& e) {
+                read = Read();
+                read.why = std::string("assimp failed: ") + e.what();
+            }
+            return encode(read);
+        },
+        options.timeout_s, bytes);
+    if (!failed.empty())
+        return refuse(DiagnosticCode::unreadable_model, failed);
+    Read read;
+    if (!decode(bytes, read))
+        return refuse(DiagnosticCode::unreadable_model,
+                      "the reader process ended without a whole answer");
+    if (!read.code.empty()) {
+        const auto code = diagnostic_code_named(read.code);
+        return refuse(code ? *code : DiagnosticCode::unreadable_model, read.why);
+    }
+    read.animation.source = path;
+    return check_animation(std::move(read.animation));
+}
+
+} // namespace popup

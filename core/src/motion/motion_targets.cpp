@@ -1,0 +1,198 @@
+// Forward kinematics over the frame range, projection on the card, adaptive sampling
+// (thesis §6.2; docs/MATH.md, Motion targets).
+#include "popup/motion/motion_targets.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "popup/motion/adaptive_samples.hpp"
+
+namespace popup {
+
+namespace {
+
+std::string text(double x)
+{
+    std::ostringstream s;
+    s << x;
+    return s.str();
+}
+
+std::string text(const Vec3& v)
+{
+    std::ostringstream s;
+    s << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";
+    return s.str();
+}
+
+/// Rows: the card's x, y, z axes in the file's axes. z points at the viewer (against `view`), y
+/// is `up` made perpendicular to it, x = y × z (right-handed).
+Mat3 card_axes(const Vec3& view, const Vec3& up)
+{
+    const Vec3 z = -view.normalized();
+    const Vec3 y = (up - up.dot(z) * z).normalized();
+    Mat3 r;
+    r.row(0) = y.cross(z);
+    r.row(1) = y;
+    r.row(2) = z;
+    return r;
+}
+
+/// At most this many frames are skinned to find the character's extent (every k-th frame).
+constexpr int skinned_frames_for_extent = 32;
+
+} // namespace
+
+Result<MotionTargets> motion_targets(const Animation& animation, const MotionView& view,
+                                     const ChainOptions& chain_options)
+{
+    Result<MotionTargets> result;
+    auto refuse = [&](const std::string& option, const std::string& why) {
+        result.fail(DiagnosticCode::bad_option, "motion view: " + option + " " + why,
+                    about_parameter(option));
+        return result;
+    };
+    const int frames = animation.frames();
+    if (frames < 2 || animation.local.size() != size_t(frames))
+        return refuse("animation", "has " + std::to_string(frames) +
+                                       " frames; check_animation it first (at least 2 needed)");
+    if (!view.view.allFinite() || view.view.norm() < 1e-12)
+        return refuse("view", "= " + text(view.view) + ", must be a finite non-zero direction");
+    if (!view.up.allFinite() || view.up.norm() < 1e-12)
+        return refuse("up", "= " + text(view.up) + ", must be a finite non-zero direction");
+    if (view.up.normalized().cross(view.view.normalized()).norm() < 1e-6)
+        return refuse("up", "= " + text(view.up) + " is parallel to view " + text(view.view) +
+                                ", must be across it");
+    if (!(view.card_width > 0.0) || !std::isfinite(view.card_width))
+        return refuse("card_width", "= " + text(view.card_width) + " mm, must be > 0");
+    if (!(view.card_depth > 0.0) || !std::isfinite(view.card_depth))
+        return refuse("card_depth", "= " + text(view.card_depth) + " mm, must be > 0");
+    if (!(view.margin >= 0.0 && view.margin < 0.5))
+        return refuse("margin", "= " + text(view.margin) + ", must be in [0, 0.5)");
+    if (view.scale && !(*view.scale > 0.0 && std::isfinite(*view.scale)))
+        return refuse("scale", "= " + text(*view.scale) + " mm per unit, must be > 0");
+    if (view.centre && !view.centre->allFinite())
+        return refuse("centre", "must be finite");
+    if (!(view.angle_tolerance > 0.0 && view.angle_tolerance < 90.0))
+        return refuse("angle_tolerance",
+                      "= " + text(view.angle_tolerance) + " degrees, must be in (0, 90)");
+    const int first = view.first_frame;
+    const int last = view.last_frame < 0 ? frames - 1 : view.last_frame;
+    if (first < 0 || first > frames - 1)
+        return refuse("first_frame", "= " + std::to_string(first) + ", must be in 0.." +
+                                         std::to_string(frames - 2));
+    if (view.last_frame < -1 || last > frames - 1 || last <= first)
+        return refuse("last_frame",
+                      "= " + std::to_string(view.last_frame) + ", must be -1 (the last) or in " +
+                          std::to_string(first + 1) + ".." + std::to_string(frames - 1) +
+                          " (after first_frame " + std::to_string(first) + ")");
+
+    const Mat3 axes = card_axes(view.view, view.up);
+    MotionTargets& targets = result.value;
+    targets.first_frame = first;
+    targets.last_frame = last;
+    targets.chains = linkage_chains(animation, chain_options);
+
+    // The character's extent over the range, in the card's axes (before scale and placement):
+    // every bone at every frame, and the skinned mesh at up to 32 frames.
+    Eigen::AlignedBox3d box;
+    for (int f = first; f <= last; ++f)
+        for (const Eigen::Isometry3d& g : forward_kinematics(animation, f))
+            box.extend(axes * g.translation());
+    if (!animation.mesh.vertices.empty()) {
+        const int stride = std::max(1, (last - first) / skinned_frames_for_extent);
+        for (int f = first;; f = std::min(f + stride, last)) {
+            for (const Vec3& v : posed_mesh(animation, f).vertices)
+                box.extend(axes * v);
+            if (f == last)
+                break;
+        }
+    }
+    const Vec3 extent = box.sizes();
+    double scale = 0.0;
+    if (view.scale) {
+        scale = *view.scale;
+    } else {
+        const double room_x = 2.0 * view.card_depth * (1.0 - 2.0 * view.margin);
+        const double room_y = view.card_width * (1.0 - 2.0 * view.margin);
+        scale = std::numeric_limits<double>::infinity();
+        if (extent.x() > 0.0)
+            scale = std::min(scale, room_x / extent.x());
+        if (extent.y() > 0.0)
+            scale = std::min(scale, room_y / extent.y());
+        if (!std::isfinite(scale) || !(scale > 0.0))
+            return refuse("scale", "cannot be found: the character's projection is a point "
+                                   "over the frame range (give scale)");
+    }
+    const Vec2 centre = view.centre ? *view.centre : Vec2(0.0, 0.5 * view.card_width);
+    const Vec3 box_centre = box.center();
+    // card = scale · (axes · p − box centre) + (centre, 0): the depth centre goes to z = 0.
+    Eigen::Matrix4d to_card = Eigen::Matrix4d::Identity();
+    to_card.topLeftCorner<3, 3>() = scale * axes;
+    to_card.topRightCorner<3, 1>() = Vec3(centre.x(), centre.y(), 0.0) - scale * box_centre;
+    targets.animation_to_card = to_card;
+    targets.diagonal_mm = scale * extent.head<2>().norm();
+
+    auto card = [&](const Vec3& p) -> Vec3 {
+        return to_card.topLeftCorner<3, 3>() * p + to_card.topRightCorner<3, 1>();
+    };
+    auto frame_at = [&](double s) { return first + s * double(last - first); };
+
+    // Depth D (eq. 6.7) at the last frame: each chain's mean card z (its vertices, or its
+    // bones without a mesh), normalised over the character's depth range.
+    const std::vector<Eigen::Isometry3d> final_pose = forward_kinematics(animation, last);
+    const ModelMesh final_mesh =
+        animation.mesh.vertices.empty() ? ModelMesh{} : posed_mesh(animation, last);
+    double z_lo = std::numeric_limits<double>::infinity(), z_hi = -z_lo;
+    std::vector<double> mean_z;
+    for (const LinkageChain& chain : targets.chains) {
+        double sum = 0.0;
+        int count = 0;
+        if (!final_mesh.vertices.empty() && !chain.vertices.empty())
+            for (int v : chain.vertices) {
+                sum += card(final_mesh.vertices[v]).z();
+                ++count;
+            }
+        else
+            for (int b : chain.bones) {
+                sum += card(final_pose[b].translation()).z();
+                ++count;
+            }
+        mean_z.push_back(sum / count);
+    }
+    if (!final_mesh.vertices.empty())
+        for (const Vec3& v : final_mesh.vertices) {
+            z_lo = std::min(z_lo, card(v).z());
+            z_hi = std::max(z_hi, card(v).z());
+        }
+    else
+        for (const Eigen::Isometry3d& g : final_pose) {
+            z_lo = std::min(z_lo, card(g.translation()).z());
+            z_hi = std::max(z_hi, card(g.translation()).z());
+        }
+
+    const double still = 1e-9 * std::max(1.0, targets.diagonal_mm);
+    for (size_t c = 0; c < targets.chains.size(); ++c) {
+        const LinkageChain& chain = targets.chains[c];
+        const int tip = chain.bones.back(), base = chain.bones.front();
+        ChainPath path;
+        path.s = adaptive_samples(
+            [&](double s) -> Vec2 {
+                return card(forward_kinematics(animation, frame_at(s))[tip].translation())
+                    .head<2>();
+            },
+            view.angle_tolerance, still);
+        for (double s : path.s) {
+            const std::vector<Eigen::Isometry3d> pose = forward_kinematics(animation, frame_at(s));
+            path.effector.push_back(card(pose[tip].translation()).head<2>());
+            path.root.push_back(card(pose[base].translation()).head<2>());
+        }
+        path.depth = z_hi > z_lo ? (mean_z[c] - z_lo) / (z_hi - z_lo) : 0.5;
+        targets.paths.push_back(std::move(path));
+    }
+    return result;
+}
+
+} // namespace popup

@@ -1,0 +1,175 @@
+// adaptive_samples and motion_targets against paths whose samples and projection are derived by
+// hand (docs/MATH.md, Motion targets).
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "popup/motion/adaptive_samples.hpp"
+#include "popup/motion/motion_targets.hpp"
+
+using namespace popup;
+
+namespace {
+
+constexpr double radius = 2.0;
+constexpr int frames = 21;
+
+Eigen::Isometry3d rigid(const Vec3& t, double angle_z = 0.0)
+{
+    Eigen::Isometry3d m = Eigen::Isometry3d::Identity();
+    m.linear() = Eigen::AngleAxisd(angle_z, Vec3::UnitZ()).toRotationMatrix();
+    m.translation() = t;
+    return m;
+}
+
+/// A hub at the origin turning about z by π over the 21 frames, carrying an arm tip at
+/// (radius, 0, 0) and a still post at (0, 0, 5) (on the axis): chains [hub], [tip], [post].
+Animation turning_arm()
+{
+    Animation a;
+    a.source = "turning arm";
+    a.bones = {{"hub", -1}, {"tip", 0}, {"post", 0}};
+    for (int f = 0; f < frames; ++f) {
+        a.frame_times_s.push_back(f / 24.0);
+        a.local.push_back({rigid(Vec3::Zero(), M_PI * f / (frames - 1)), rigid(Vec3(radius, 0, 0)),
+                           rigid(Vec3(0, 0, 5))});
+    }
+    a.bind_inverse.assign(3, Eigen::Isometry3d::Identity());
+    return a;
+}
+
+} // namespace
+
+TEST(MotionSampling, AStraightPathKeepsOnlyItsEnds)
+{
+    const auto uniform = adaptive_samples([](double s) { return Vec2(2 + 3 * s, 1 - s); }, 2.0);
+    EXPECT_EQ(uniform, (std::vector<double>{0.0, 1.0}));
+    // Speed changes along the line do not matter: only turning does.
+    const auto eased =
+        adaptive_samples([](double s) { return Vec2(2 + 3 * s * s * s, 1 - s * s * s); }, 2.0);
+    EXPECT_EQ(eased, (std::vector<double>{0.0, 1.0}));
+}
+
+TEST(MotionSampling, ACircleIsSampledWithinTheTurningBound)
+{
+    // A uniform circle: an interval spanning φ turns by φ/2 at its middle (the largest of its
+    // tested turns), so it is split while φ > 2τ: the final intervals have τ < φ <= 2τ (their
+    // parents had 2φ > 2τ). A full turn with τ = 2°: 360/2^k <= 4 first at k = 7, 128 pieces.
+    const double tau = 2.0;
+    const auto s = adaptive_samples(
+        [](double s) { return Vec2(5 * std::cos(2 * M_PI * s), 5 * std::sin(2 * M_PI * s)); }, tau);
+    ASSERT_EQ(s.size(), 129u);
+    for (size_t i = 1; i < s.size(); ++i) {
+        const double phi = 360.0 * (s[i] - s[i - 1]);
+        EXPECT_LE(phi, 2 * tau + 1e-12);
+        EXPECT_GT(phi, tau);
+    }
+    // A circle run at varying speed still ends with every piece turning at most 2τ.
+    const auto varying = adaptive_samples(
+        [](double s) {
+            const double t = 2 * M_PI * s * s;
+            return Vec2(std::cos(t), std::sin(t));
+        },
+        tau);
+    for (size_t i = 1; i < varying.size(); ++i) {
+        const double phi = 360.0 * (varying[i] * varying[i] - varying[i - 1] * varying[i - 1]);
+        EXPECT_LE(phi, 2 * tau + 1e-12)
+            << "between s = " << varying[i - 1] << " and " << varying[i];
+    }
+}
+
+TEST(MotionTargets, ProjectsAndPlacesTheDefaultFit)
+{
+    const Animation a = turning_arm();
+    MotionView view; // looking down -z, y up: card (x, y) = file (x, y) before placement
+    const auto r = motion_targets(a, view);
+    ASSERT_TRUE(r.ok) << r.diagnostics[0].message;
+    const MotionTargets& t = r.value;
+    // Extent over the frames: x in [-2, 2], y in [0, 2] (frame 10 is the quarter turn).
+    // Room: x 2·148·0.8 = 236.8, y 210·0.8 = 168; scale = min(236.8/4, 168/2) = 59.2.
+    const double scale = 59.2;
+    const Vec2 box_centre(0.0, 1.0), centre(0.0, 105.0);
+    EXPECT_NEAR(t.animation_to_card(0, 0), scale, 1e-9);
+    EXPECT_NEAR(t.diagonal_mm, scale * std::sqrt(20.0), 1e-9);
+    ASSERT_EQ(t.chains.size(), 3u);
+    EXPECT_EQ(t.chains[1].name, "tip");
+    const ChainPath& tip = t.paths[1];
+    // Half a turn: 180/2^k <= 4 first at k = 6, so 65 samples.
+    ASSERT_EQ(tip.s.size(), 65u);
+    for (size_t i = 0; i < tip.s.size(); ++i) {
+        const double angle = M_PI * tip.s[i];
+        const Vec2 expected =
+            scale * (radius * Vec2(std::cos(angle), std::sin(angle)) - box_centre) + centre;
+        EXPECT_LT((tip.effector[i] - expected).norm(), 1e-9) << "s = " << tip.s[i];
+        EXPECT_LT((tip.root[i] - (centre - scale * box_centre)).norm(), 1e-9);
+    }
+    // The still post and the hub: one sample pair each. Depth: post at z = 5 nearest (1), the
+    // others at z = 0 deepest (0).
+    EXPECT_EQ(t.paths[2].s.size(), 2u);
+    EXPECT_NEAR(t.paths[2].depth, 1.0, 1e-12);
+    EXPECT_NEAR(t.paths[1].depth, 0.0, 1e-12);
+    EXPECT_NEAR(t.paths[0].depth, 0.0, 1e-12);
+}
+
+TEST(MotionTargets, ViewScaleCentreAndFrameRange)
+{
+    const Animation a = turning_arm();
+    MotionView view;
+    view.view = Vec3(0, 0, 1); // from behind: the file's +x becomes the card's -x
+    view.scale = 10.0;
+    view.centre = Vec2(20.0, 50.0);
+    view.first_frame = 5;
+    view.last_frame = 15;
+    const auto r = motion_targets(a, view);
+    ASSERT_TRUE(r.ok) << r.diagnostics[0].message;
+    const MotionTargets& t = r.value;
+    EXPECT_EQ(t.first_frame, 5);
+    EXPECT_EQ(t.last_frame, 15);
+    // Frames 5..15 turn π/4..3π/4: tip x in [-√2, √2], y in [√2, 2], hub at the origin: box
+    // x [-√2, √2], y [0, 2], centre (0, 1); card x = -file x.
+    const ChainPath& tip = t.paths[1];
+    for (size_t i = 0; i < tip.s.size(); ++i) {
+        const double angle = M_PI * (5 + 10 * tip.s[i]) / 20.0;
+        const Vec2 file(radius * std::cos(angle), radius * std::sin(angle));
+        const Vec2 expected = 10.0 * (Vec2(-file.x(), file.y()) - Vec2(0, 1)) + Vec2(20, 50);
+        EXPECT_LT((tip.effector[i] - expected).norm(), 1e-9);
+    }
+    // A quarter turn: 90/2^k <= 4 first at k = 5: 33 samples.
+    EXPECT_EQ(tip.s.size(), 33u);
+    // Viewed from behind, the post (file z = 5) is the deepest.
+    EXPECT_NEAR(t.paths[2].depth, 0.0, 1e-12);
+}
+
+TEST(MotionTargets, BadOptionsAreNamed)
+{
+    const Animation a = turning_arm();
+    auto option_of = [&](const MotionView& v) {
+        const auto r = motion_targets(a, v);
+        EXPECT_FALSE(r.ok);
+        return r.ok ? std::string() : *r.diagnostics[0].parameter;
+    };
+    MotionView v;
+    v.view = Vec3::Zero();
+    EXPECT_EQ(option_of(v), "view");
+    v = MotionView();
+    v.up = Vec3(0, 0, 2);
+    EXPECT_EQ(option_of(v), "up");
+    v = MotionView();
+    v.last_frame = 21;
+    EXPECT_EQ(option_of(v), "last_frame");
+    v = MotionView();
+    v.first_frame = 20;
+    EXPECT_EQ(option_of(v), "last_frame");
+    v = MotionView();
+    v.first_frame = -1;
+    EXPECT_EQ(option_of(v), "first_frame");
+    v = MotionView();
+    v.margin = 0.5;
+    EXPECT_EQ(option_of(v), "margin");
+    v = MotionView();
+    v.scale = 0.0;
+    EXPECT_EQ(option_of(v), "scale");
+    v = MotionView();
+    v.angle_tolerance = 0.0;
+    EXPECT_EQ(option_of(v), "angle_tolerance");
+}
