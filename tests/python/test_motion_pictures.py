@@ -134,3 +134,24 @@ def test_the_paths_plot_is_written_and_deterministic(tmp_path):
     assert blue.sum() > 200
     with open(paths[0], "rb") as a, open(paths[1], "rb") as b:
         assert a.read() == b.read()
+
+
+def test_the_character_frames_follow_the_bvh(tmp_path):
+    """The right half of the movie: the hand-written BVH's hand is where its channels put it, at
+    the movie's fractional frames, mapped by animation_to_card (here a scale and a shift)."""
+    import bvh_samples
+
+    from popupwb.core import popupcore
+    from popupwb.motion.motion_movie import character_frames
+
+    animation = popupcore.load_animation(bvh_samples.write_bvh(tmp_path / "wave.bvh"))
+    matrix = np.diag([2.0, 2.0, 2.0, 1.0])
+    matrix[:3, 3] = (10.0, 20.0, 0.0)
+    frames = character_frames(animation, matrix, 0, bvh_samples.FRAMES - 1, count=7)
+    assert [f for f, _, _ in frames] == pytest.approx([5.0 * k for k in range(7)])
+    for frame, segments, triangles in frames:
+        assert triangles is None  # a BVH has no mesh
+        assert len(segments) == len(animation.bones) - 1  # one per bone with a parent
+        hand = 2.0 * np.array(bvh_samples.hand(frame)) + (10.0, 20.0, 0.0)
+        nearest = min(np.linalg.norm(np.asarray(b) - hand) for _, b in segments)
+        assert nearest < 1e-9, frame
