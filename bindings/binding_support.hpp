@@ -84,3 +84,4 @@ void bind_fitting(pybind11::module_& m);
 void bind_model_input(pybind11::module_& m);
 void bind_profiles(pybind11::module_& m);
 void bind_motion_input(pybind11::module_& m);
+void bind_motion(pybind11::module_& m);

@@ -128,6 +128,7 @@ PYBIND11_MODULE(popupcore, m)
     bind_model_input(m);
     bind_profiles(m);
     bind_motion_input(m);
+    bind_motion(m);
     m.def("_raise_native", &raise_native, py::arg("kind"), py::arg("message"),
           "Test hook: throws a native exception of family 'std', 'invalid_argument', 'occt' or "
           "'cgal' so the translators can be checked.");

@@ -1,0 +1,395 @@
+#include "design_from_targets.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "motion_annealing.hpp"
+#include "popup/model/card.hpp"
+#include "popup/simulation/check_validity.hpp"
+
+namespace popup::motion {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t)
+{
+    return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+std::string mechanism_name(MotionKind kind, const std::string& chain)
+{
+    static const char* prefix[] = {"VerticalTranslation", "DiagonalTranslation",
+                                   "HorizontalTranslation", "RotationArm", "FloatingLayer"};
+    std::string clean;
+    for (char c : chain)
+        clean += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+    return std::string(prefix[int(kind)]) + "_" + clean;
+}
+
+std::string chain_names(const AnnealProblem& p, const Slot& s)
+{
+    std::string out;
+    for (int j : s.chains)
+        out += (out.empty() ? "" : ", ") + p.chains[j].name;
+    return out;
+}
+
+double weight_of(const AnnealProblem& p, const Slot& s)
+{
+    double w = 0;
+    for (int j : s.chains)
+        w += p.chains[j].weight;
+    return w;
+}
+
+// Makes slot i stationary (its heaviest chain's floating layer), or takes it out when it already
+// is; records why for each of its chains.
+void demote(const AnnealProblem& p, AnnealState& state, int i, const std::string& why,
+            std::map<int, std::string>& reasons)
+{
+    Slot& s = state.slots[i];
+    for (int j : s.chains)
+        reasons[j] = why;
+    if (s.mechanism.kind != MotionKind::stationary) {
+        int heaviest = s.chains.front();
+        for (int j : s.chains)
+            if (p.chains[j].weight > p.chains[heaviest].weight)
+                heaviest = j;
+        const Candidate& c = p.candidates[heaviest][int(MotionKind::stationary)];
+        if (std::isfinite(c.error_mm)) {
+            s.mechanism = c.mechanism;
+            return;
+        }
+    }
+    for (int j : s.chains)
+        reasons[j] = why + "; no room for its floating layer, its part stays printed on the page";
+    state.slots.erase(state.slots.begin() + i);
+}
+
+} // namespace
+
+double layer_height_max(const MotionOptions& o)
+{
+    if (o.layer_height_max > 0)
+        return o.layer_height_max;
+    return 25.0 * std::sqrt(o.view.card_width * o.view.card_depth / (210.0 * 148.5));
+}
+
+Result<MotionResult> design_from_targets(const MotionTargets& targets, const MotionOptions& o,
+                                         const CancelFlag* cancel, std::atomic<double>* progress)
+{
+    Result<MotionResult> out;
+    MotionResult& r = out.value;
+    r.targets = targets;
+    const Clock::time_point begun = Clock::now();
+    auto bad = [&](const std::string& option, const std::string& message) {
+        out.fail(DiagnosticCode::bad_option, message, about_parameter(option));
+    };
+    if (!(o.motion_weight >= 0 && o.depth_weight >= 0 && o.motion_weight + o.depth_weight > 0))
+        bad("motion_weight", "motion_weight " + std::to_string(o.motion_weight) +
+                                 " and depth_weight " + std::to_string(o.depth_weight) +
+                                 " must be >= 0, not both 0");
+    if (!(o.collision_weight > 0))
+        bad("collision_weight",
+            "collision_weight " + std::to_string(o.collision_weight) + " must be > 0");
+    if (!(o.iterations >= 0 && o.iterations <= 100000000))
+        bad("iterations",
+            "iterations " + std::to_string(o.iterations) + " must be in [0, 100000000]");
+    if (!(o.search_chains >= 1 && o.search_chains <= 16))
+        bad("search_chains",
+            "search_chains " + std::to_string(o.search_chains) + " must be in [1, 16]");
+    if (!(o.view.card_width > 0 && o.view.card_depth > 0))
+        bad("card_width", "the card (" + std::to_string(o.view.card_width) + " × " +
+                              std::to_string(o.view.card_depth) + " mm) must be > 0 both ways");
+    if (targets.paths.size() != targets.chains.size())
+        bad("targets", "the targets have " + std::to_string(targets.paths.size()) + " paths for " +
+                           std::to_string(targets.chains.size()) + " chains; they must match");
+    if (!(targets.diagonal_mm > 0))
+        bad("targets", "the character's diagonal on the card (" +
+                           std::to_string(targets.diagonal_mm) + " mm) must be > 0");
+    for (std::size_t j = 0; j < targets.paths.size(); ++j) {
+        const ChainPath& path = targets.paths[j];
+        if (path.s.size() < 2 || path.effector.size() != path.s.size())
+            bad("targets", "chain " + targets.chains[j].name + ": its path has " +
+                               std::to_string(path.s.size()) + " samples and " +
+                               std::to_string(path.effector.size()) +
+                               " effector points; it needs >= 2 of each, as many");
+    }
+    if (!out.ok)
+        return out;
+
+    r.card.width = o.view.card_width;
+    r.card.depth = o.view.card_depth;
+    AnnealProblem p;
+    p.card = r.card;
+    p.diagonal = targets.diagonal_mm;
+    p.h_max = layer_height_max(o);
+    p.motion_weight = o.motion_weight;
+    p.depth_weight = o.depth_weight;
+    p.collision_weight = o.collision_weight;
+
+    // Mapping and parameter estimation (thesis §6.2–6.3).
+    Clock::time_point t = Clock::now();
+    std::vector<MotionKind> mapped;
+    for (std::size_t j = 0; j < targets.chains.size(); ++j) {
+        stop_if_cancelled(cancel, "design_motion: mapping");
+        ChainTarget c;
+        c.name = targets.chains[j].name;
+        c.s = targets.paths[j].s;
+        c.target = targets.paths[j].effector;
+        c.weight = targets.chains[j].weight;
+        c.depth = targets.paths[j].depth;
+        p.chains.push_back(c);
+        p.candidates.push_back(fit_candidates(c, r.card, p.h_max));
+        mapped.push_back(best_mapping(p.candidates.back(), c, 0.01 * p.diagonal));
+        if (progress)
+            progress->store(0.2 * double(j + 1) / targets.chains.size());
+    }
+    prepare_alike(p);
+    r.timings_s.push_back({"mapping", seconds_since(t)});
+
+    std::map<int, std::string> reasons; // chain -> why stationary
+    AnnealState start;
+    for (std::size_t j = 0; j < p.chains.size(); ++j) {
+        const Candidate& c = p.candidates[j][int(mapped[j])];
+        if (!std::isfinite(c.error_mm)) {
+            reasons[int(j)] = "no mechanism fits it on the card (" + c.why + ")";
+            continue;
+        }
+        start.slots.push_back({c.mechanism, {int(j)}});
+    }
+
+    // Simulated annealing: independent search chains on their own threads, best kept.
+    t = Clock::now();
+    const int runs = o.search_chains;
+    std::vector<AnnealResult> results(runs);
+    std::vector<AnnealOptions> options(runs);
+    std::vector<std::exception_ptr> errors(runs);
+    for (int k = 0; k < runs; ++k) {
+        options[k].iterations = o.iterations;
+        options[k].seed = o.seed * 0x9E3779B97F4A7C15ULL + std::uint64_t(k) * 0xBF58476D1CE4E5B9ULL;
+        options[k].cancel = cancel;
+        options[k].progress = k == 0 ? progress : nullptr;
+        options[k].progress_from = 0.2;
+        options[k].progress_to = 0.85;
+    }
+    {
+        std::vector<std::thread> threads;
+        for (int k = 0; k < runs; ++k)
+            threads.emplace_back([&, k] {
+                try {
+                    results[k] = anneal(p, start, options[k]);
+                } catch (...) {
+                    errors[k] = std::current_exception();
+                }
+            });
+        for (std::thread& th : threads)
+            th.join();
+    }
+    for (const std::exception_ptr& e : errors)
+        if (e)
+            std::rethrow_exception(e);
+    int best = 0;
+    for (int k = 1; k < runs; ++k) {
+        const AnnealResult &a = results[k], &b = results[best];
+        if (a.collision < b.collision - 1e-12 ||
+            (a.collision <= b.collision + 1e-12 && a.cost < b.cost))
+            best = k;
+    }
+    AnnealState state = results[best].best;
+    for (const AnnealResult& a : results)
+        r.iterations += a.iterations;
+    r.timings_s.push_back({"annealing", seconds_since(t)});
+
+    // Collisions the search could not resolve: the lighter mechanism of the deepest pair
+    // becomes stationary (thesis §6.4.3 move 4), until none is left.
+    t = Clock::now();
+    for (;;) {
+        const std::vector<SlotCollision> hits = state_collisions(p, state);
+        if (hits.empty())
+            break;
+        const SlotCollision worst = *std::max_element(
+            hits.begin(), hits.end(),
+            [](const SlotCollision& x, const SlotCollision& y) { return x.depth < y.depth; });
+        const bool a_lighter =
+            weight_of(p, state.slots[worst.a]) <= weight_of(p, state.slots[worst.b]);
+        const int loser = a_lighter ? worst.a : worst.b, other = a_lighter ? worst.b : worst.a;
+        std::ostringstream why;
+        why << "its " << to_string(state.slots[loser].mechanism.kind)
+            << " mechanism collides with the one carrying " << chain_names(p, state.slots[other])
+            << " (volumes overlap by " << worst.depth
+            << " mm) and they move too differently to share a patch (paths "
+            << path_distance(p.chains[state.slots[loser].chains.front()],
+                             p.chains[state.slots[other].chains.front()])
+            << " mm apart, RMS)";
+        demote(p, state, loser, why.str(), reasons);
+    }
+    r.timings_s.push_back({"collision repair", seconds_since(t)});
+
+    // Build with the library's generators and run the full simulator; a mechanism the
+    // generators refuse or that crosses another is made stationary, then taken out.
+    t = Clock::now();
+    double validity_s = 0;
+    std::vector<std::vector<std::string>> slot_mechanisms;
+    for (int round = 0;; ++round) {
+        stop_if_cancelled(cancel, "design_motion: building");
+        Result<Scaffold> card = make_card(r.card);
+        if (!card.ok) {
+            out.fail_with(card.diagnostics);
+            return out;
+        }
+        Scaffold scaffold = card.value;
+        const BasePatchPair host = central_fold(scaffold);
+        std::vector<FittedMechanism> rows;
+        std::vector<std::set<int>> slot_patches;
+        slot_mechanisms.clear();
+        int refused = -1;
+        std::string refusal;
+        for (int i = 0; i < int(state.slots.size()); ++i) {
+            const Slot& s = state.slots[i];
+            const std::string name =
+                mechanism_name(s.mechanism.kind, p.chains[s.chains.front()].name);
+            Result<std::vector<MechanismParts>> built =
+                build_mechanism(scaffold, host, s.mechanism, name, rows);
+            if (!built.ok) {
+                refused = i;
+                refusal = built.diagnostics.empty() ? "refused" : built.diagnostics[0].message;
+                break;
+            }
+            std::set<int> ids;
+            std::vector<std::string> names;
+            for (const MechanismParts& part : built.value) {
+                ids.insert(part.patches.begin(), part.patches.end());
+                names.push_back(part.name);
+            }
+            slot_patches.push_back(ids);
+            slot_mechanisms.push_back(names);
+        }
+        if (refused >= 0) {
+            out.warn(DiagnosticCode::mechanism_dropped,
+                     "chain " + chain_names(p, state.slots[refused]) +
+                         ": the generator refused its mechanism: " + refusal);
+            demote(p, state, refused, "the generator refused its mechanism: " + refusal, reasons);
+            continue;
+        }
+        const Clock::time_point v0 = Clock::now();
+        ValidityOptions vo;
+        vo.cancel = cancel;
+        vo.clearance = 0.0;
+        const ValidityReport report = check_validity(scaffold, vo);
+        validity_s += seconds_since(v0);
+        r.scaffold = scaffold;
+        r.mechanisms = rows;
+        r.valid = report.valid();
+        if (r.valid || state.slots.empty() || round >= 2 * int(p.chains.size()) + 2) {
+            if (!r.valid)
+                for (const Diagnostic& d : report.diagnostics)
+                    r.diagnostics.push_back(d);
+            break;
+        }
+        // The lightest mechanism among the crossing patches (or, for another verdict, the
+        // lightest moving one) gives way.
+        std::set<int> involved;
+        for (const Crossing& c : report.crossings)
+            for (int i = 0; i < int(slot_patches.size()); ++i)
+                if (slot_patches[i].count(c.patch_a) || slot_patches[i].count(c.patch_b))
+                    involved.insert(i);
+        if (involved.empty())
+            for (int i = 0; i < int(state.slots.size()); ++i)
+                involved.insert(i);
+        int loser = *involved.begin();
+        for (int i : involved) {
+            const bool moving = state.slots[i].mechanism.kind != MotionKind::stationary;
+            const bool loser_moving = state.slots[loser].mechanism.kind != MotionKind::stationary;
+            if ((moving && !loser_moving) ||
+                (moving == loser_moving &&
+                 weight_of(p, state.slots[i]) < weight_of(p, state.slots[loser])))
+                loser = i;
+        }
+        std::string verdict = !report.intersection_free ? "patches cross in the simulator"
+                              : !report.foldable        ? "the card does not fold"
+                              : !report.stable          ? "a part moves freely"
+                                                        : "a part is not enclosed when closed";
+        out.warn(DiagnosticCode::mechanism_dropped,
+                 "chain " + chain_names(p, state.slots[loser]) + ": " + verdict +
+                     " with its mechanism; it is made stationary");
+        demote(p, state, loser, "the full simulator's check failed (" + verdict + ")", reasons);
+    }
+    r.timings_s.push_back({"build", seconds_since(t) - validity_s});
+    r.timings_s.push_back({"validity", validity_s});
+
+    // Report (eq 6.6 per chain, the vertex-weighted total, mapping and status).
+    r.cost = state_cost(p, state);
+    std::vector<int> slot_of(p.chains.size(), -1);
+    for (int i = 0; i < int(state.slots.size()); ++i)
+        for (int j : state.slots[i].chains)
+            slot_of[j] = i;
+    for (int j = 0; j < int(p.chains.size()); ++j) {
+        const ChainTarget& c = p.chains[j];
+        ChainReport cr;
+        cr.name = c.name;
+        cr.weight = c.weight;
+        cr.s = c.s;
+        cr.target = c.target;
+        const int i = slot_of[j];
+        if (i >= 0) {
+            const Slot& s = state.slots[i];
+            cr.mapping = to_string(s.mechanism.kind);
+            if (i < int(slot_mechanisms.size()))
+                cr.mechanisms = slot_mechanisms[i];
+            cr.achieved = achieved_path(s.mechanism, c.s);
+            cr.error_mm = motion_error(s.mechanism, c);
+            if (s.chains.size() > 1) {
+                cr.status = "merged";
+                std::string others;
+                for (int k : s.chains)
+                    if (k != j)
+                        others += (others.empty() ? "" : ", ") + p.chains[k].name;
+                cr.reason = "shares its " + cr.mapping + " mechanism with " + others +
+                            " (they move alike: paths within " +
+                            std::to_string(p.alike_fraction * p.diagonal) + " mm RMS)";
+            } else if (s.mechanism.kind == MotionKind::stationary) {
+                cr.status = "stationary";
+                cr.reason = reasons.count(j) ? reasons[j]
+                            : mapped[j] == MotionKind::stationary
+                                ? "it does not move (a floating layer carries it)"
+                                : "the search found the floating layer cheaper than moving it";
+            } else {
+                cr.status = "animated";
+            }
+        } else {
+            // Printed on the page: it moves with the ground page's point under it.
+            cr.mapping = "stationary";
+            cr.status = "stationary";
+            cr.reason = reasons.count(j) ? reasons[j] : "no mechanism carries it";
+            for (double si : c.s)
+                cr.achieved.push_back(
+                    Vec2(c.target.back().x() * std::sin(M_PI * si / 2), c.target.back().y()));
+            double sum = 0;
+            for (std::size_t k = 0; k < c.s.size(); ++k)
+                sum += (cr.achieved[k] - c.target[k]).squaredNorm();
+            cr.error_mm = std::sqrt(sum / c.s.size());
+        }
+        cr.error = cr.error_mm / p.diagonal;
+        r.weighted_error += c.weight * cr.error;
+        r.chains.push_back(cr);
+    }
+    if (!r.valid)
+        r.diagnostics.push_back(
+            Diagnostic::warning(DiagnosticCode::no_design_found,
+                                "the design does not pass the full simulator's validity check"));
+    r.timings_s.push_back({"total", seconds_since(begun)});
+    if (progress)
+        progress->store(1.0);
+    out.diagnostics.insert(out.diagnostics.end(), r.diagnostics.begin(), r.diagnostics.end());
+    return out;
+}
+
+} // namespace popup::motion

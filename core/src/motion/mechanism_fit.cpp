@@ -1,0 +1,287 @@
+#include "mechanism_fit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+namespace popup::motion {
+
+namespace {
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+double clamp(double v, double lo, double hi)
+{
+    return std::max(lo, std::min(hi, v));
+}
+
+// Minimises f on [lo, hi]: a coarse grid, then golden-section around the best cell.
+double search_1d(const std::function<double(double)>& f, double lo, double hi, int grid = 40)
+{
+    double best = lo, fbest = inf;
+    for (int i = 0; i <= grid; ++i) {
+        const double x = lo + (hi - lo) * i / grid, fx = f(x);
+        if (fx < fbest) {
+            fbest = fx;
+            best = x;
+        }
+    }
+    double a = std::max(lo, best - (hi - lo) / grid), b = std::min(hi, best + (hi - lo) / grid);
+    const double r = (std::sqrt(5.0) - 1) / 2;
+    double c = b - r * (b - a), d = a + r * (b - a), fc = f(c), fd = f(d);
+    for (int k = 0; k < 40; ++k) {
+        if (fc < fd) {
+            b = d;
+            d = c;
+            fd = fc;
+            c = b - r * (b - a);
+            fc = f(c);
+        } else {
+            a = c;
+            c = d;
+            fc = fd;
+            d = a + r * (b - a);
+            fd = f(d);
+        }
+    }
+    const double x = (a + b) / 2;
+    return f(x) <= fbest ? x : best;
+}
+
+// Nelder–Mead over the mechanism's parameters; infeasible points cost +inf.
+MotionMechanism polish(MotionMechanism m, const std::function<double(const MotionMechanism&)>& f,
+                       int evaluations)
+{
+    const int n = parameter_count(m.kind);
+    std::vector<MotionMechanism> simplex(n + 1, m);
+    std::vector<double> value(n + 1);
+    for (int i = 0; i < n; ++i) {
+        const ParameterInfo info = parameter_info(m.kind, i);
+        const double step =
+            info.role == ParameterRole::angle ? 0.1 : std::max(2.0, 0.1 * std::abs(m.p[i]));
+        simplex[i + 1].p[i] += step;
+    }
+    for (int i = 0; i <= n; ++i)
+        value[i] = f(simplex[i]);
+    int used = n + 1;
+    auto blend = [&](const MotionMechanism& a, const MotionMechanism& b, double t) {
+        MotionMechanism c = a;
+        for (int i = 0; i < n; ++i)
+            c.p[i] = a.p[i] + t * (b.p[i] - a.p[i]);
+        return c;
+    };
+    while (used < evaluations) {
+        std::vector<int> order(n + 1);
+        for (int i = 0; i <= n; ++i)
+            order[i] = i;
+        std::sort(order.begin(), order.end(), [&](int a, int b) { return value[a] < value[b]; });
+        const int best = order[0], worst = order[n], second = order[n - 1];
+        MotionMechanism centroid = m;
+        for (int i = 0; i < n; ++i) {
+            double s = 0;
+            for (int k = 0; k < n; ++k)
+                s += simplex[order[k]].p[i];
+            centroid.p[i] = s / n;
+        }
+        const MotionMechanism reflected = blend(centroid, simplex[worst], -1.0);
+        const double fr = f(reflected);
+        ++used;
+        if (fr < value[best]) {
+            const MotionMechanism expanded = blend(centroid, simplex[worst], -2.0);
+            const double fe = f(expanded);
+            ++used;
+            if (fe < fr) {
+                simplex[worst] = expanded;
+                value[worst] = fe;
+            } else {
+                simplex[worst] = reflected;
+                value[worst] = fr;
+            }
+        } else if (fr < value[second]) {
+            simplex[worst] = reflected;
+            value[worst] = fr;
+        } else {
+            const MotionMechanism contracted = blend(centroid, simplex[worst], 0.5);
+            const double fc = f(contracted);
+            ++used;
+            if (fc < value[worst]) {
+                simplex[worst] = contracted;
+                value[worst] = fc;
+            } else {
+                for (int k = 1; k <= n; ++k) {
+                    simplex[order[k]] = blend(simplex[best], simplex[order[k]], 0.5);
+                    value[order[k]] = f(simplex[order[k]]);
+                    ++used;
+                }
+            }
+        }
+    }
+    int best = 0;
+    for (int i = 1; i <= n; ++i)
+        if (value[i] < value[best])
+            best = i;
+    return simplex[best];
+}
+
+} // namespace
+
+std::vector<Vec2> achieved_path(const MotionMechanism& m, const std::vector<double>& s)
+{
+    std::vector<Vec2> out;
+    out.reserve(s.size());
+    for (double si : s)
+        out.push_back(mechanism_point(m, M_PI * si).head<2>());
+    return out;
+}
+
+double motion_error(const MotionMechanism& m, const ChainTarget& t)
+{
+    if (t.s.empty())
+        return 0.0;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < t.s.size(); ++i)
+        sum += (mechanism_point(m, M_PI * t.s[i]).head<2>() - t.target[i]).squaredNorm();
+    return std::sqrt(sum / t.s.size());
+}
+
+std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& t,
+                                                        const CardParams& card, double h_max)
+{
+    std::array<Candidate, motion_kind_count> out;
+    const double W = card.width, D = card.depth;
+    const Vec2 A0 = t.target.front(), A1 = t.target.back();
+    auto cost = [&](const MotionMechanism& m) {
+        return infeasibility(m, card).empty() ? motion_error(m, t) : inf;
+    };
+    auto finish = [&](MotionMechanism m, int evaluations) {
+        Candidate c;
+        c.why = infeasibility(m, card);
+        if (!c.why.empty()) {
+            c.mechanism = m;
+            c.error_mm = inf;
+            return c;
+        }
+        c.mechanism = polish(m, cost, evaluations);
+        c.error_mm = motion_error(c.mechanism, t);
+        return c;
+    };
+    {
+        // Rotation: at 180° the tip is at (−h, offset + l) (docs/MATH.md, Rotation), so the last
+        // pose gives h and offset + l; the spine l is the 1-D search of eq 6.2 (the y path, the
+        // only part that depends on l), for a few runs w below the arm limit h <= l²/w.
+        MotionMechanism m;
+        m.kind = MotionKind::rotation;
+        const double h = clamp(-A1.x(), 2.0, D - 2);
+        double best = inf;
+        for (double ratio : {0.2, 0.4, 0.6, 0.8}) {
+            auto trial = [&](double l) {
+                MotionMechanism q;
+                q.kind = MotionKind::rotation;
+                q.p = {clamp(A1.y() - l, 0, W), l, clamp(ratio * l * l / h, 2.0, D - 2), h};
+                return q;
+            };
+            auto eq62 = [&](double l) {
+                const MotionMechanism q = trial(l);
+                if (!infeasibility(q, card).empty())
+                    return inf;
+                double sum = 0;
+                for (std::size_t i = 0; i < t.s.size(); ++i) {
+                    const double dy = mechanism_point(q, M_PI * t.s[i]).y() - t.target[i].y();
+                    sum += dy * dy;
+                }
+                return sum;
+            };
+            const double l = search_1d(eq62, 2.0, W);
+            const double e = eq62(l);
+            if (e < best || best == inf) {
+                best = e;
+                m = trial(l);
+            }
+        }
+        out[int(MotionKind::rotation)] = finish(m, 600);
+    }
+    {
+        // Vertical: F' is at offset when open and offset − height·sin(wall_angle) when closed.
+        MotionMechanism m;
+        m.kind = MotionKind::vertical;
+        const double beta = M_PI / 4, drop = clamp(A1.y() - A0.y(), 2.0, D - 2);
+        const double height = clamp(drop / std::sin(beta), 2.0, D - 2);
+        const double side = clamp(0.5 * height, 4.0, 0.4 * D);
+        m.p = {clamp(A1.y(), 0, W - 2 * side * std::cos(beta)), side, height, beta};
+        out[int(MotionKind::vertical)] = finish(m, 500);
+    }
+    {
+        // Horizontal: P = r·C/|C| is at (r, y) open and on the fold closed: r from the last
+        // pose; the runs' ratio k = b/a shapes x(θ) (1-D search), with a − b = r/2.
+        const double r = clamp(A1.x(), 3.0, D - 2);
+        auto trial = [&](double k) {
+            MotionMechanism q;
+            q.kind = MotionKind::horizontal;
+            const double a = clamp(0.5 * r / (1 - k), 2.0, D - 2);
+            q.p = {clamp(A1.y() - 10, 0, W - 20), 20, a, k * a, r};
+            return q;
+        };
+        const double k = search_1d([&](double k) { return cost(trial(k)); }, 0.05, 0.9, 20);
+        out[int(MotionKind::horizontal)] = finish(trial(k), 600);
+    }
+    {
+        // Diagonal: open, the nose is at ((a − b) sin α, offset + (a + b) cos α) on the standing
+        // spine (docs/MATH.md, Diagonal translation); the spine from the y travel.
+        MotionMechanism m;
+        m.kind = MotionKind::diagonal;
+        const double alpha = M_PI / 4;
+        const double diff = A1.x() / std::sin(alpha);
+        const double sum = std::abs(diff) + 20;
+        const double a = (sum + diff) / 2, b = (sum - diff) / 2;
+        const double spine = clamp(2 * std::abs(A1.y() - A0.y()) + 20, 10, D - 2);
+        const double run = clamp(2.5 * (std::max(a, b) + 2), 4, (D - 2) / std::sin(alpha));
+        m.p = {clamp(A1.y() - sum * std::cos(alpha), 0, W - run * std::cos(alpha)),
+               run,
+               alpha,
+               spine,
+               0.3 * spine,
+               0.2 * spine,
+               a,
+               b};
+        out[int(MotionKind::diagonal)] = finish(m, 800);
+    }
+    {
+        // Stationary: a platform point at the last pose's distance from the fold; the height
+        // from the chain's depth (eq 6.7).
+        MotionMechanism m;
+        m.kind = MotionKind::stationary;
+        const double anchor = A1.x();
+        const double support = clamp(0.6 * std::abs(anchor), 5.0, 0.4 * D);
+        const double overhang = std::max(0.0, std::abs(anchor) - support) + 5;
+        const double height = clamp(h_max * t.depth, 3.0, std::max(3.0, h_max));
+        m.p = {clamp(A1.y() - 10, 0, W - 20), 20, height, support, overhang, anchor};
+        Candidate c;
+        c.mechanism = m;
+        c.why = infeasibility(m, card);
+        c.error_mm = c.why.empty() ? motion_error(m, t) : inf;
+        out[int(MotionKind::stationary)] = c;
+    }
+    return out;
+}
+
+MotionKind best_mapping(const std::array<Candidate, motion_kind_count>& c, const ChainTarget& t,
+                        double still_mm)
+{
+    Vec2 mean = Vec2::Zero();
+    for (const Vec2& a : t.target)
+        mean += a;
+    mean /= std::max<std::size_t>(1, t.target.size());
+    double spread = 0;
+    for (const Vec2& a : t.target)
+        spread = std::max(spread, (a - mean).norm());
+    if (spread <= still_mm && c[int(MotionKind::stationary)].error_mm < inf)
+        return MotionKind::stationary;
+    int best = int(MotionKind::stationary);
+    for (int k = 0; k < motion_kind_count; ++k)
+        if (c[k].error_mm < c[best].error_mm)
+            best = k;
+    return MotionKind(best);
+}
+
+} // namespace popup::motion

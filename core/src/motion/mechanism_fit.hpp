@@ -1,0 +1,44 @@
+#pragma once
+#include <array>
+#include <string>
+#include <vector>
+
+#include "motion_mechanism.hpp"
+
+namespace popup::motion {
+
+/// One chain's target as the design stages see it: fold angles θ = π s and card (x, y).
+struct ChainTarget {
+    std::string name;
+    std::vector<double> s;
+    std::vector<Vec2> target;
+    double weight = 0.0; ///< v_j
+    double depth = 0.0;  ///< D of eq 6.7 (0 deepest .. 1 nearest)
+};
+
+/// Eq 6.6: the RMS distance (mm) between the target and the mechanism's point over the samples.
+double motion_error(const MotionMechanism& m, const ChainTarget& t);
+
+/// The mechanism's point path in card (x, y) at the chain's samples.
+std::vector<Vec2> achieved_path(const MotionMechanism& m, const std::vector<double>& s);
+
+struct Candidate {
+    MotionMechanism mechanism;
+    double error_mm = 0.0; ///< eq 6.6; infinity when no feasible parameters were found
+    std::string why;       ///< why infeasible, when it is
+};
+
+/// One candidate per MotionKind (index = the enum's value): initial parameters from the key
+/// poses (closed forms at s = 0 and s = 1; for the rotation the 1-D search for the spine l of
+/// eq 6.2, for the horizontal translation the 1-D search of the runs' ratio), then a bounded
+/// Nelder–Mead polish of eq 6.6 inside the generators' ranges. The stationary candidate's
+/// platform height is h_max·D (eq 6.7).
+std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& t,
+                                                        const CardParams& card, double h_max);
+
+/// The candidate with the lowest eq 6.6 error (Table 6.1's mapping by error, thesis §6.2);
+/// a chain whose path stays within `still_mm` of its mean maps to the floating layer.
+MotionKind best_mapping(const std::array<Candidate, motion_kind_count>& candidates,
+                        const ChainTarget& t, double still_mm);
+
+} // namespace popup::motion

@@ -1,0 +1,89 @@
+#pragma once
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <vector>
+
+#include "collision_volume.hpp"
+#include "mechanism_fit.hpp"
+#include "popup/model/cancel_flag.hpp"
+
+namespace popup::motion {
+
+/// A mechanism of the design and the chains it carries (more than one once merged).
+struct Slot {
+    MotionMechanism mechanism;
+    std::vector<int> chains;
+};
+
+struct AnnealState {
+    std::vector<Slot> slots;
+};
+
+/// What the search optimises over (thesis §6.4).
+struct AnnealProblem {
+    std::vector<ChainTarget> chains;
+    std::vector<std::array<Candidate, motion_kind_count>> candidates; ///< per chain, per kind
+    CardParams card;
+    double diagonal = 1.0; ///< the character's diagonal on the card (mm): step sizes, E_m scale
+    double h_max = 25.0;   ///< the tallest floating layer (mm): H of eq 6.7 is height / h_max
+    double motion_weight = 85.0;
+    double depth_weight = 15.0;
+    double collision_weight = 1e5;
+    VolumeOptions volumes;
+    /// Chains whose target paths stay this close (RMS, as a fraction of the diagonal) move
+    /// alike and may share one mechanism (the merge move).
+    double alike_fraction = 0.05;
+    /// alike[j][k]: chains j and k move alike (filled by prepare_alike).
+    std::vector<std::vector<bool>> alike;
+};
+
+/// RMS distance (mm) between two chains' target paths, both interpolated linearly in s over the
+/// union of their samples.
+double path_distance(const ChainTarget& a, const ChainTarget& b);
+
+/// Fills problem.alike from path_distance and alike_fraction.
+void prepare_alike(AnnealProblem& problem);
+
+struct AnnealOptions {
+    long iterations = 4000;
+    std::uint64_t seed = 1;
+    /// true: only the changed mechanism's error and volume are recomputed per move, and only
+    /// its pairs tested; false: every mechanism and pair each move (the benchmark's baseline).
+    bool incremental = true;
+    const CancelFlag* cancel = nullptr;
+    std::atomic<double>* progress = nullptr; ///< raised to progress_to over the run
+    double progress_from = 0.0, progress_to = 1.0;
+};
+
+struct AnnealResult {
+    AnnealState best;
+    double cost = 0.0;      ///< eq 6.5 of best
+    double collision = 0.0; ///< Σ D_c of best (0: collision-free)
+    long iterations = 0;
+    long accepted = 0;
+};
+
+/// Eq 6.5 of one slot: Σ over its chains v_j (w_m E_m(j)/diagonal + w_d |D_j − H|).
+double slot_cost(const AnnealProblem& problem, const Slot& slot);
+
+/// Eq 6.5 and Σ D_c of a whole state (the full evaluation).
+double state_cost(const AnnealProblem& problem, const AnnealState& state);
+double state_collision(const AnnealProblem& problem, const AnnealState& state);
+
+/// Pairs of slots whose volumes overlap, with the depth (i < j).
+struct SlotCollision {
+    int a = 0, b = 0;
+    double depth = 0.0;
+};
+std::vector<SlotCollision> state_collisions(const AnnealProblem& problem, const AnnealState& state);
+
+/// Simulated annealing, Alg. 6.1: moves change a parameter 0.6, merge 0.2, translate 0.1, remap
+/// 0.1; Gaussian steps 10° for angles, diagonal/20 for lengths, diagonal/50 for positions;
+/// T = 10·t0 (t0 the mean |ΔE| of 20 trial moves from the start) × 0.8 every 200 iterations;
+/// cost eq 6.5 + eq 6.8 until a collision-free state is reached, then collisions are refused.
+/// Deterministic for the seed.
+AnnealResult anneal(const AnnealProblem& problem, const AnnealState& start,
+                    const AnnealOptions& options);
+
+} // namespace popup::motion

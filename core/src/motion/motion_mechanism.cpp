@@ -1,0 +1,498 @@
+#include "motion_mechanism.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "popup/mechanisms/floating_layer.hpp"
+#include "popup/mechanisms/horizontal_translation.hpp"
+#include "popup/mechanisms/rotation_arm.hpp"
+#include "popup/mechanisms/step_fold.hpp"
+#include "popup/mechanisms/v_box_fold.hpp"
+#include "popup/mechanisms/v_fold.hpp"
+
+namespace popup::motion {
+
+namespace {
+
+constexpr double margin = 1.0; // mm kept inside every generator range, so the build succeeds
+
+RotationArmParams rotation_params(const MotionMechanism& m)
+{
+    RotationArmParams r;
+    r.offset = m.p[0];
+    r.spine = m.p[1];
+    r.run = m.p[2];
+    r.arm = m.p[3];
+    return r;
+}
+
+VBoxFoldParams vertical_params(const MotionMechanism& m)
+{
+    VBoxFoldParams v;
+    v.offset = m.p[0];
+    v.side = m.p[1];
+    v.height = m.p[2];
+    v.wall_angle = m.p[3];
+    v.back = false;
+    return v;
+}
+
+HorizontalTranslationParams horizontal_params(const MotionMechanism& m)
+{
+    HorizontalTranslationParams h;
+    h.offset = m.p[0];
+    h.width = m.p[1];
+    h.run_ground = m.p[2];
+    h.run_backdrop = m.p[3];
+    h.reach = m.p[4];
+    return h;
+}
+
+VFoldParams diagonal_v_fold(const MotionMechanism& m)
+{
+    VFoldParams v;
+    v.offset = m.p[0];
+    v.run = m.p[1];
+    v.hinge_angle = m.p[2];
+    v.spine = m.p[3];
+    v.spine_angle = M_PI / 2; // the spine stands at 180°: the thesis's diagonal translation
+    return v;
+}
+
+StepFoldParams diagonal_step(const MotionMechanism& m)
+{
+    StepFoldParams s;
+    s.offset = m.p[4];
+    s.width = m.p[5];
+    s.run_ground = m.p[6];
+    s.run_backdrop = m.p[7];
+    return s;
+}
+
+FloatingLayerParams layer_params(const MotionMechanism& m)
+{
+    FloatingLayerParams f;
+    f.offset = m.p[0];
+    f.width = m.p[1];
+    f.height = m.p[2];
+    f.support = m.p[3];
+    f.overhang = m.p[4];
+    return f;
+}
+
+Vec2 ground_dir(double theta)
+{
+    return {std::sin(theta / 2), std::cos(theta / 2)};
+}
+Vec2 backdrop_dir(double theta)
+{
+    return {-std::sin(theta / 2), std::cos(theta / 2)};
+}
+Vec3 at(const Vec2& section, double y)
+{
+    return {section.x(), y, section.y()};
+}
+
+// Both points at distances r1, r2, r3 from p1, p2, p3 (empty when the spheres miss).
+std::vector<Vec3> trilaterate(const Vec3& p1, const Vec3& p2, const Vec3& p3, double r1, double r2,
+                              double r3)
+{
+    const double d = (p2 - p1).norm();
+    if (d <= 1e-12)
+        return {};
+    const Vec3 ex = (p2 - p1) / d;
+    const double i = ex.dot(p3 - p1);
+    Vec3 ey = p3 - p1 - i * ex;
+    const double j = ey.norm();
+    if (j <= 1e-12)
+        return {};
+    ey /= j;
+    const Vec3 ez = ex.cross(ey);
+    const double x = (r1 * r1 - r2 * r2 + d * d) / (2 * d);
+    const double y = (r1 * r1 - r3 * r3 + i * i + j * j) / (2 * j) - i * x / j;
+    const double z = std::sqrt(std::max(0.0, r1 * r1 - x * x - y * y));
+    const Vec3 base = p1 + x * ex + y * ey;
+    return {base + z * ez, base - z * ez};
+}
+
+std::string fail(const char* name, double value, const std::string& range)
+{
+    std::ostringstream s;
+    s << name << " = " << value << " must be " << range;
+    return s.str();
+}
+
+} // namespace
+
+const char* to_string(MotionKind kind)
+{
+    switch (kind) {
+    case MotionKind::vertical:
+        return "vertical";
+    case MotionKind::diagonal:
+        return "diagonal";
+    case MotionKind::horizontal:
+        return "horizontal";
+    case MotionKind::rotation:
+        return "rotation";
+    case MotionKind::stationary:
+        return "stationary";
+    }
+    return "stationary";
+}
+
+int parameter_count(MotionKind kind)
+{
+    switch (kind) {
+    case MotionKind::vertical:
+        return 4;
+    case MotionKind::diagonal:
+        return 8;
+    case MotionKind::horizontal:
+        return 5;
+    case MotionKind::rotation:
+        return 4;
+    case MotionKind::stationary:
+        return 6;
+    }
+    return 0;
+}
+
+ParameterInfo parameter_info(MotionKind kind, int i)
+{
+    using R = ParameterRole;
+    static const ParameterInfo vertical[] = {{"offset", R::position},
+                                             {"side", R::length},
+                                             {"height", R::length},
+                                             {"wall_angle", R::angle}};
+    static const ParameterInfo diagonal[] = {
+        {"offset", R::position},   {"run", R::length},         {"hinge_angle", R::angle},
+        {"spine", R::length},      {"step_offset", R::length}, {"step_width", R::length},
+        {"run_ground", R::length}, {"run_backdrop", R::length}};
+    static const ParameterInfo horizontal[] = {{"offset", R::position},
+                                               {"width", R::length},
+                                               {"run_ground", R::length},
+                                               {"run_backdrop", R::length},
+                                               {"reach", R::length}};
+    static const ParameterInfo rotation[] = {
+        {"offset", R::position}, {"spine", R::length}, {"run", R::length}, {"arm", R::length}};
+    static const ParameterInfo stationary[] = {{"offset", R::position}, {"width", R::length},
+                                               {"height", R::length},   {"support", R::length},
+                                               {"overhang", R::length}, {"anchor", R::position}};
+    switch (kind) {
+    case MotionKind::vertical:
+        return vertical[i];
+    case MotionKind::diagonal:
+        return diagonal[i];
+    case MotionKind::horizontal:
+        return horizontal[i];
+    case MotionKind::rotation:
+        return rotation[i];
+    case MotionKind::stationary:
+        return stationary[i];
+    }
+    return stationary[0];
+}
+
+Vec3 mechanism_point(const MotionMechanism& m, double theta)
+{
+    switch (m.kind) {
+    case MotionKind::rotation:
+        return rotation_arm_tip(rotation_params(m), theta);
+    case MotionKind::vertical:
+        return v_box_front_corner(vertical_params(m), theta);
+    case MotionKind::horizontal: {
+        const HorizontalTranslationParams h = horizontal_params(m);
+        return at(horizontal_translation_tip(h, theta), h.offset + h.width / 2);
+    }
+    case MotionKind::diagonal: {
+        const StepFoldParams s = diagonal_step(m);
+        const BasePatchPair wings = v_fold_wings(diagonal_v_fold(m), M_PI, theta);
+        const Vec2 nose =
+            s.run_ground * ground_dir(wings.opening) + s.run_backdrop * backdrop_dir(wings.opening);
+        return wings.to_world(nose.x(), s.offset + s.width / 2, nose.y());
+    }
+    case MotionKind::stationary: {
+        const FloatingLayerParams f = layer_params(m);
+        const double anchor = m.p[5];
+        const Vec2 along = anchor >= 0 ? ground_dir(theta) : backdrop_dir(theta);
+        return at(Vec2(0, f.height) + std::abs(anchor) * along, f.offset + f.width / 2);
+    }
+    }
+    return Vec3::Zero();
+}
+
+std::vector<Vec3> mechanism_vertices(const MotionMechanism& m, double theta)
+{
+    const double d = theta / 2;
+    const Vec2 g = ground_dir(theta), b = backdrop_dir(theta);
+    std::vector<Vec3> v;
+    switch (m.kind) {
+    case MotionKind::rotation: {
+        // O, S, R, S' and the arm's tip P (docs/MATH.md, Rotation).
+        const RotationArmParams r = rotation_params(m);
+        const double l = r.spine, w = r.run, t = 2 * std::atan2(w * std::cos(d), l);
+        v.push_back({0, r.offset, 0});
+        v.push_back({w * std::sin(d), r.offset + l, w * std::cos(d)});
+        v.push_back({-w * std::sin(d), r.offset + l, w * std::cos(d)});
+        v.push_back({0, r.offset + l * std::cos(t), l * std::sin(t)});
+        v.push_back(rotation_arm_tip(r, theta));
+        break;
+    }
+    case MotionKind::vertical: {
+        // The walls FL, FR are rectangles: their tops are the feet plus F' − F. The top's back
+        // corner is where the three top edges meet; both roots are kept (conservative).
+        const VBoxFoldParams p = vertical_params(m);
+        const double across = p.side * std::sin(p.wall_angle);
+        const double along = p.side * std::cos(p.wall_angle);
+        const Vec3 F(0, p.offset, 0);
+        const Vec3 Sg = at(across * g, p.offset + along), Sb = at(across * b, p.offset + along);
+        const Vec3 Ft = v_box_front_corner(p, theta);
+        const Vec3 lift = Ft - F;
+        v = {F, Sg, Sb, Ft, Sg + lift, Sb + lift};
+        for (const Vec3& q : trilaterate(Ft, Sg + lift, Sb + lift, 2 * along, p.side, p.side))
+            v.push_back(q);
+        break;
+    }
+    case MotionKind::horizontal: {
+        const HorizontalTranslationParams h = horizontal_params(m);
+        const Vec2 A = h.run_ground * g, D = h.run_backdrop * b, C = A + D;
+        const Vec2 P = h.reach * C / C.norm();
+        for (double y : {h.offset, h.offset + h.width})
+            for (const Vec2& q : {Vec2(0, 0), A, D, C, P})
+                v.push_back(at(q, y));
+        break;
+    }
+    case MotionKind::diagonal: {
+        const VFoldParams vf = diagonal_v_fold(m);
+        const double X = vf.run * std::sin(vf.hinge_angle), Y = vf.run * std::cos(vf.hinge_angle);
+        v.push_back({0, vf.offset, 0});
+        v.push_back({X * std::sin(d), vf.offset + Y, X * std::cos(d)});
+        v.push_back({-X * std::sin(d), vf.offset + Y, X * std::cos(d)});
+        v.push_back(v_fold_tip(vf, M_PI, theta));
+        const StepFoldParams s = diagonal_step(m);
+        const BasePatchPair wings = v_fold_wings(vf, M_PI, theta);
+        const Vec2 A = s.run_ground * ground_dir(wings.opening);
+        const Vec2 D = s.run_backdrop * backdrop_dir(wings.opening);
+        for (double y : {s.offset, s.offset + s.width})
+            for (const Vec2& q : {A, D, Vec2(A + D)})
+                v.push_back(wings.to_world(q.x(), y, q.y()));
+        break;
+    }
+    case MotionKind::stationary: {
+        // The parallel section (docs/MATH.md, Box fold / Floating layer): C on the bisector,
+        // the platform c above it along each page, the end creases g·cos(θ/2) out of each end.
+        const FloatingLayerParams f = layer_params(m);
+        const double c = f.height, s = f.support, reach = f.support + f.overhang;
+        const Vec2 top(0, c);
+        for (double y : {f.offset, f.offset + f.width})
+            for (const Vec2& q : {Vec2(0, 0), Vec2(s * g), Vec2(s * b), top, Vec2(top + s * g),
+                                  Vec2(top + s * b), Vec2(top + reach * g), Vec2(top + reach * b)})
+                v.push_back(at(q, y));
+        const double out = s * std::cos(d);
+        for (double y : {f.offset - out, f.offset + f.width + out}) {
+            v.push_back({0, y, out});
+            v.push_back({0, y, out + c});
+        }
+        break;
+    }
+    }
+    return v;
+}
+
+double mechanism_height(const MotionMechanism& m)
+{
+    switch (m.kind) {
+    case MotionKind::vertical:
+        return m.p[2];
+    case MotionKind::diagonal:
+        return m.p[4] + m.p[5] / 2; // the nose on the standing spine
+    case MotionKind::stationary:
+        return m.p[2];
+    case MotionKind::horizontal:
+    case MotionKind::rotation:
+        return 0.0; // flat on the card when open
+    }
+    return 0.0;
+}
+
+std::string infeasibility(const MotionMechanism& m, const CardParams& card)
+{
+    const double W = card.width, D = card.depth;
+    for (int i = 0; i < parameter_count(m.kind); ++i)
+        if (!std::isfinite(m.p[i]))
+            return fail(parameter_info(m.kind, i).name, m.p[i], "finite");
+    const double lo_angle = 5 * M_PI / 180, hi_angle = 85 * M_PI / 180;
+    switch (m.kind) {
+    case MotionKind::rotation: {
+        const RotationArmParams r = rotation_params(m);
+        if (!(r.spine > margin && r.spine <= W))
+            return fail("spine", r.spine, "in (1, card width]");
+        if (!(r.offset >= 0 && r.offset + r.spine <= W))
+            return fail("offset", r.offset, "in [0, card width - spine]");
+        if (!(r.run > margin && r.run < D - margin))
+            return fail("run", r.run, "in (1, card depth - 1)");
+        if (!(r.arm > margin && r.arm <= std::min(r.spine * r.spine / r.run, D) * (1 - 1e-6)))
+            return fail("arm", r.arm, "in (1, min(spine²/run, card depth)]");
+        break;
+    }
+    case MotionKind::vertical: {
+        const VBoxFoldParams p = vertical_params(m);
+        if (!(p.wall_angle > lo_angle && p.wall_angle < hi_angle))
+            return fail("wall_angle", p.wall_angle, "in (5°, 85°)");
+        const double across = p.side * std::sin(p.wall_angle);
+        const double along = p.side * std::cos(p.wall_angle);
+        if (!(p.side > margin && 2 * along >= 2 * margin && across < D - margin))
+            return fail("side", p.side, "> 1 mm, its reach inside the page");
+        if (!(p.offset >= 0 && p.offset + 2 * along <= W))
+            return fail("offset", p.offset, "in [0, card width - 2·side·cos(wall_angle)]");
+        if (!(p.height > margin && p.height < D))
+            return fail("height", p.height, "in (1, card depth)");
+        break;
+    }
+    case MotionKind::horizontal: {
+        const HorizontalTranslationParams h = horizontal_params(m);
+        if (!(h.width >= 12 && h.offset >= 0 && h.offset + h.width <= W))
+            return fail("width", h.width, ">= 12 mm (two slit bridges) and on the card");
+        if (!(h.run_ground > margin && h.run_ground < D - margin))
+            return fail("run_ground", h.run_ground, "in (1, card depth - 1)");
+        if (!(h.run_backdrop > margin && h.run_backdrop < h.run_ground - margin))
+            return fail("run_backdrop", h.run_backdrop, "in (1, run_ground - 1)");
+        if (!(h.reach > h.run_ground - h.run_backdrop + margin && h.reach <= D - margin))
+            return fail("reach", h.reach, "in (run_ground - run_backdrop + 1, card depth - 1]");
+        break;
+    }
+    case MotionKind::diagonal: {
+        const VFoldParams v = diagonal_v_fold(m);
+        const StepFoldParams s = diagonal_step(m);
+        if (!(v.hinge_angle > lo_angle && v.hinge_angle < hi_angle))
+            return fail("hinge_angle", v.hinge_angle, "in (5°, 85°)");
+        if (!(v.run > margin && v.run * std::sin(v.hinge_angle) < D - margin))
+            return fail("run", v.run, "> 1 mm, its reach inside the page");
+        if (!(v.offset >= 0 && v.offset + v.run * std::cos(v.hinge_angle) <= W))
+            return fail("offset", v.offset, "in [0, card width - run·cos(hinge_angle)]");
+        if (!(v.spine > 4 * margin && v.spine <= std::max(W, D)))
+            return fail("spine", v.spine, "in (4, the card's largest extent]");
+        if (!(s.offset >= margin && s.width >= margin && s.offset + s.width <= v.spine - margin))
+            return fail("step_offset", s.offset, "with step_width inside the spine");
+        // The wings are right triangles at 180° (spine standing, O-A flat): at height z the
+        // wing reaches run·(1 − z/spine) from the spine; the step's creases must stay on it.
+        const double room = v.run * (1 - (s.offset + s.width) / v.spine) - margin;
+        if (!(s.run_ground > margin && s.run_ground < room))
+            return fail("run_ground", s.run_ground, "inside the v-fold's wing");
+        if (!(s.run_backdrop > margin && s.run_backdrop < room))
+            return fail("run_backdrop", s.run_backdrop, "inside the v-fold's wing");
+        break;
+    }
+    case MotionKind::stationary: {
+        const FloatingLayerParams f = layer_params(m);
+        if (!(f.width >= 2 * margin && f.offset >= 0 && f.offset + f.width <= W))
+            return fail("width", f.width, ">= 2 mm and on the card");
+        if (!(f.support > margin && f.support < D - margin))
+            return fail("support", f.support, "in (1, card depth - 1)");
+        if (!(f.height > margin && f.height <= 2000))
+            return fail("height", f.height, "in (1, 2000]");
+        if (!(f.overhang >= 0))
+            return fail("overhang", f.overhang, ">= 0");
+        if (!(std::abs(m.p[5]) <= f.support + f.overhang))
+            return fail("anchor", m.p[5], "on the platform (|anchor| <= support + overhang)");
+        break;
+    }
+    }
+    // Closed (θ = 0) every part must lie inside the card: along the fold within its width, and
+    // no higher than the pages (z along the closed pages).
+    for (const Vec3& q : mechanism_vertices(m, 0.0))
+        if (q.y() < -1e-9 || q.y() > W + 1e-9 || q.z() > D - margin)
+            return "a part sticks out of the closed card";
+    return {};
+}
+
+Result<std::vector<MechanismParts>> build_mechanism(Scaffold& scaffold, const BasePatchPair& host,
+                                                    const MotionMechanism& m,
+                                                    const std::string& name,
+                                                    std::vector<FittedMechanism>& rows)
+{
+    Result<std::vector<MechanismParts>> out;
+    auto take = [&](Result<MechanismParts> r, FittedMechanism row) {
+        out.diagnostics.insert(out.diagnostics.end(), r.diagnostics.begin(), r.diagnostics.end());
+        if (!r.ok) {
+            out.ok = false;
+            return false;
+        }
+        out.value.push_back(r.value);
+        rows.push_back(std::move(row));
+        return true;
+    };
+    FittedMechanism row;
+    row.name = name;
+    row.host = "central fold";
+    switch (m.kind) {
+    case MotionKind::rotation: {
+        const RotationArmParams r = rotation_params(m);
+        row.type = "rotation_arm";
+        row.parameters = {{"offset", r.offset}, {"spine", r.spine}, {"run", r.run}, {"arm", r.arm}};
+        take(add_rotation_arm(scaffold, host, r, name), row);
+        break;
+    }
+    case MotionKind::vertical: {
+        const VBoxFoldParams v = vertical_params(m);
+        row.type = "vertical_translation";
+        row.parameters = {{"offset", v.offset},
+                          {"side", v.side},
+                          {"height", v.height},
+                          {"wall_angle", v.wall_angle},
+                          {"back", 0.0}};
+        take(add_vertical_translation(scaffold, host, v, name), row);
+        break;
+    }
+    case MotionKind::horizontal: {
+        const HorizontalTranslationParams h = horizontal_params(m);
+        row.type = "horizontal_translation";
+        row.parameters = {{"offset", h.offset},
+                          {"width", h.width},
+                          {"run_ground", h.run_ground},
+                          {"run_backdrop", h.run_backdrop},
+                          {"reach", h.reach}};
+        take(add_horizontal_translation(scaffold, host, h, name), row);
+        break;
+    }
+    case MotionKind::diagonal: {
+        const VFoldParams v = diagonal_v_fold(m);
+        row.type = "v_fold";
+        row.parameters = {{"offset", v.offset},
+                          {"run", v.run},
+                          {"hinge_angle", v.hinge_angle},
+                          {"spine", v.spine},
+                          {"spine_angle", v.spine_angle}};
+        if (!take(add_v_fold(scaffold, host, v, name), row))
+            break;
+        const BasePatchPair wings = out.value.back().offered.at(0);
+        const StepFoldParams s = diagonal_step(m);
+        FittedMechanism step;
+        step.type = "step_fold";
+        step.name = name + "_step";
+        step.host = wings.name;
+        step.parameters = {{"offset", s.offset},
+                           {"width", s.width},
+                           {"run_ground", s.run_ground},
+                           {"run_backdrop", s.run_backdrop}};
+        take(add_step_fold(scaffold, wings, s, step.name), step);
+        break;
+    }
+    case MotionKind::stationary: {
+        const FloatingLayerParams f = layer_params(m);
+        row.type = "floating_layer";
+        row.parameters = {{"offset", f.offset},
+                          {"width", f.width},
+                          {"height", f.height},
+                          {"support", f.support},
+                          {"overhang", f.overhang}};
+        take(add_floating_layer(scaffold, host, f, name), row);
+        break;
+    }
+    }
+    return out;
+}
+
+} // namespace popup::motion

@@ -1,0 +1,71 @@
+#pragma once
+#include <array>
+#include <string>
+#include <vector>
+
+#include "popup/fitting/fit_design.hpp"
+#include "popup/mechanisms/mechanism.hpp"
+#include "popup/model/card.hpp"
+
+namespace popup::motion {
+
+/// The mappings of thesis Table 6.1, plus the floating layer for a chain that does not move.
+enum class MotionKind { vertical, diagonal, horizontal, rotation, stationary };
+constexpr int motion_kind_count = 5;
+const char* to_string(MotionKind kind); ///< "vertical", ..., "stationary" (ChainReport::mapping)
+
+/// How the annealing steps a parameter (thesis §6.4.3): angles by 10°, lengths by 1/20 of the
+/// character's diagonal, positions (the anchor along the fold and across it) by 1/50.
+enum class ParameterRole { angle, length, position };
+
+struct ParameterInfo {
+    const char* name; ///< the library's params-struct field
+    ParameterRole role;
+};
+
+constexpr int max_parameters = 8;
+
+/// One motion mechanism on the card's central fold, its parameters in a flat array so the
+/// annealing can step any of them. Layouts (the library's params fields, mm and radians):
+/// - vertical   (add_vertical_translation): offset, side, height, wall_angle
+/// - diagonal   (add_v_fold, spine standing, + add_step_fold on its wings): offset, run,
+///               hinge_angle, spine, step_offset, step_width, run_ground, run_backdrop
+/// - horizontal (add_horizontal_translation): offset, width, run_ground, run_backdrop, reach
+/// - rotation   (add_rotation_arm): offset, spine, run, arm
+/// - stationary (add_floating_layer): offset, width, height, support, overhang, anchor (the
+///               platform point, across the fold, that carries the part)
+struct MotionMechanism {
+    MotionKind kind = MotionKind::stationary;
+    std::array<double, max_parameters> p{};
+};
+
+int parameter_count(MotionKind kind);
+ParameterInfo parameter_info(MotionKind kind, int index);
+
+/// The mechanism's moving point (the end effector it carries) in the card frame when the card
+/// is open at theta: the rotation arm's tip, the v-box's front top corner, the extruding patch's
+/// far edge (middle), the step's nose on the v-fold's wings (middle), a platform point. Closed
+/// forms of the library (rotation_arm_tip, v_box_front_corner, horizontal_translation_tip,
+/// v_fold_wings + step_nose); its (x, y) is what the viewer sees (thesis §6: the projection on
+/// the card plane).
+Vec3 mechanism_point(const MotionMechanism& m, double theta);
+
+/// Every patch vertex of the mechanism at theta, in closed form (for its collision volume).
+std::vector<Vec3> mechanism_vertices(const MotionMechanism& m, double theta);
+
+/// Height of the mechanism's carrying patch above the card at 180° (mm): H of eq 6.7.
+double mechanism_height(const MotionMechanism& m);
+
+/// Empty when the generators accept the parameters on `card`; otherwise why not (the first
+/// failed range). Mirrors the add_* checks, with a margin so the simulator's build succeeds.
+std::string infeasibility(const MotionMechanism& m, const CardParams& card);
+
+/// Builds the mechanism on the card's central fold with the library's generators; appends its
+/// FittedMechanism rows (host before what it carries). Names: `name` (and `name`_step for the
+/// diagonal's step fold).
+Result<std::vector<MechanismParts>> build_mechanism(Scaffold& scaffold, const BasePatchPair& host,
+                                                    const MotionMechanism& m,
+                                                    const std::string& name,
+                                                    std::vector<FittedMechanism>& rows);
+
+} // namespace popup::motion

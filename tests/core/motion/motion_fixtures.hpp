@@ -1,0 +1,33 @@
+#pragma once
+#include <cmath>
+
+#include "motion/motion_mechanism.hpp"
+
+namespace popup::motion::testing {
+
+/// One feasible mechanism of each kind on an A4 card (210 × 148 mm), parameters chosen by hand.
+inline MotionMechanism sample_mechanism(MotionKind kind)
+{
+    MotionMechanism m;
+    m.kind = kind;
+    switch (kind) {
+    case MotionKind::rotation:
+        m.p = {60, 40, 30, 25};
+        break;
+    case MotionKind::vertical:
+        m.p = {80, 20, 30, 40 * M_PI / 180};
+        break;
+    case MotionKind::horizontal:
+        m.p = {50, 30, 40, 15, 60};
+        break;
+    case MotionKind::diagonal:
+        m.p = {70, 60, 50 * M_PI / 180, 50, 10, 10, 12, 8};
+        break;
+    case MotionKind::stationary:
+        m.p = {40, 30, 20, 15, 10, 18};
+        break;
+    }
+    return m;
+}
+
+} // namespace popup::motion::testing

@@ -1,0 +1,104 @@
+// Synthetic targets made from the library's closed forms with known parameters: the mapping
+// recovers the type and the parameters within 1 % of the card size, with an error near zero.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "motion/mechanism_fit.hpp"
+#include "motion_fixtures.hpp"
+#include "popup/mechanisms/rotation_arm.hpp"
+
+namespace popup::motion {
+namespace {
+
+ChainTarget target_of(const MotionMechanism& m)
+{
+    ChainTarget t;
+    t.name = to_string(m.kind);
+    t.weight = 1;
+    for (int k = 0; k <= 40; ++k) {
+        const double s = k / 40.0;
+        t.s.push_back(s);
+        t.target.push_back(mechanism_point(m, M_PI * s).head<2>());
+    }
+    return t;
+}
+
+CardParams a4()
+{
+    CardParams c;
+    c.width = 210;
+    c.depth = 148;
+    return c;
+}
+
+TEST(MechanismFit, MotionErrorOfAKnownOffsetIsThatOffset)
+{
+    // Eq 6.6 by hand: a target shifted by (3, 4) mm everywhere is 5 mm off at every sample.
+    const MotionMechanism m = testing::sample_mechanism(MotionKind::rotation);
+    ChainTarget t = target_of(m);
+    for (Vec2& a : t.target)
+        a += Vec2(3, 4);
+    EXPECT_NEAR(motion_error(m, t), 5.0, 1e-12);
+}
+
+TEST(MechanismFit, RecoversTypeAndParametersOfClosedFormPaths)
+{
+    const double tolerance = 0.01 * 210; // 1 % of the card size
+    for (MotionKind kind : {MotionKind::rotation, MotionKind::vertical, MotionKind::horizontal}) {
+        const MotionMechanism truth = testing::sample_mechanism(kind);
+        const ChainTarget t = target_of(truth);
+        const auto candidates = fit_candidates(t, a4(), 25);
+        const MotionKind mapped = best_mapping(candidates, t, 2.0);
+        EXPECT_EQ(mapped, kind) << to_string(kind);
+        const Candidate& c = candidates[int(kind)];
+        EXPECT_LT(c.error_mm, 0.05) << to_string(kind);
+        // The point path pins these parameters down (the rest only shape the paper).
+        std::vector<int> pinned;
+        if (kind == MotionKind::rotation)
+            pinned = {0, 1, 2, 3}; // offset, spine, run, arm: P_x gives h, P_y the rest
+        if (kind == MotionKind::vertical)
+            pinned = {0, 2, 3}; // offset, height, wall angle (side only sizes the walls)
+        if (kind == MotionKind::horizontal)
+            pinned = {4}; // reach; the runs only through their ratio
+        for (int i : pinned) {
+            const double scale = parameter_info(kind, i).role == ParameterRole::angle ? 100 : 1;
+            EXPECT_NEAR(c.mechanism.p[i] * scale, truth.p[i] * scale, tolerance)
+                << to_string(kind) << " " << parameter_info(kind, i).name;
+        }
+    }
+}
+
+TEST(MechanismFit, HorizontalRunsRatioIsRecovered)
+{
+    const MotionMechanism truth = testing::sample_mechanism(MotionKind::horizontal);
+    const auto candidates = fit_candidates(target_of(truth), a4(), 25);
+    const MotionMechanism& m = candidates[int(MotionKind::horizontal)].mechanism;
+    EXPECT_NEAR(m.p[3] / m.p[2], truth.p[3] / truth.p[2], 0.01);
+}
+
+TEST(MechanismFit, DiagonalPathIsMappedToTheDiagonalTranslation)
+{
+    const MotionMechanism truth = testing::sample_mechanism(MotionKind::diagonal);
+    const ChainTarget t = target_of(truth);
+    const auto candidates = fit_candidates(t, a4(), 25);
+    EXPECT_EQ(best_mapping(candidates, t, 2.0), MotionKind::diagonal);
+    EXPECT_LT(candidates[int(MotionKind::diagonal)].error_mm, 0.01 * 210);
+}
+
+TEST(MechanismFit, StillChainGoesOnAFloatingLayerAtItsDepth)
+{
+    ChainTarget t;
+    t.weight = 1;
+    t.depth = 0.6;
+    for (int k = 0; k <= 10; ++k) {
+        t.s.push_back(k / 10.0);
+        t.target.push_back(Vec2(30, 100));
+    }
+    const auto candidates = fit_candidates(t, a4(), 25);
+    EXPECT_EQ(best_mapping(candidates, t, 2.0), MotionKind::stationary);
+    EXPECT_NEAR(mechanism_height(candidates[int(MotionKind::stationary)].mechanism), 15.0, 1e-9);
+}
+
+} // namespace
+} // namespace popup::motion

@@ -1,0 +1,135 @@
+// Each motion mechanism's closed-form point path and collision volume against the simulator
+// (simulate_fold of the scaffold the library's generators build), which shares no code with the
+// closed forms.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "motion/collision_volume.hpp"
+#include "motion_fixtures.hpp"
+#include "popup/model/card.hpp"
+#include "popup/simulation/check_validity.hpp"
+#include "popup/simulation/simulate_fold.hpp"
+
+namespace popup::motion {
+namespace {
+
+using testing::sample_mechanism;
+
+struct Built {
+    Scaffold scaffold;
+    std::vector<int> patches;
+};
+
+Built build(const MotionMechanism& m)
+{
+    CardParams card;
+    card.width = 210;
+    card.depth = 148;
+    Built b;
+    b.scaffold = make_card(card).value;
+    std::vector<FittedMechanism> rows;
+    auto parts = build_mechanism(b.scaffold, central_fold(b.scaffold), m, "M", rows);
+    EXPECT_TRUE(parts.ok) << (parts.diagnostics.empty() ? "" : parts.diagnostics[0].message);
+    for (const MechanismParts& part : parts.value)
+        b.patches.insert(b.patches.end(), part.patches.begin(), part.patches.end());
+    return b;
+}
+
+constexpr MotionKind all_kinds[] = {MotionKind::vertical, MotionKind::diagonal,
+                                    MotionKind::horizontal, MotionKind::rotation,
+                                    MotionKind::stationary};
+
+TEST(MotionMechanism, SampleParametersAreFeasibleAndTheDesignIsValid)
+{
+    CardParams card;
+    card.depth = 148;
+    for (MotionKind kind : all_kinds) {
+        const MotionMechanism m = sample_mechanism(kind);
+        EXPECT_EQ(infeasibility(m, card), "") << to_string(kind);
+        const Built b = build(m);
+        const ValidityReport report = check_validity(b.scaffold);
+        EXPECT_TRUE(report.valid()) << to_string(kind);
+    }
+}
+
+TEST(MotionMechanism, PointPathEqualsTheSimulatorsOverTheFold)
+{
+    std::vector<double> angles;
+    for (int k = 0; k <= 36; ++k)
+        angles.push_back(M_PI * k / 36);
+    for (MotionKind kind : all_kinds) {
+        const MotionMechanism m = sample_mechanism(kind);
+        const Built b = build(m);
+        // The carried point at the design state lies on one of the mechanism's patches (the
+        // first one built: the rotation arm's tip also touches the other wing's edge at 180°);
+        // the simulator's pose of that patch carries it.
+        const Vec3 design = mechanism_point(m, M_PI);
+        int carrier = -1;
+        for (int id : b.patches) {
+            const Patch* patch = b.scaffold.find_patch(id);
+            if (carrier < 0 && patch->contains(design, 1e-9))
+                carrier = id;
+        }
+        ASSERT_GE(carrier, 0) << to_string(kind);
+        const Result<FoldSweep> sweep = simulate_fold(b.scaffold, angles);
+        ASSERT_TRUE(sweep.ok && sweep.value.complete) << to_string(kind);
+        const int index = b.scaffold.patch_index(carrier);
+        double worst = 0;
+        for (const FoldState& state : sweep.value.states) {
+            const Vec3 simulated = state.poses[index].apply(design);
+            const Vec3 closed = mechanism_point(m, state.angle);
+            worst = std::max(worst, (simulated.head<2>() - closed.head<2>()).norm());
+        }
+        EXPECT_LT(worst, 1e-6) << to_string(kind) << ": card (x, y) differs by " << worst << " mm";
+    }
+}
+
+TEST(MotionMechanism, CollisionVolumeHoldsEverySimulatedVertexOver91Angles)
+{
+    std::vector<double> angles;
+    for (int k = 0; k <= 90; ++k)
+        angles.push_back(M_PI * k / 90);
+    const VolumeOptions options;
+    for (MotionKind kind : all_kinds) {
+        const MotionMechanism m = sample_mechanism(kind);
+        const CollisionVolume volume = collision_volume(m, options);
+        ASSERT_EQ(int(volume.bands.size()), options.bands);
+        const Built b = build(m);
+        const Result<FoldSweep> sweep = simulate_fold(b.scaffold, angles);
+        ASSERT_TRUE(sweep.ok && sweep.value.complete);
+        int outside = 0, checked = 0;
+        for (const FoldState& state : sweep.value.states) {
+            const int band = std::min(options.bands - 1, int(state.angle / (M_PI / options.bands)));
+            const OrientedBox& box = volume.bands[band];
+            for (int id : b.patches) {
+                const Patch* patch = b.scaffold.find_patch(id);
+                for (const Vec3& x :
+                     posed_outline(*patch, state.poses[b.scaffold.patch_index(id)])) {
+                    const Vec3 local = box.axes.transpose() * (x - box.centre);
+                    ++checked;
+                    if ((local.cwiseAbs() - box.half).maxCoeff() > 1e-9)
+                        ++outside;
+                }
+            }
+        }
+        EXPECT_GT(checked, 91 * 3);
+        EXPECT_EQ(outside, 0) << to_string(kind);
+    }
+}
+
+TEST(MotionMechanism, InfeasibleParametersAreNamed)
+{
+    CardParams card;
+    card.depth = 148;
+    MotionMechanism m = sample_mechanism(MotionKind::rotation);
+    m.p[3] = 100; // arm far beyond spine²/run = 53 mm
+    const std::string why = infeasibility(m, card);
+    EXPECT_NE(why.find("arm = 100"), std::string::npos) << why;
+    m = sample_mechanism(MotionKind::horizontal);
+    m.p[3] = 45; // run_backdrop above run_ground
+    EXPECT_NE(infeasibility(m, card).find("run_backdrop"), std::string::npos);
+}
+
+} // namespace
+} // namespace popup::motion
