@@ -49,6 +49,7 @@ LIFT = _mechanism(
     side=30.0,
     height=30.0,
     wall_angle=math.radians(40.0),
+    back=0.0,  # the core states the field the feature fixes (no back walls)
 )
 SLIDE = _mechanism(
     "horizontal_translation",
@@ -257,6 +258,9 @@ def test_bad_mechanisms_are_named(doc, core):
     nan = _mechanism("rotation_arm", "A2", "central fold", offset=float("nan"))
     with pytest.raises(ValueError, match="A2: parameter offset = nan, must be finite"):
         build_design(doc, _result(core, [nan]))
+    backed = _mechanism("vertical_translation", "M2", "central fold", offset=150.0, back=1.0)
+    with pytest.raises(ValueError, match="M2: parameter back = 1.0, a VerticalTranslation always"):
+        build_design(doc, _result(core, [backed]))
     twice = [SLIDE, SLIDE]
     with pytest.raises(ValueError, match="H1: two mechanisms have this name"):
         build_design(doc, _result(core, twice))
