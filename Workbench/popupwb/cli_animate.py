@@ -231,6 +231,7 @@ def _add_core_stages(stages, result, wall_s):
     """The core's own stages (MotionResult.timings), and what the call took beyond them
     (`design_other`: the worker thread, the progress polling), so the stages add up."""
     core = list(getattr(result, "timings", None) or getattr(result, "timings_s", None) or ())
+    core = [(name, seconds) for name, seconds in core if name != "total"]  # ours is the total
     stages.add(core)
     stages.add([("design_other", max(wall_s - sum(float(t) for _, t in core), 0.0))])
 
