@@ -42,7 +42,7 @@ EightChains eight_chains()
             break;
         default:
             m.kind = MotionKind::horizontal;
-            m.p = {y, 14, 30, 10, 40 + 5 * i};
+            m.p = {y, 14, 30, 10, 40.0 + 5.0 * i};
             break;
         }
         truths.push_back(m);

@@ -156,3 +156,30 @@ def test_motion_view_fields_and_bad_options(tmp_path):
     with pytest.raises(popupcore.DesignError) as error:
         popupcore.motion_targets(animation, view, popupcore.ChainOptions())
     assert "last_frame" in str(error.value)
+
+
+def test_chains_of_a_trajectory_tree_prune_by_bone_length(tmp_path):
+    # arm.root -> arm (10 long) -> {hand (5 long), finger (0.1 long)}; lengths 0, 10, 5, 0.1:
+    # mean 3.775 per bone, τp 0.09 -> 0.34: the finger is pruned, the hand continues the arm.
+    def track(x, y):
+        return [[x, y], [x, y + 1]]
+
+    document = {
+        "effectors": [
+            {"name": "arm", "root": [0, 0], "points": track(10, 0)},
+            {"name": "hand", "parent": "arm", "points": track(15, 0)},
+            {"name": "finger", "parent": "arm", "points": track(10, 0.1)},
+        ]
+    }
+    path = tmp_path / "tree.json"
+    path.write_text(json.dumps(document))
+    animation = popupcore.load_trajectories(str(path))
+    pruned = popupcore.linkage_chains(animation, popupcore.ChainOptions())
+    assert [(c.name, c.bones, c.pruned, c.weight) for c in pruned] == [
+        ("hand", [0, 1, 2], ["finger"], 1.0)
+    ]
+    options = popupcore.ChainOptions()
+    options.prune_fraction = 0.0
+    kept = popupcore.linkage_chains(animation, options)
+    assert [(c.name, c.parent_chain) for c in kept] == [("arm", -1), ("hand", 0), ("finger", 0)]
+    assert [c.weight for c in kept] == pytest.approx([10 / 15.1, 5 / 15.1, 0.1 / 15.1])

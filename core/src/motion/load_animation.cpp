@@ -8,6 +8,7 @@
 
 #include <assimp/Importer.hpp>
 #include <assimp/config.h>
+#include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
@@ -115,6 +116,17 @@ struct Read {
     Animation animation;
 };
 
+/// assimp's drawing of a skeleton (SkeletonMeshBuilder, for files without a mesh), not a mesh of
+/// the character.
+bool drawn_skeleton(const aiScene* scene, const aiMesh* mesh)
+{
+    if (mesh->mMaterialIndex >= scene->mNumMaterials)
+        return false;
+    aiString name;
+    return scene->mMaterials[mesh->mMaterialIndex]->Get(AI_MATKEY_NAME, name) == AI_SUCCESS &&
+           std::string(name.C_Str()) == "SkeletonMaterial";
+}
+
 void collect(const aiNode* node, int parent_node, std::vector<const aiNode*>& nodes,
              std::vector<int>& parents)
 {
@@ -130,9 +142,12 @@ void read_with_assimp(const std::string& path, Read& out)
     Assimp::Importer importer;
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                                 aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    const aiScene* scene =
-        importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                                    aiProcess_SortByPType | aiProcess_ValidateDataStructure);
+    // BVH has no mesh: assimp would make one that draws the skeleton.
+    importer.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);
+    // FBX: one node per bone, not helper nodes for each pivot ("$AssimpFbx$_Rotation").
+    importer.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, false);
+    const aiScene* scene = importer.ReadFile(
+        path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
     if (!scene) {
         out.why = std::string("assimp could not read it: ") + importer.GetErrorString();
         return;
@@ -266,7 +281,7 @@ void read_with_assimp(const std::string& path, Read& out)
     mesh.source = path;
     for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
         const aiMesh* part = scene->mMeshes[m];
-        if (!(part->mPrimitiveTypes & aiPrimitiveType_TRIANGLE))
+        if (!(part->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) || drawn_skeleton(scene, part))
             continue;
         Affine below_bone = Affine::Identity();
         const int host_bone =

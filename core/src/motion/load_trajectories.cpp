@@ -296,6 +296,12 @@ Result<Animation> load_trajectories(const std::string& path)
                         "trajectory file " + path + ": not JSON (" + e.what() + ")",
                         about_parameter(path));
         return result;
+    } catch (const json::out_of_range& e) { // a number beyond double: 1e999
+        result.fail(DiagnosticCode::non_finite_animation,
+                    "trajectory file " + path + ": " + e.what() +
+                        "; coordinates must be finite numbers",
+                    about_parameter(path));
+        return result;
     }
     try {
         return check_animation(animation_of(doc, path));

@@ -421,12 +421,17 @@ void prepare_alike(AnnealProblem& p)
 
 double slot_cost(const AnnealProblem& p, const Slot& slot)
 {
+    // E_d charges the mechanisms that set a height (v-box, diagonal nose, floating layer). The
+    // rotation arm and the extruding patch lie flat: the thesis stands them on a floating layer
+    // at the chain's depth, so their disparity is not charged (docs/DESIGN.md).
+    const MotionKind kind = slot.mechanism.kind;
+    const bool flat = kind == MotionKind::rotation || kind == MotionKind::horizontal;
     const double H = std::clamp(mechanism_height(slot.mechanism) / p.h_max, 0.0, 1.0);
     double e = 0;
     for (int j : slot.chains) {
         const ChainTarget& t = p.chains[j];
         e += t.weight * (p.motion_weight * motion_error(slot.mechanism, t) / p.diagonal +
-                         p.depth_weight * std::abs(t.depth - H));
+                         (flat ? 0.0 : p.depth_weight * std::abs(t.depth - H)));
     }
     return e;
 }

@@ -64,7 +64,8 @@ struct AnnealResult {
     long accepted = 0;
 };
 
-/// Eq 6.5 of one slot: Σ over its chains v_j (w_m E_m(j)/diagonal + w_d |D_j − H|).
+/// Eq 6.5 of one slot: Σ over its chains v_j (w_m E_m(j)/diagonal + w_d |D_j − H|), E_d only
+/// for mechanisms with a height (not the flat rotation arm and extruding patch).
 double slot_cost(const AnnealProblem& problem, const Slot& slot);
 
 /// Eq 6.5 and Σ D_c of a whole state (the full evaluation).

@@ -176,7 +176,11 @@ Result<MotionTargets> motion_targets(const Animation& animation, const MotionVie
     const double still = 1e-9 * std::max(1.0, targets.diagonal_mm);
     for (size_t c = 0; c < targets.chains.size(); ++c) {
         const LinkageChain& chain = targets.chains[c];
-        const int tip = chain.bones.back(), base = chain.bones.front();
+        // The chain's root is the joint it hangs from: its first bone's parent, or that bone
+        // for a chain at the skeleton's root.
+        const int tip = chain.bones.back();
+        const int first_parent = animation.bones[chain.bones.front()].parent;
+        const int base = first_parent >= 0 ? first_parent : chain.bones.front();
         ChainPath path;
         path.s = adaptive_samples(
             [&](double s) -> Vec2 {

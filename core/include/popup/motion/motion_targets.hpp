@@ -32,7 +32,9 @@ struct MotionView {
 struct ChainPath {
     std::vector<double> s;      ///< adaptive samples (thesis §6.2, [dF95]), 0 and 1 included
     std::vector<Vec2> effector; ///< card (x, y) mm of the end effector at each s
-    std::vector<Vec2> root;     ///< card (x, y) mm of the chain's first bone at each s
+    /// card (x, y) mm at each s of the joint the chain hangs from: its first bone's parent (the
+    /// branching bone), or its first bone for a chain at the skeleton's root
+    std::vector<Vec2> root;
     /// Normalised mean depth of its vertices toward the viewer at s = 1 (0 deepest .. 1 nearest),
     /// the thesis's D (eq 6.7).
     double depth = 0.0;

@@ -1,0 +1,367 @@
+"""Motion from an animation, end to end (issue 13 §4), on the project's own animations
+(tools/make_animations.py, tools/blender_rig.py; tests/data/animations/).
+
+What each check is measured against:
+- the hand-written BVH files against their known paths (NAME.json, the laws they were written
+  from; Blender's importer agrees with them to 2e-5 mm, tools/blender_check_bvh.py);
+- the synthetic rigs against the mechanism they were driven by: its type, the parameters its
+  path determines (tools/make_animations.identifiable) within 1 % of the card (2.1 mm of its
+  210 mm width) and a motion error near zero;
+- collisions against the simulator (popupcore.check_validity on the returned scaffold), not the
+  design's own verdict;
+- the skinned figure against the tip paths Blender recorded when it made it (figure.json).
+"""
+
+import json
+import math
+import os
+import sys
+
+import numpy as np
+import pytest
+
+import popupcore
+
+SOURCE = os.environ["POPUP_SOURCE_DIR"]
+DATA = os.path.join(SOURCE, "tests", "data", "animations")
+sys.path.insert(0, os.path.join(SOURCE, "tools"))
+import make_animations  # noqa: E402
+
+ONE_PERCENT = 0.01 * make_animations.CARD_WIDTH  # 2.1 mm: "within 1 % of the card size"
+NEAR_ZERO_MM = 0.5  # motion error (RMS over the samples, eq 6.6) of a path a mechanism can make
+RIGS = {
+    "rig_rotation": "rotation",
+    "rig_vertical": "vertical",
+    "rig_horizontal": "horizontal",
+    "rig_diagonal": "diagonal",
+}
+
+
+def meta(name):
+    with open(os.path.join(DATA, name + ".json"), encoding="utf-8") as f:
+        return json.load(f)
+
+
+def view_of(m):
+    view = popupcore.MotionView()
+    view.scale = m["view"]["scale"]
+    view.centre = tuple(m["view"]["centre"])
+    return view
+
+
+def options_for(name, seed=1):
+    o = popupcore.MotionOptions()
+    o.view = view_of(meta(name))
+    o.seed = seed
+    return o
+
+
+_designs = {}
+
+
+def design(name, seed=1):
+    """design_motion of a test animation, once per (name, seed) in this session."""
+    if (name, seed) not in _designs:
+        animation = popupcore.load_animation(os.path.join(DATA, name + ".bvh"))
+        _designs[(name, seed)] = popupcore.design_motion(animation, options_for(name, seed))
+    return _designs[(name, seed)]
+
+
+def chain_index(names, bone):
+    """The chain ending at `bone`: its own name, or its end site's (assimp names a BVH end site
+    EndSite_<joint>)."""
+    for i, n in enumerate(names):
+        if n in (bone, "EndSite_" + bone):
+            return i
+    raise AssertionError(f"no chain ends at {bone} (chains {names})")
+
+
+def chain_for(result, bone):
+    return result.chains[chain_index([c.name for c in result.chains], bone)]
+
+
+# ------------------------------------------------------------------ the data itself
+
+
+def test_committed_animations_are_what_the_tool_makes(tmp_path):
+    for name in make_animations.NAMES:
+        path = make_animations.write(name, str(tmp_path))
+        stems = [os.path.basename(path)]
+        if path.endswith(".bvh"):
+            stems.append(os.path.basename(path)[:-4] + ".json")
+        for stem in stems:
+            with open(tmp_path / stem, "rb") as fresh, open(os.path.join(DATA, stem), "rb") as kept:
+                assert fresh.read() == kept.read(), f"{stem}: rerun tools/make_animations.py"
+
+
+@pytest.mark.parametrize("s", np.linspace(0.0, 1.0, 19))
+def test_written_out_closed_forms_equal_the_library(s):
+    """make_animations writes the rotation, vertical and horizontal laws from docs/MATH.md; they
+    must be the library's (popupcore's closed forms are checked against the simulator)."""
+    theta = math.pi * s
+    p = make_animations.MECHANISMS["rotation"]["params"]
+    r = popupcore.RotationArmParams()
+    r.offset, r.spine, r.run, r.arm = p["offset"], p["spine"], p["run"], p["arm"]
+    assert make_animations.rotation_tip(p, [s])[0] == pytest.approx(
+        np.array(popupcore.rotation_arm_tip(r, theta))[:2], abs=1e-9
+    )
+    p = make_animations.MECHANISMS["vertical"]["params"]
+    v = popupcore.VBoxFoldParams()
+    v.offset, v.side, v.height, v.wall_angle = p["offset"], p["side"], p["height"], p["wall_angle"]
+    assert make_animations.vertical_tip(p, [s])[0] == pytest.approx(
+        np.array(popupcore.v_box_front_corner(v, theta))[:2], abs=1e-9
+    )
+    p = make_animations.MECHANISMS["horizontal"]["params"]
+    h = popupcore.HorizontalTranslationParams()
+    h.offset, h.width, h.run_ground, h.run_backdrop, h.reach = (
+        p[k] for k in ("offset", "width", "run_ground", "run_backdrop", "reach")
+    )
+    x_law = make_animations.horizontal_tip(p, [s])[0][0]
+    assert x_law == pytest.approx(popupcore.horizontal_translation_tip(h, theta)[0], abs=1e-9)
+
+
+def _build_known_mechanisms(names):
+    card = popupcore.make_card(popupcore.CardParams())
+    fold = popupcore.central_fold(card)
+
+    def params(cls, values):
+        out = cls()
+        for key, value in values.items():
+            setattr(out, key, value)
+        return out
+
+    for name in names:
+        m = make_animations.MECHANISMS[name]
+        p = m["params"]
+        if m["type"] == "rotation_arm":
+            popupcore.add_rotation_arm(card, fold, params(popupcore.RotationArmParams, p), name)
+        elif m["type"] == "vertical_translation":
+            vb = params(popupcore.VBoxFoldParams, p)
+            vb.back = False
+            popupcore.add_vertical_translation(card, fold, vb, name)
+        elif m["type"] == "horizontal_translation":
+            hp = params(popupcore.HorizontalTranslationParams, p)
+            popupcore.add_horizontal_translation(card, fold, hp, name)
+        else:
+            vf = popupcore.add_v_fold(card, fold, params(popupcore.VFoldParams, p["v_fold"]), name)
+            step = params(popupcore.StepFoldParams, p["step_fold"])
+            popupcore.add_step_fold(card, vf.offered[0], step, name + "_step")
+    return card
+
+
+def test_the_synthetic_rigs_mechanisms_make_a_valid_card_together():
+    """The answer the rigs ask for exists: all four mechanisms on one A4 card pass the simulator
+    (so rig_four can be recovered without a collision)."""
+    report = popupcore.check_validity(_build_known_mechanisms(list(make_animations.MECHANISMS)))
+    assert report.valid, [d.message for d in report.diagnostics]
+
+
+# ------------------------------------------------------------------ reading the files
+
+
+BVH_NAMES = [n for n in make_animations.ANIMATIONS]
+
+
+@pytest.mark.parametrize("name", BVH_NAMES)
+def test_bvh_end_effector_paths_are_the_known_paths(name):
+    m = meta(name)
+    animation = popupcore.load_animation(os.path.join(DATA, m["file"]))
+    assert animation.frames == m["frames"]
+    targets = popupcore.motion_targets(animation, view_of(m))
+    # scale 1 and the bounding box's centre: the file's (x, y) are the card's
+    to_card = np.asarray(targets.animation_to_card)
+    assert to_card[:2, :2] == pytest.approx(np.eye(2), abs=1e-9)
+    assert to_card[:2, 3] == pytest.approx([0.0, 0.0], abs=1e-4)  # the file has 6 decimals
+    names = [c.name for c in targets.chains]
+    for bone, entry in m["known"].items():
+        if entry["kind"] == "still":
+            continue
+        path = targets.paths[chain_index(names, bone)]
+        assert path.s[0] == 0.0 and path.s[-1] == 1.0
+        want = make_animations.known_path(entry, path.s)
+        assert np.asarray(path.effector) == pytest.approx(want, abs=0.02), f"{name}: {bone}"
+
+
+@pytest.mark.parametrize("extension", ["glb", "fbx", "bvh"])
+def test_blender_figure_reads_with_its_recorded_hand_paths(extension):
+    """The skinned figure made by tools/blender_rig.py: every format reads (skin and mesh where
+    the format has them) and the hands follow the paths Blender recorded, mapped through the
+    reported animation_to_card (glTF/FBX are y up, BVH z up; metres)."""
+    m = meta("figure")
+    f = m["files"][extension]
+    animation = popupcore.load_animation(os.path.join(DATA, f["file"]))
+    assert animation.frames == m["frames"]
+    if extension != "bvh":
+        assert animation.mesh is not None and len(animation.mesh.vertices) > 0
+    view = popupcore.MotionView()
+    view.view, view.up = tuple(f["view"]), tuple(f["up"])
+    targets = popupcore.motion_targets(animation, view)
+    to_card = np.asarray(targets.animation_to_card)
+    # Blender world (x, y, z) in the file's axes: y up files have (x, z, −y)
+    to_file = (
+        (lambda p: np.array(p)) if extension == "bvh" else (lambda p: np.array([p[0], p[2], -p[1]]))
+    )
+    names = [c.name for c in targets.chains]
+    for tip in ("Hand.R", "Hand.L"):
+        path = targets.paths[chain_index(names, tip)]
+        end = "tail" if extension == "bvh" else "head"  # a BVH end site is the bone's tail
+        recorded = np.array(m["tips_blender_world"][tip][end])
+        frames = np.array(path.s) * (m["frames"] - 1)
+        for s_frame, got in zip(frames, path.effector):
+            lo = int(math.floor(s_frame))
+            hi = min(lo + 1, m["frames"] - 1)
+            t = s_frame - lo
+            # between frames the bones turn about one axis: a small chord error only
+            world = (1 - t) * recorded[lo] + t * recorded[hi]
+            want = (to_card @ np.append(to_file(world), 1.0))[:2]
+            assert np.asarray(got) == pytest.approx(want, abs=0.01 * targets.diagonal_mm)
+
+
+# ------------------------------------------------------------------ the pipeline (§4)
+
+
+# Known failures of design_motion as merged on 2026-11-23 (strict: they fail the suite once fixed,
+# so the mark comes off). STRAIGHT: a straight path keeps only its two end points under the
+# flatness-only adaptive sampling (τangle), so E_m cannot tell a floating layer (whose platform
+# point also slides out along x in projection) from the mechanism that moves like the path.
+STRAIGHT = "straight paths are sampled at their 2 end points only (docs/MOTION_RESULTS.md)"
+KNOWN = {
+    "rig_vertical": "vertical fit: height 17.1 / wall angle 71° for 35 / 35°, E_m 1.96 mm",
+    "rig_horizontal": STRAIGHT + ": mapped to a floating layer",
+    "rig_diagonal": "the fitted diagonal fails the full simulator's check: made stationary",
+}
+
+
+@pytest.mark.parametrize(
+    "name",
+    [
+        pytest.param(n, marks=pytest.mark.xfail(strict=True, reason=KNOWN[n])) if n in KNOWN else n
+        for n in RIGS
+    ],
+)
+def test_synthetic_rig_recovers_its_mechanism(name):
+    m = meta(name)
+    ((bone, known),) = m["known"].items()
+    result = design(name)
+    assert result.valid, [d.message for d in result.diagnostics]
+    arm = chain_for(result, bone)
+    assert arm.mapping == RIGS[name]
+    assert arm.status == "animated", arm.reason
+    assert arm.error_mm < NEAR_ZERO_MM
+    # the achieved path is the known one at every sample
+    want = make_animations.known_path(known, arm.s)
+    assert np.abs(np.asarray(arm.achieved) - want).max() < ONE_PERCENT
+    ident = known["identifiable"]
+    carried = [mm for mm in result.mechanisms if mm.name in arm.mechanisms]
+    types = sorted(mm.type for mm in carried)
+    if known["type"] == "rotation_arm":
+        assert types == ["rotation_arm"]
+        p = carried[0].parameters
+        for key in ("arm", "spine", "run", "offset"):
+            assert p[key] == pytest.approx(ident[key], abs=ONE_PERCENT), key
+    elif known["type"] == "vertical_translation":
+        assert types == ["vertical_translation"]
+        p = carried[0].parameters
+        assert p["offset"] == pytest.approx(ident["offset"], abs=ONE_PERCENT)
+        travel = p["height"] * math.sin(p["wall_angle"])
+        assert travel == pytest.approx(ident["travel"], abs=ONE_PERCENT)
+    elif known["type"] == "horizontal_translation":
+        assert types == ["horizontal_translation"]
+        p = carried[0].parameters
+        assert p["reach"] == pytest.approx(ident["reach"], abs=ONE_PERCENT)
+        assert p["offset"] + 0.5 * p["width"] == pytest.approx(ident["y"], abs=ONE_PERCENT)
+    else:
+        assert types == ["step_fold", "v_fold"]
+        assert np.asarray(arm.achieved[0]) == pytest.approx(ident["closed"], abs=ONE_PERCENT)
+        assert np.asarray(arm.achieved[-1]) == pytest.approx(ident["open"], abs=ONE_PERCENT)
+
+
+@pytest.mark.xfail(strict=True, reason="the vertical, horizontal and diagonal cases above")
+def test_four_mechanisms_on_one_rig_are_all_recovered():
+    m = meta("rig_four")
+    result = design("rig_four")
+    assert result.valid, [d.message for d in result.diagnostics]
+    for bone, known in m["known"].items():
+        arm = chain_for(result, bone)
+        assert arm.mapping == known["mapping"], bone
+        assert arm.status == "animated", f"{bone}: {arm.reason}"
+        assert arm.error_mm < NEAR_ZERO_MM, bone
+    assert result.weighted_error < 0.01
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3])
+@pytest.mark.parametrize("name", ["character", "conflicting_arms", "crossing_alike", "rig_four"])
+def test_the_design_never_collides(name, seed):
+    """The simulator, not the design's own verdict: the returned scaffold is intersection-free
+    and valid over the whole sweep."""
+    result = design(name, seed)
+    report = popupcore.check_validity(result.scaffold)
+    assert report.intersection_free, [d.message for d in report.diagnostics]
+    assert report.valid == result.valid
+    assert result.valid
+
+
+@pytest.mark.xfail(strict=True, reason=STRAIGHT + ": one arm goes stationary, not merged")
+def test_two_crossing_arms_that_move_alike_are_merged():
+    result = design("crossing_alike")
+    arms = [chain_for(result, bone) for bone in ("LeftArmFore", "RightArmFore")]
+    statuses = sorted(c.status for c in arms)
+    assert "stationary" not in statuses, [(c.name, c.reason) for c in arms]
+    assert "merged" in statuses, [(c.name, c.status, c.reason) for c in arms]
+    merged = [c for c in arms if c.status == "merged"][0]
+    other = [c for c in arms if c is not merged][0]
+    assert merged.reason, "a merged chain says why"
+    # merged onto one patch: they share the carrying mechanism
+    assert set(merged.mechanisms) & set(other.mechanisms)
+    # both hands still rise the 40 mm they rise in the file
+    for c in arms:
+        travel = np.asarray(c.achieved[-1]) - np.asarray(c.achieved[0])
+        assert travel[1] == pytest.approx(40.0, abs=4 * ONE_PERCENT)
+
+
+def test_two_conflicting_arms_leave_one_stationary_and_say_why():
+    result = design("conflicting_arms")
+    arms = [chain_for(result, bone) for bone in ("LeftArmFore", "RightArmFore")]
+    still = [c for c in arms if c.status == "stationary"]
+    moving = [c for c in arms if c.status == "animated"]
+    assert len(still) == 1 and len(moving) == 1, [(c.name, c.status, c.reason) for c in arms]
+    assert still[0].reason, "the report says why"
+    assert still[0].mapping == "stationary"
+    assert result.valid
+
+
+def test_the_same_seed_gives_the_same_design():
+    def snapshot(result):
+        return (
+            [(m.type, m.name, m.host, sorted(m.parameters.items())) for m in result.mechanisms],
+            [(c.name, c.mapping, c.status, c.error) for c in result.chains],
+            result.weighted_error,
+            result.cost,
+        )
+
+    first = design("character", seed=7)
+    animation = popupcore.load_animation(os.path.join(DATA, "character.bvh"))
+    again = popupcore.design_motion(animation, options_for("character", seed=7))
+    assert snapshot(first) == snapshot(again)
+
+
+def test_trajectory_json_example_reads_with_its_points():
+    """tests/data/animations/trajectories.json (docs/ANIMATION_INPUT.md's format): each effector's
+    bone is at its listed point at every frame, the head hanging from the hip."""
+    path = os.path.join(DATA, "trajectories.json")
+    with open(path, encoding="utf-8") as f:
+        doc = json.load(f)
+    animation = popupcore.load_trajectories(path)
+    frames = len(doc["effectors"][0]["points"])
+    assert animation.frames == frames
+    assert np.asarray(animation.frame_times_s) == pytest.approx(np.arange(frames) / 30.0)
+    names = [name for name, _ in animation.bones]
+    parents = dict(animation.bones)
+    assert names[parents["head"]] == "hip"
+    for frame in (0, frames // 2, frames - 1):
+        pose = popupcore.forward_kinematics(animation, frame)
+        for effector in doc["effectors"]:
+            point = np.zeros(3)
+            point[: len(effector["points"][frame])] = effector["points"][frame]
+            got = np.asarray(pose[names.index(effector["name"])])[:3, 3]
+            assert got == pytest.approx(point, abs=1e-9), (effector["name"], frame)

@@ -1,0 +1,185 @@
+#!/usr/bin/python3
+"""The quality table of issue 13 §5: popupcore.design_motion on every project animation, the
+weighted motion error next to the thesis's Table 8.2, written to docs/MOTION_RESULTS.md.
+
+    PYTHONPATH=build/python /usr/bin/python3 tools/motion_results.py [--out docs/MOTION_RESULTS.md]
+        [--seed 1] [--iterations N]
+
+Animations: tests/data/animations/*.bvh with the view stored beside each (tools/
+make_animations.py: scale 1, the file is in card mm), the Blender figure in its three formats
+and the demo's waving figure (resources/samples) with the default fit to the card. Every chain of
+these moves in one plane (the card's), the case where the issue's goal is a weighted error under
+0.03 of the character's diagonal.
+"""
+
+import argparse
+import json
+import os
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SOURCE = os.path.dirname(HERE)
+DATA = os.path.join(SOURCE, "tests", "data", "animations")
+SAMPLES = os.path.join(SOURCE, "resources", "samples")
+
+# Thesis Table 8.2: weighted motion error of its four characters.
+THESIS = [("girl", 0.039), ("pony", 0.033), ("frog", 0.113), ("boy", 0.222)]
+GOAL = 0.03
+
+
+def cases():
+    """(label, path, MotionView settings) of every animation measured."""
+    sys.path.insert(0, HERE)
+    import make_animations
+
+    out = []
+    for name in make_animations.ANIMATIONS:
+        with open(os.path.join(DATA, name + ".json"), encoding="utf-8") as f:
+            meta = json.load(f)
+        out.append(
+            (
+                name,
+                os.path.join(DATA, meta["file"]),
+                {"scale": meta["view"]["scale"], "centre": tuple(meta["view"]["centre"])},
+            )
+        )
+    for folder, stem in ((DATA, "figure"), (SAMPLES, "waving_figure")):
+        with open(os.path.join(folder, stem + ".json"), encoding="utf-8") as f:
+            meta = json.load(f)
+        for ext, entry in sorted(meta["files"].items()):
+            out.append(
+                (
+                    f"{stem}.{ext}",
+                    os.path.join(folder, entry["file"]),
+                    {"view": tuple(entry["view"]), "up": tuple(entry["up"])},
+                )
+            )
+    return out
+
+
+def measure(path, settings, seed, iterations):
+    import popupcore
+
+    options = popupcore.MotionOptions()
+    view = popupcore.MotionView()
+    for key, value in settings.items():
+        setattr(view, key, value)
+    options.view = view
+    options.seed = seed
+    if iterations:
+        options.iterations = iterations
+    start = time.perf_counter()
+    animation = popupcore.load_animation(path)
+    result = popupcore.design_motion(animation, options)
+    seconds = time.perf_counter() - start
+    return result, seconds
+
+
+def row(label, result, seconds):
+    mappings = {}
+    for c in result.chains:
+        key = c.mapping if c.status != "merged" else "merged"
+        mappings[key] = mappings.get(key, 0) + 1
+    mapped = ", ".join(f"{k} {v}" for k, v in sorted(mappings.items()))
+    stationary = [
+        f"{c.name} ({c.reason})" for c in result.chains if c.status == "stationary" and c.reason
+    ]
+    return {
+        "label": label,
+        "chains": len(result.chains),
+        "mappings": mapped,
+        "weighted_error": result.weighted_error,
+        "valid": result.valid,
+        "seconds": seconds,
+        "mechanisms": len(result.mechanisms),
+        "samples": min(len(c.s) for c in result.chains),
+        "notes": "; ".join(stationary),
+    }
+
+
+def markdown(rows, seed, iterations):
+    lines = [
+        "# Motion results (issue 13 §5)",
+        "",
+        "Made by `tools/motion_results.py` (seed %d, %s iterations per search chain): "
+        "`popupcore.design_motion` on every animation the project makes "
+        "(`tools/make_animations.py`, `tools/blender_rig.py`), the weighted motion error "
+        "Σ v_j E_m(j) / diagonal (eq 6.5–6.6, E_m the RMS distance between the target and the "
+        "mechanism's path over the adaptive samples, divided by the character's projected "
+        "bounding-box diagonal) next to the thesis's Table 8.2. Every chain of these animations "
+        "moves in the card's plane: the goal is a weighted error under %.2f."
+        % (seed, iterations or "the default", GOAL),
+        "",
+        "| animation | chains | mappings | mechanisms | fewest samples | weighted error "
+        "| goal < 0.03 | valid | time (s) |",
+        "|---|---|---|---|---|---|---|---|---|",
+    ]
+    for r in rows:
+        lines.append(
+            f"| {r['label']} | {r['chains']} | {r['mappings']} | {r['mechanisms']} | {r['samples']} | "
+            f"{r['weighted_error']:.4f} | {'yes' if r['weighted_error'] < GOAL else 'NO'} | "
+            f"{'yes' if r['valid'] else 'NO'} | {r['seconds']:.2f} |"
+        )
+    lines += [
+        "",
+        "Thesis Table 8.2 (weighted motion error, its own characters):",
+        "",
+        "| character | weighted error |",
+        "|---|---|",
+    ]
+    lines += [f"| {name} | {value:.3f} |" for name, value in THESIS]
+    notes = [f"- {r['label']}: stationary {r['notes']}" for r in rows if r["notes"]]
+    if notes:
+        lines += ["", "Chains made stationary, with the report's reason:", ""] + notes
+    lines += [
+        "",
+        "Reading the table: E_m is measured at the adaptive samples of each path (thesis §6.2, "
+        "flatness τangle = 2°). A straight path is flat, so it keeps only its two end points "
+        '("fewest samples" 2): its error then says only that the mechanism starts and ends in '
+        "the right places, not how it moves between (line_vertical, line_horizontal and "
+        "rig_horizontal score 0 that way, whatever their mapping). The rigs' known paths "
+        "(tests/python/test_motion_pipeline.py) are the stricter check.",
+    ]
+    lines += [
+        "",
+        "Times above are one run each on a shared machine, loading included. The pipeline's speed "
+        "goal (<= 1 s at <= 16 mechanisms) is BM_DesignMotion in bench/design_motion_bench.cpp "
+        "(`make bench`), on generated characters of 4, 8 and 16 arms.",
+    ]
+    failing = [r["label"] for r in rows if r["weighted_error"] >= GOAL]
+    lines += [
+        "",
+        "Goal met on %d of %d animations%s."
+        % (
+            len(rows) - len(failing),
+            len(rows),
+            "" if not failing else "; not on " + ", ".join(failing),
+        ),
+    ]
+    return "\n".join(lines) + "\n"
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--out", default=os.path.join(SOURCE, "docs", "MOTION_RESULTS.md"))
+    parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--iterations", type=int, default=0)
+    args = parser.parse_args(argv)
+    rows = []
+    for label, path, settings in cases():
+        result, seconds = measure(path, settings, args.seed, args.iterations)
+        rows.append(row(label, result, seconds))
+        r = rows[-1]
+        print(
+            f"{label}: weighted error {r['weighted_error']:.4f}, valid {r['valid']}, "
+            f"{r['mappings']}, {r['seconds']:.2f} s",
+            flush=True,
+        )
+    with open(args.out, "w", encoding="utf-8") as f:
+        f.write(markdown(rows, args.seed, args.iterations))
+    print("wrote", args.out)
+
+
+if __name__ == "__main__":
+    main()
