@@ -10,7 +10,7 @@ report.json, preview.png and the cutting sheets in fit/sheets/ (as `popup sheet`
 (2) `popup verify fit/design.FCStd fit/sheets` proves the cutting file against the design. The
 house was made by tools/make_models.py (see resources/samples/README.md).
 
-Then motion from an animation (issue 13): (3) `popup animate resources/samples/character.bvh
+Then motion from an animation (issue 13): (3) `popup animate resources/samples/waving_figure.glb
 --out out/demo/animate` writes design.FCStd (a PopUpCard with motion mechanisms linked to the
 animation), report.json, paths.png, motion.gif and animate/sheets/; (4) `popup verify` proves
 those sheets. The animation was made by tools/make_animations.py.
@@ -43,7 +43,7 @@ PYTHON = "/usr/bin/python3"
 FREECAD_LIB = "/usr/lib/freecad-python3/lib"
 DEMO_DESIGN = os.path.join(REPO, "resources", "samples", "demo_card.json")
 DEMO_MODEL = os.path.join(REPO, "resources", "samples", "house.stl")
-DEMO_ANIMATION = os.path.join(REPO, "resources", "samples", "character.bvh")
+DEMO_ANIMATION = os.path.join(REPO, "resources", "samples", "waving_figure.glb")
 FIT_TIMEOUT = 300  # seconds
 ANIMATE_TIMEOUT = 600  # seconds
 FOLD_ANGLES = (180.0, 90.0, 30.0)
@@ -508,7 +508,7 @@ def main(argv=None):
         "--animation",
         default=DEMO_ANIMATION,
         help="animation to design an animated pop-up from (default: "
-        "resources/samples/character.bvh)",
+        "resources/samples/waving_figure.glb)",
     )
     args = parser.parse_args(argv)
     build = os.path.abspath(args.build)
