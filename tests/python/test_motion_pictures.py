@@ -149,22 +149,11 @@ def test_the_character_frames_follow_the_bvh(tmp_path):
     matrix[:3, 3] = (10.0, 20.0, 0.0)
     frames = character_frames(animation, matrix, 0, bvh_samples.FRAMES - 1, count=7)
     assert [f for f, _, _ in frames] == pytest.approx([5.0 * k for k in range(7)])
-    for frame, segments, _ in frames:
+    assert animation.mesh is None  # a BVH has no mesh (animation.hpp)
+    for frame, segments, triangles in frames:
+        assert triangles is None
         assert len(segments) == len(animation.bones) - 1  # one per bone with a parent
         hand = 2.0 * np.array(bvh_samples.hand(frame)) + (10.0, 20.0, 0.0)
         nearest = min(np.linalg.norm(np.asarray(b) - hand) for _, b in segments)
-        assert nearest < 1e-9, frame
-
-
-@pytest.mark.xfail(
-    strict=True,
-    reason="load_animation gives a BVH assimp's bone-shaped skeleton mesh (300 vertices here); "
-    "the contract (animation.hpp) says a BVH's mesh is empty: the input helper's to fix",
-)
-def test_a_bvh_has_no_mesh(tmp_path):
-    import bvh_samples
-
-    from popupwb.core import popupcore
-
-    animation = popupcore.load_animation(bvh_samples.write_bvh(tmp_path / "wave.bvh"))
-    assert animation.mesh is None
+        # assimp keeps keys in single precision: ~1e-7 of the figure's 40 units, times 2.
+        assert nearest < 1e-4, frame
