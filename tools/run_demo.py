@@ -485,6 +485,11 @@ def animate(build, animation, out, env):
         raise DemoError(f"(3) popup animate: exit {proc.returncode}: {proc.stderr.strip()}")
     with open(os.path.join(folder, "report.json")) as f:
         report = json.load(f)
+    if report["valid"] and not report.get("sheets_ok"):
+        raise DemoError(
+            f"(3) popup animate: the design is valid but its cutting sheets have errors; see "
+            f"{folder}/sheets/report.json"
+        )
     if proc.returncode != 0 or not report["valid"]:
         raise DemoError(f"(3) popup animate found no valid design; see {folder}/report.json")
     return report, proc.stdout
