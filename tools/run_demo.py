@@ -10,6 +10,11 @@ report.json, preview.png and the cutting sheets in fit/sheets/ (as `popup sheet`
 (2) `popup verify fit/design.FCStd fit/sheets` proves the cutting file against the design. The
 house was made by tools/make_models.py (see resources/samples/README.md).
 
+Then motion from an animation (issue 13): (3) `popup animate resources/samples/waving_figure.glb
+--out out/demo/animate` writes design.FCStd (a PopUpCard with motion mechanisms linked to the
+animation), report.json, paths.png, motion.gif and animate/sheets/; (4) `popup verify` proves
+those sheets. The animation was made by tools/make_animations.py.
+
 Then the hand-made card: (a) copy resources/samples/demo_card.json into the output folder, (b) check its validity
 (validity_report.json / .txt), (c) build demo_card.FCStd with three Scaffold objects of it at fold
 angles 180, 90 and 30 degrees side by side, (d) build card.FCStd: an A4 PopUpCard carrying a box
@@ -38,7 +43,9 @@ PYTHON = "/usr/bin/python3"
 FREECAD_LIB = "/usr/lib/freecad-python3/lib"
 DEMO_DESIGN = os.path.join(REPO, "resources", "samples", "demo_card.json")
 DEMO_MODEL = os.path.join(REPO, "resources", "samples", "house.stl")
+DEMO_ANIMATION = os.path.join(REPO, "resources", "samples", "waving_figure.glb")
 FIT_TIMEOUT = 300  # seconds
+ANIMATE_TIMEOUT = 600  # seconds
 FOLD_ANGLES = (180.0, 90.0, 30.0)
 SPACING = 1.3  # distance between the cards, in card sizes
 IMAGE_SIZE = (1200, 800)
@@ -465,6 +472,29 @@ def fit_model(build, model, out, env):
     return report, proc.stdout
 
 
+def animate(build, animation, out, env):
+    """(3) `popup animate` of the bundled animation into out/animate: (its report.json, its
+    stdout). The animation was made by tools/make_animations.py (resources/samples/README.md)."""
+    if not os.path.isfile(animation):
+        raise DemoError(f"(3) popup animate: {animation} is missing (tools/make_animations.py)")
+    folder = os.path.join(out, "animate")
+    command = [os.path.join(build, "bin", "popup"), "animate", animation, "--out", folder]
+    command += ["--seed", "1"]
+    proc = subprocess.run(command, env=env, capture_output=True, text=True, timeout=ANIMATE_TIMEOUT)
+    if proc.returncode not in (0, 1) or not os.path.isfile(os.path.join(folder, "report.json")):
+        raise DemoError(f"(3) popup animate: exit {proc.returncode}: {proc.stderr.strip()}")
+    with open(os.path.join(folder, "report.json")) as f:
+        report = json.load(f)
+    if report["valid"] and not report.get("sheets_ok"):
+        raise DemoError(
+            f"(3) popup animate: the design is valid but its cutting sheets have errors; see "
+            f"{folder}/sheets/report.json"
+        )
+    if proc.returncode != 0 or not report["valid"]:
+        raise DemoError(f"(3) popup animate found no valid design; see {folder}/report.json")
+    return report, proc.stdout
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--build", default="build", help="CMake build folder (default: build)")
@@ -478,6 +508,12 @@ def main(argv=None):
         "--model",
         default=DEMO_MODEL,
         help="3D model to design a pop-up from (default: resources/samples/house.stl)",
+    )
+    parser.add_argument(
+        "--animation",
+        default=DEMO_ANIMATION,
+        help="animation to design an animated pop-up from (default: "
+        "resources/samples/waving_figure.glb)",
     )
     args = parser.parse_args(argv)
     build = os.path.abspath(args.build)
@@ -497,6 +533,24 @@ def main(argv=None):
         print(f"(2) popup verify fit/sheets against fit/design.FCStd: {fit_verdict}", flush=True)
         if not fit_verified:
             raise DemoError("(2) popup verify: the fitted card's cutting file does not make it")
+        motion_report, motion_summary = animate(build, os.path.abspath(args.animation), out, env)
+        motion_files = motion_report["files"]
+        print(
+            f"(3) popup animate {os.path.basename(args.animation)}: {motion_files['design']}",
+            flush=True,
+        )
+        print(textwrap.indent(motion_summary.strip(), "      "), flush=True)
+        motion_verified, motion_verdict, motion_findings = verify_sheets(
+            build, motion_files["design"], motion_files["sheets"], env
+        )
+        for d in motion_findings:
+            print(f"      error: {d['code']}: {d['message']}", flush=True)
+        print(
+            f"(4) popup verify animate/sheets against animate/design.FCStd: {motion_verdict}",
+            flush=True,
+        )
+        if not motion_verified:
+            raise DemoError("(4) popup verify: the animated card's cutting file does not make it")
         design = copy_design(os.path.abspath(args.design), out)
         print(f"(a) design copied: {design}", flush=True)
         report, report_files = check_design(build, design, out)
@@ -529,6 +583,10 @@ def main(argv=None):
     print("\nOutputs:")
     print(f"  {os.path.join(out, 'fit')}/  (the pop-up from {os.path.basename(args.model)}:")
     print("      design.FCStd, report.json, preview.png, sheets/)")
+    print(
+        f"  {os.path.join(out, 'animate')}/  (the pop-up from {os.path.basename(args.animation)}:"
+    )
+    print("      design.FCStd, report.json, paths.png, motion.gif, sheets/)")
     for path in [design, *report_files, fcstd, *card_files, *pngs, *sheet_files]:
         print(f"  {path}")
     failed = False

@@ -6,6 +6,9 @@
     popup verify card.FCStd DIR|sheets.dxf [--card NAME] [--printed-side P1=back] [--kerf MM]
     popup fit model.stl --out DIR [--max-mechanisms N] [--seed S] [--paper A4] [--up X,Y,Z]
               [--facing X,Y,Z] [--detail D]    # cli_fit.py: the card designed from a 3D model
+    popup animate walk.bvh --out DIR [--seed S] [--iterations N] [--first-frame F]
+              [--last-frame L] [--view X,Y,Z] [--up X,Y,Z] [--scale MM] [--paper A4]
+                                               # cli_animate.py: motion from an animation
     popup --version
 
 Exit status: 0 the design is valid (check; for a document every card checked), its sheets are
@@ -658,6 +661,12 @@ def cmd_fit(args):
     return cli_fit.run(args, sys.modules[__name__])
 
 
+def cmd_animate(args):
+    from popupwb import cli_animate
+
+    return cli_animate.run(args, sys.modules[__name__])
+
+
 def _version():
     try:
         import popupwb
@@ -797,6 +806,9 @@ def build_parser():
     from popupwb.fitting.fit_run import MAX_MECHANISMS
 
     cli_fit.add_parser(sub, MAX_MECHANISMS).set_defaults(run=cmd_fit)
+    from popupwb import cli_animate
+
+    cli_animate.add_parser(sub).set_defaults(run=cmd_animate)
     return parser
 
 

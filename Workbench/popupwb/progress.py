@@ -19,6 +19,12 @@ core gives up at its next checkpoint (one fold-simulation step) and the worker i
 Cancelled is raised, so nothing runs on in the background. A call without one is abandoned: it
 finishes in the background and its result is dropped (quitting FreeCAD waits for it).
 
+Work that measures its own progress (popupcore.design_motion's MotionProgress) passes
+`fraction=` a callable returning 0..1: the bar then follows it, read at every poll.
+
+    progress.run("walk.bvh: designing", popupcore.design_motion, animation, options,
+                 cancel=progress.CANCEL_FLAG, progress=meter, fraction=lambda: meter.value)
+
 Headless (no GUI, or called off the main thread) run() is a plain call and Steps never cancels.
 
 FreeCAD's own FreeCAD.Base.ProgressIndicator (start(text, steps), next(canAbort), stop()) is not
@@ -36,6 +42,8 @@ DIALOG_NAME = "PopUpProgress"  # objectName of the dialog (scripts and the GUI t
 shown = []  # labels of the dialogs shown so far in this session (the GUI tests read it)
 cancelled = []  # labels of the work cancelled so far (a command compares its length before/after)
 
+
+FRACTION_STEPS = 1000  # the bar's range when it follows a fraction
 
 # Stands for "a fresh popupcore.CancelFlag that Cancel sets" among a call's keyword arguments.
 CANCEL_FLAG = object()
@@ -90,9 +98,10 @@ class Steps:
     step with Cancel, steps.advance() counts a step done in the main thread and raises Cancelled
     when Cancel was pressed."""
 
-    def __init__(self, label, count=0):
+    def __init__(self, label, count=0, fraction=None):
         self.label = label
-        self.count = count
+        self.fraction = fraction  # a callable 0..1, or None: the bar counts steps
+        self.count = FRACTION_STEPS if fraction is not None else count
         self.done = 0
         self.started = None
         self.dialog = None
@@ -157,6 +166,8 @@ class Steps:
             if (time.monotonic() - self.started) * 1000.0 < SHOW_AFTER_MS:
                 return  # short work: no dialog, and no events (no input reaches the document)
             self._show()
+        if self.fraction is not None:
+            self.dialog.setValue(self._fraction_value())
         # The dialog is application modal: only its Cancel button takes input.
         QtCore.QCoreApplication.processEvents(QtCore.QEventLoop.AllEvents, 50)
         if self.dialog.wasCanceled():
@@ -176,19 +187,27 @@ class Steps:
         dialog.setAutoReset(False)
         dialog.setMinimumDuration(0)
         dialog.setMinimumWidth(360)
-        dialog.setValue(min(self.done, self.count))
+        dialog.setValue(
+            self._fraction_value() if self.fraction is not None else min(self.done, self.count)
+        )
         dialog.show()
         self.dialog = dialog
         shown.append(self.label)
 
+    def _fraction_value(self):
+        value = float(self.fraction())
+        return int(round(FRACTION_STEPS * min(max(value, 0.0), 1.0)))
+
     def _update(self):
-        if self.dialog is not None and self.count:
+        if self.dialog is not None and self.fraction is not None:
+            self.dialog.setValue(self._fraction_value())
+        elif self.dialog is not None and self.count:
             self.dialog.setValue(min(self.done, self.count))
 
 
-def run(label, function, *args, **kwargs):
+def run(label, function, *args, fraction=None, **kwargs):
     """function(*args, **kwargs) with a progress dialog and Cancel after SHOW_AFTER_MS (GUI);
     raises Cancelled when cancelled. `label` names the object and the work ("Card: checking
-    validity")."""
-    with Steps(label) as steps:
+    validity"); `fraction`, a callable returning 0..1 while the work runs, drives the bar."""
+    with Steps(label, fraction=fraction) as steps:
         return steps.run(function, *args, **kwargs)

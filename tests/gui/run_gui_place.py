@@ -26,14 +26,21 @@ MECHANISMS = [
 ]
 MOTION = ["PopUp_RotationArm", "PopUp_HorizontalTranslation", "PopUp_VerticalTranslation"]
 TOOLBARS = {
-    "PopUp card": ["PopUp_Card", "PopUp_LoadDesign", "PopUp_FromModel"],
+    "PopUp card": ["PopUp_Card", "PopUp_LoadDesign", "PopUp_FromModel", "PopUp_FromAnimation"],
     "PopUp mechanisms": MECHANISMS + ["Separator", "PopUp_SetProfile"],
     "PopUp motion mechanisms": MOTION,
     "PopUp check": ["PopUp_CheckValidity", "PopUp_Animate"],
     "PopUp sheets": ["PopUp_CuttingSheet", "PopUp_ExportSheets"],
 }
 MENU = (
-    ["PopUp_Card", "PopUp_LoadDesign", "PopUp_FromModel", "Separator", "menu:Mechanisms"]
+    [
+        "PopUp_Card",
+        "PopUp_LoadDesign",
+        "PopUp_FromModel",
+        "PopUp_FromAnimation",
+        "Separator",
+        "menu:Mechanisms",
+    ]
     + ["PopUp_SetProfile", "Separator"]
     + ["PopUp_CheckValidity", "PopUp_Animate", "Separator"]
     + ["PopUp_CuttingSheet", "PopUp_ExportSheets"]

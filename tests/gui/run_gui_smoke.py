@@ -37,6 +37,7 @@ COMMANDS = [
     "PopUp_LoadDesign",
     "PopUp_FromModel",
     "PopUp_SetProfile",
+    "PopUp_FromAnimation",
     "PopUp_CuttingSheet",
     "PopUp_ExportSheets",
 ]
@@ -47,6 +48,7 @@ OTHER_COMMANDS = [
     "PopUp_LoadDesign",
     "PopUp_FromModel",
     "PopUp_SetProfile",
+    "PopUp_FromAnimation",
     "PopUp_CuttingSheet",
     "PopUp_ExportSheets",
 ]

@@ -576,6 +576,7 @@ def test_every_float_option_takes_negative_values():
         "sheet": ["d", "--out", "o"],
         "verify": ["d", "s"],
         "fit": ["m", "--out", "o"],
+        "animate": ["a", "--out", "o"],
     }
     for command, flag in options:
         for text in ("-inf", "-Infinity", "-nan", "-1e-3", "-2.5E+1", "-.5", "-7"):

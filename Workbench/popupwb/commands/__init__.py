@@ -14,6 +14,7 @@ from popupwb.commands import (
     create_cutting_sheet,
     create_mechanism,
     export_sheets,
+    from_animation,
     from_model,
     load_design,
     set_profile,
@@ -22,7 +23,12 @@ from popupwb.mechanism_registry import MOTION_COMMAND_IDS, STRUCTURE_COMMAND_IDS
 
 SEPARATOR = "Separator"
 
-CARD_COMMANDS = [create_card.COMMAND_ID, load_design.COMMAND_ID, from_model.COMMAND_ID]
+CARD_COMMANDS = [
+    create_card.COMMAND_ID,
+    load_design.COMMAND_ID,
+    from_model.COMMAND_ID,
+    from_animation.COMMAND_ID,
+]
 MECHANISM_COMMANDS = list(STRUCTURE_COMMAND_IDS)
 MOTION_COMMANDS = list(MOTION_COMMAND_IDS)
 PROFILE_COMMANDS = [set_profile.COMMAND_ID]

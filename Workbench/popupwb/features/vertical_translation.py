@@ -12,6 +12,9 @@ class VerticalTranslation(MechanismFeature):
     TYPE = "PopUp::VerticalTranslation"
     GROUP = "Vertical translation"
     PARAMS = "VBoxFoldParams"
+    # Params fields the generator fixes (add_vertical_translation builds the v-box's triangular
+    # half: no back walls): a design may state them, with these values only.
+    FIXED_FIELDS = {"back": 0.0}
     GENERATOR = "add_vertical_translation"
     PARAMETERS = (
         Parameter("Offset", "length", "offset", "Front corner along the host's hinge", 20.0),

@@ -1,0 +1,197 @@
+#!/usr/bin/python3
+"""GUI test of PopUp_FromAnimation in the real FreeCAD GUI under Xvfb (tests/gui/gui_harness.py):
+the panel opens on a hand-written BVH of a waving figure (tests/python/bvh_samples.py), the
+settings go in, Design runs with the progress bar and draws the target paths against the
+mechanisms' paths in the panel, a second design is cancelled from the progress dialog, and OK
+builds a checked card with one feature per mechanism, linked to the animation; dragging the fold
+angle moves the arm. Screenshots: <build>/sandbox/gui_from_animation/from_animation_panel.png
+(the task panel with its plot) and from_animation_card.png (the card at 120°)."""
+
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from gui_harness import SANDBOX, SOURCE_DIR, Checks, run_macro  # noqa: E402
+
+sys.path.insert(0, os.path.join(SOURCE_DIR, "tests", "python"))
+import bvh_samples  # noqa: E402
+
+NAME = "gui_from_animation"
+
+BODY = r"""
+import time
+
+
+def settle(ms=300):
+    wait_until(lambda: False, ms)
+
+
+def run():
+    from popupwb import progress
+    from popupwb.commands.from_animation import FromAnimationCommand, open_panel
+    from popupwb.taskpanels import from_animation_panel
+
+    log_start = report_view_text()
+    doc = FreeCAD.newDocument("FromAnimation")
+    result["command_active"] = FromAnimationCommand().IsActive()
+    open_panel(CONFIG["bvh"], doc)
+    settle()
+    panel = from_animation_panel.last_panel
+    result["panel_open"] = panel is not None and panel.path == CONFIG["bvh"]
+    result["panel_visible"] = bool(panel and panel.form.isVisible())
+    panel.view.setCurrentIndex(panel.view.findText("-Z"))
+    panel.up.setCurrentIndex(panel.up.findText("+Y"))
+    panel.prune.setValue(0.05)
+    panel.motion_weight.setValue(80.0)
+    panel.depth_weight.setValue(20.0)
+    panel.iterations.setValue(1500)
+    panel.seed.setValue(2)
+    options = panel.options()
+    result["options"] = [
+        list(options.view.view), list(options.view.up), options.chains.prune_fraction,
+        options.motion_weight, options.depth_weight, options.iterations, options.seed,
+    ]
+
+    start = time.monotonic()
+    panel.design_button.click()
+    settle()
+    result["design_s"] = time.monotonic() - start
+    designed = panel.result
+    result["designed"] = designed is not None
+    result["status"] = panel.status.text()
+    result["frames_max"] = panel.last_frame.maximum()
+    result["chains"] = [c.name for c in designed.chains] if designed else []
+    result["mechanism_names"] = [m.name for m in designed.mechanisms] if designed else []
+    pixmap = panel.plot.pixmap()
+    result["plot_size"] = [pixmap.width(), pixmap.height()] if pixmap else [0, 0]
+    panel.form.resize(460, 900)
+    settle()
+    panel.form.grab().save(CONFIG["panel_png"])
+    count_non_white(CONFIG["panel_png"], "panel_")
+
+    # Cancel: the dialog shows at once; Cancel is pressed while the annealing runs, after the
+    # bar has moved.
+    progress.SHOW_AFTER_MS = 0
+    cancel = {}
+
+    def press():
+        dialogs = [d for d in Gui.getMainWindow().findChildren(QtGui.QProgressDialog)
+                   if d.objectName() == progress.DIALOG_NAME and d.isVisible()]
+        cancel["dialog_visible"] = bool(dialogs)
+        if dialogs:
+            cancel["bar"] = [dialogs[0].value(), dialogs[0].maximum()]
+            dialogs[0].cancel()
+
+    QtCore.QTimer.singleShot(1500, press)
+    panel.iterations.setValue(5000000)
+    start = time.monotonic()
+    cancel["returned"] = panel.run_design() is not None
+    cancel["seconds"] = time.monotonic() - start
+    cancel["status"] = panel.status.text()
+    result["cancel"] = cancel
+    progress.SHOW_AFTER_MS = 500
+    panel.iterations.setValue(1500)
+
+    ok = panel.accept()  # never designed since the cancel: OK designs first, then builds
+    settle()
+    result["accepted"] = bool(ok)
+    design = panel.design
+    card = design.card if design else None
+    result["labels"] = [m.Label for m in design.mechanisms] if design else []
+    result["source_animation"] = card.SourceAnimation if card else None
+    result["validity"] = card.Validity if card else None
+    result["invalid"] = [o.Label for o in doc.Objects if "Invalid" in o.State]
+    # Dragging the fold angle moves the mechanisms: their shapes change between 180° and 120°.
+    boxes = {}
+    for angle in (180.0, 120.0):
+        card.FoldAngle = angle
+        doc.recompute()
+        settle(100)
+        boxes[angle] = [
+            [round(v, 6) for v in (m.Shape.BoundBox.XMin, m.Shape.BoundBox.XMax,
+                                   m.Shape.BoundBox.ZMax)]
+            for m in design.mechanisms
+        ]
+    result["moved"] = boxes[180.0] != boxes[120.0]
+    Gui.ActiveDocument.ActiveView.viewIsometric()
+    Gui.SendMsgToActiveView("ViewFit")
+    settle()
+    save_screenshot(CONFIG["card_png"], 1200, 900)
+    count_non_white(CONFIG["card_png"], "card_")
+    result["log"] = report_view_text()[len(log_start):]
+"""
+
+
+def main():
+    check = Checks(NAME)
+    folder = os.path.join(SANDBOX, NAME + "_data")
+    os.makedirs(folder, exist_ok=True)
+    config = {
+        "bvh": bvh_samples.write_bvh(os.path.join(folder, "wave.bvh")),
+        "panel_png": os.path.join(SANDBOX, NAME, "from_animation_panel.png"),
+        "card_png": os.path.join(SANDBOX, NAME, "from_animation_card.png"),
+    }
+    code, result, out_dir = run_macro(NAME, BODY, config, timeout=400)
+    check("FreeCAD exited 0", code == 0, f"exit {code}, log {out_dir}/freecad.log")
+    r = result or {}
+    check(
+        "macro raised nothing", not r.get("errors", ["no result"]), "\n".join(r.get("errors", []))
+    )
+    check("the command is active", r.get("command_active") is True)
+    check(
+        "the panel opens on the animation",
+        r.get("panel_open") is True and r.get("panel_visible") is True,
+    )
+    check(
+        "the panel's settings reach MotionOptions",
+        r.get("options") == [[0.0, 0.0, -1.0], [0.0, 1.0, 0.0], 0.05, 80.0, 20.0, 1500, 2],
+        r.get("options"),
+    )
+    check("Design designs", r.get("designed") is True, r.get("status"))
+    check(
+        "the frame range follows the file",
+        r.get("frames_max") == bvh_samples.FRAMES - 1,
+        r.get("frames_max"),
+    )
+    check(
+        "the paths plot is in the panel",
+        r.get("plot_size", [0, 0])[0] > 300 and r.get("panel_tinted_pixels", 0) > 500,
+        r.get("plot_size"),
+    )
+    cancel = r.get("cancel", {})
+    bar = cancel.get("bar", [0, 0])
+    check(
+        "the progress bar follows the annealing and Cancel stops it: no result, status says so",
+        cancel.get("dialog_visible") is True
+        and bar[1] == 1000
+        and 0 < bar[0] < 1000
+        and cancel.get("returned") is False
+        and "cancelled" in cancel.get("status", ""),
+        cancel,
+    )
+    check(
+        "OK builds the card: one feature per mechanism, named as designed",
+        r.get("accepted") is True
+        and r.get("labels")
+        and r.get("labels") == r.get("mechanism_names"),
+        f"{r.get('labels')} vs {r.get('mechanism_names')}",
+    )
+    check(
+        "the card links the animation",
+        r.get("source_animation") == config["bvh"],
+        r.get("source_animation"),
+    )
+    check("the card is checked valid", r.get("validity") == "Valid", r.get("validity"))
+    check("nothing in error", r.get("invalid") == [], r.get("invalid"))
+    check("dragging the fold angle moves the mechanisms", r.get("moved") is True)
+    check(
+        "no traceback in the report view",
+        "Traceback" not in r.get("log", "Traceback"),
+        r.get("log"),
+    )
+    check("card screenshot saved", r.get("card_non_white_pixels", 0) > 1000, config["card_png"])
+    return check.exit_code()
+
+
+if __name__ == "__main__":
+    sys.exit(main())
