@@ -192,7 +192,7 @@ std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& t,
                 }
                 return sum;
             };
-            const double l = search_1d(eq62, 2.0, W);
+            const double l = search_1d(eq62, shortest_crease(), W);
             const double e = eq62(l);
             if (e < best || best == inf) {
                 best = e;
@@ -206,8 +206,8 @@ std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& t,
         MotionMechanism m;
         m.kind = MotionKind::vertical;
         const double beta = M_PI / 4, drop = clamp(A1.y() - A0.y(), 2.0, D - 2);
-        const double height = clamp(drop / std::sin(beta), 2.0, D - 2);
-        const double side = clamp(0.5 * height, 4.0, 0.4 * D);
+        const double height = clamp(drop / std::sin(beta), shortest_crease(), D - 2);
+        const double side = clamp(0.5 * height, shortest_crease(), 0.4 * D);
         m.p = {clamp(A1.y(), 0, W - 2 * side * std::cos(beta)), side, height, beta};
         out[int(MotionKind::vertical)] = finish(m, 500);
     }
@@ -234,7 +234,9 @@ std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& t,
         const double diff = A1.x() / std::sin(alpha);
         const double sum = std::abs(diff) + 20;
         const double a = (sum + diff) / 2, b = (sum - diff) / 2;
-        const double spine = clamp(2 * std::abs(A1.y() - A0.y()) + 20, 10, D - 2);
+        // The step is 0.2 of the spine wide: at least the shortest glued crease.
+        const double spine = clamp(
+            std::max(2 * std::abs(A1.y() - A0.y()) + 20, 5 * shortest_crease() + 1), 10, D - 2);
         const double run = clamp(2.5 * (std::max(a, b) + 2), 4, (D - 2) / std::sin(alpha));
         m.p = {clamp(A1.y() - sum * std::cos(alpha), 0, W - run * std::cos(alpha)),
                run,
@@ -252,9 +254,10 @@ std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& t,
         MotionMechanism m;
         m.kind = MotionKind::stationary;
         const double anchor = A1.x();
-        const double support = clamp(0.6 * std::abs(anchor), 5.0, 0.4 * D);
+        const double support = clamp(0.6 * std::abs(anchor), shortest_crease(), 0.4 * D);
         const double overhang = std::max(0.0, std::abs(anchor) - support) + 5;
-        const double height = clamp(h_max * t.depth, 3.0, std::max(3.0, h_max));
+        const double low = shortest_crease();
+        const double height = clamp(h_max * t.depth, low, std::max(low, h_max));
         m.p = {clamp(A1.y() - 10, 0, W - 20), 20, height, support, overhang, anchor};
         Candidate c;
         c.mechanism = m;

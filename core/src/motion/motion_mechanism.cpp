@@ -10,6 +10,7 @@
 #include "popup/mechanisms/step_fold.hpp"
 #include "popup/mechanisms/v_box_fold.hpp"
 #include "popup/mechanisms/v_fold.hpp"
+#include "popup/sheets/sheet_layout.hpp"
 
 namespace popup::motion {
 
@@ -317,6 +318,12 @@ double mechanism_height(const MotionMechanism& m)
     return 0.0;
 }
 
+double shortest_crease()
+{
+    static const double crease = shortest_tabbed_crease(SheetOptions{});
+    return crease;
+}
+
 std::string infeasibility(const MotionMechanism& m, const CardParams& card)
 {
     const double W = card.width, D = card.depth;
@@ -327,8 +334,8 @@ std::string infeasibility(const MotionMechanism& m, const CardParams& card)
     switch (m.kind) {
     case MotionKind::rotation: {
         const RotationArmParams r = rotation_params(m);
-        if (!(r.spine > margin && r.spine <= W))
-            return fail("spine", r.spine, "in (1, card width]");
+        if (!(r.spine >= shortest_crease() && r.spine <= W))
+            return fail("spine", r.spine, "in [shortest glued crease, card width]");
         if (!(r.offset >= 0 && r.offset + r.spine <= W))
             return fail("offset", r.offset, "in [0, card width - spine]");
         if (!(r.run > margin && r.run < D - margin))
@@ -349,12 +356,19 @@ std::string infeasibility(const MotionMechanism& m, const CardParams& card)
             return fail("offset", p.offset, "in [0, card width - 2·side·cos(wall_angle)]");
         if (!(p.height > margin && p.height < D))
             return fail("height", p.height, "in (1, card depth)");
+        // Glued creases: the walls' feet and tops (side), the front spine (height) and the top's
+        // diagonal (2·side·cos(wall_angle)).
+        if (!(std::min({p.side, p.height, 2 * along}) >= shortest_crease()))
+            return fail("side", p.side,
+                        "with height and 2·side·cos(wall_angle) >= the shortest glued crease");
         break;
     }
     case MotionKind::horizontal: {
         const HorizontalTranslationParams h = horizontal_params(m);
-        if (!(h.width >= 12 && h.offset >= 0 && h.offset + h.width <= W))
-            return fail("width", h.width, ">= 12 mm (two slit bridges) and on the card");
+        if (!(h.width >= std::max(12.0, shortest_crease()) && h.offset >= 0 &&
+              h.offset + h.width <= W))
+            return fail("width", h.width,
+                        ">= 12 mm (two slit bridges), the shortest glued crease, on the card");
         if (!(h.run_ground > margin && h.run_ground < D - margin))
             return fail("run_ground", h.run_ground, "in (1, card depth - 1)");
         if (!(h.run_backdrop > margin && h.run_backdrop < h.run_ground - margin))
@@ -379,6 +393,9 @@ std::string infeasibility(const MotionMechanism& m, const CardParams& card)
         // The wings are right triangles at 180° (spine standing, O-A flat): at height z the
         // wing reaches run·(1 − z/spine) from the spine; the step's creases must stay on it.
         const double room = v.run * (1 - (s.offset + s.width) / v.spine) - margin;
+        // Glued creases: the wings' feet (run), the spine, the step's folds (step_width).
+        if (!(std::min({v.run, v.spine, s.width}) >= shortest_crease()))
+            return fail("run", v.run, "with spine and step_width >= the shortest glued crease");
         if (!(s.run_ground > margin && s.run_ground < room))
             return fail("run_ground", s.run_ground, "inside the v-fold's wing");
         if (!(s.run_backdrop > margin && s.run_backdrop < room))
@@ -395,6 +412,9 @@ std::string infeasibility(const MotionMechanism& m, const CardParams& card)
             return fail("height", f.height, "in (1, 2000]");
         if (!(f.overhang >= 0))
             return fail("overhang", f.overhang, ">= 0");
+        // Glued creases: along the fold (width), the end panels' joints (height, support).
+        if (!(std::min({f.width, f.height, f.support}) >= shortest_crease()))
+            return fail("width", f.width, "with height and support >= the shortest glued crease");
         if (!(std::abs(m.p[5]) <= f.support + f.overhang))
             return fail("anchor", m.p[5], "on the platform (|anchor| <= support + overhang)");
         break;

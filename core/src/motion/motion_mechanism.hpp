@@ -56,8 +56,14 @@ std::vector<Vec3> mechanism_vertices(const MotionMechanism& m, double theta);
 /// Height of the mechanism's carrying patch above the card at 180° (mm): H of eq 6.7.
 double mechanism_height(const MotionMechanism& m);
 
+/// The shortest crease the default cutting sheets can glue (their narrowest tab, ≈ 11.1 mm), as
+/// FitOptions::min_part_mm: infeasibility refuses a mechanism with a shorter glued crease, which
+/// nobody could assemble (popup animate's sheets failed on such designs).
+double shortest_crease();
+
 /// Empty when the generators accept the parameters on `card`; otherwise why not (the first
-/// failed range). Mirrors the add_* checks, with a margin so the simulator's build succeeds.
+/// failed range). Mirrors the add_* checks, with a margin so the simulator's build succeeds, and
+/// refuses glued creases shorter than shortest_crease().
 std::string infeasibility(const MotionMechanism& m, const CardParams& card);
 
 /// Builds the mechanism on the card's central fold with the library's generators; appends its

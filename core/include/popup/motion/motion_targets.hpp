@@ -9,7 +9,8 @@ namespace popup {
 
 /// How the character sits on the card (thesis ch. 6: the user's viewpoint and placement). The
 /// card frame is the project's: y along the central fold, the card open flat in z = 0, ground
-/// page x > 0. The viewer looks down from +z: the character's right becomes +x, its up +y.
+/// page x > 0. The viewer looks down from +z: the viewer's right (view × up) becomes +x, the
+/// file's up +y. A character facing the eye has its own right hand at −x.
 struct MotionView {
     Vec3 view = Vec3(0, 0, -1); ///< from the eye toward the character, in the file's axes
     Vec3 up = Vec3(0, 1, 0);    ///< the file's direction that becomes the card's +y
