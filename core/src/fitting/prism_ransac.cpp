@@ -58,7 +58,7 @@ Section section_of(const Prism& m)
 }
 
 /// Face index: 0 top or ground slope, 1 side s1 (rect), 2 side s0 or backdrop slope, 3 end a0,
-/// 4 end a1.
+/// 4 end a1, 5 a rectangular prism's backbone (its hinge plane, s = 0, on a flat host).
 Where classify(const Prism& m, const Section& sec, const Local& l, double eps, bool flat,
                int* face = nullptr)
 {
@@ -76,6 +76,10 @@ Where classify(const Prism& m, const Section& sec, const Local& l, double eps, b
         const bool in_t = l.t > -eps && l.t < m.height + eps;
         if (!in_s || !in_t)
             return Where::outside;
+        // A box fold's backbone C stands on its hinge from the page to the top: a wall of the
+        // model there (an L's inner wall with the fold on it) lies on the box, not inside it.
+        if (flat && std::abs(l.s) < eps && std::abs(l.ns) > kNormalAgreement && l.t < m.height)
+            return set(5);
         if (deep_a && l.s > m.s0 + eps && l.s < m.s1 - eps && l.t > eps && l.t < m.height - eps)
             return Where::inside;
         if (std::abs(l.t - m.height) < eps && l.nt > kNormalAgreement)
@@ -359,7 +363,9 @@ public:
                 if (classify(m, sec, l[i], o_.threshold, h.flat, &f) != Where::face)
                     continue;
                 const Local& q = l[i];
-                if (m.kind == Prism::Kind::rectangular) {
+                if (f == 5) {
+                    continue; // the backbone stays on the hinge
+                } else if (m.kind == Prism::Kind::rectangular) {
                     const double c[5] = {q.t, q.s, q.s, q.a, q.a};
                     coord[f].push_back(c[f]);
                 } else if (f == 0) {
