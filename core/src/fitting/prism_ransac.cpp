@@ -279,6 +279,18 @@ private:
     std::array<double, kLevels> sizes_{};
 };
 
+/// True when a corner of the prism stands above the highest sample by more than ε: a prism
+/// lies inside the model (a tent fitted to two near-parallel slopes would otherwise put its
+/// apex far above it). Only the height: across and along, a box grown to the thinnest part
+/// may reach past a thin model.
+bool outside_model(const Prism& m, const PrismHost& h, const Eigen::AlignedBox3d& model, double eps)
+{
+    for (const Vec3& c : m.corners(h))
+        if (c.z() > model.max().z() + eps)
+            return true;
+    return false;
+}
+
 struct Scored {
     Prism prism;
     double score = -1; ///< estimated inliers among the remaining samples
@@ -286,7 +298,11 @@ struct Scored {
 
 class Search {
 public:
-    Search(const SurfaceSamples& samples, const RansacOptions& o) : s_(samples), o_(o) {}
+    Search(const SurfaceSamples& samples, const RansacOptions& o) : s_(samples), o_(o)
+    {
+        for (const Vec3& p : samples.points)
+            box_.extend(p);
+    }
 
     std::vector<Local> locals(const PrismHost& h) const
     {
@@ -327,11 +343,23 @@ public:
         open.a1 = 1e300;
         const Section sec = section_of(open);
         std::vector<double> along;
+        // A wall across the hinge inside the section stops the growth before it: past an L's
+        // inner corner the same top and front belong to another part (the prism would enclose
+        // that wall).
+        double stop_lo = -1e300, stop_hi = 1e300;
         for (const Local& q : subset) {
             int face = -1;
-            if (classify(open, sec, q, o_.threshold, h.flat, &face) == Where::face && face <= 2)
+            const Where w = classify(open, sec, q, o_.threshold, h.flat, &face);
+            if (w == Where::face && face <= 2)
                 along.push_back(q.a);
+            else if (w == Where::inside && std::abs(q.na) > kNormalAgreement && q.a < m.a0)
+                stop_lo = std::max(stop_lo, q.a);
+            else if (w == Where::inside && std::abs(q.na) > kNormalAgreement && q.a > m.a1)
+                stop_hi = std::min(stop_hi, q.a);
         }
+        along.erase(std::remove_if(along.begin(), along.end(),
+                                   [&](double a) { return a <= stop_lo || a >= stop_hi; }),
+                    along.end());
         if (along.empty())
             return;
         std::sort(along.begin(), along.end());
@@ -417,7 +445,8 @@ public:
                 next.a0 = median(coord[3]);
             if (!coord[4].empty())
                 next.a1 = median(coord[4]);
-            if (!fit_host(h, next, o_.threshold, o_.min_part))
+            if (!fit_host(h, next, o_.threshold, o_.min_part) ||
+                outside_model(next, h, box_, o_.threshold))
                 return;
             m = next;
         }
@@ -426,6 +455,7 @@ public:
 private:
     const SurfaceSamples& s_;
     const RansacOptions& o_;
+    Eigen::AlignedBox3d box_; ///< the samples' bounding box (card frame)
 };
 
 /// True when the prism's box overlaps one of `taken` by more than ε along every axis: two
@@ -653,7 +683,8 @@ RansacResult fit_prisms(const SurfaceSamples& samples, const PrismHost& card,
                     if (fit_host(host, rect, eps, o.min_part)) {
                         const double sc =
                             search.score(rect, sub[h], grd[h], host.flat, scale, best_rect.score);
-                        if (sc > best_rect.score && !overlaps(rect, host, taken, eps))
+                        if (sc > best_rect.score && !overlaps(rect, host, taken, eps) &&
+                            !outside_model(rect, host, box, eps))
                             best_rect = {rect, sc};
                     }
                 }
@@ -679,7 +710,8 @@ RansacResult fit_prisms(const SurfaceSamples& samples, const PrismHost& card,
                 if (!fit_host(host, tri, eps, o.min_part))
                     continue;
                 const double sc = search.score(tri, sub[h], grd[h], true, scale, best_tri.score);
-                if (sc > best_tri.score && !overlaps(tri, host, taken, eps))
+                if (sc > best_tri.score && !overlaps(tri, host, taken, eps) &&
+                    !outside_model(tri, host, box, eps))
                     best_tri = {tri, sc};
             }
             r.draws += 64;
