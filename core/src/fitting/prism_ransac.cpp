@@ -218,8 +218,12 @@ bool fit_host(const PrismHost& h, Prism& m, double eps, double min_part)
             m.s1 = d;
         } else {
             m.s0 = 0;
-            if (m.s1 >= h.across_max || m.height >= h.up_max * 0.98)
-                return false; // a step must stay below its wall and on its page
+            // A step must stay below its wall and on its page: one as tall as its wall (an
+            // arm behind a box, flush with its top) stops just below it.
+            if (m.height >= h.up_max * 0.98 && m.height <= h.up_max + eps)
+                m.height = h.up_max * 0.98;
+            if (m.s1 >= h.across_max || m.height > h.up_max * 0.98)
+                return false;
         }
         if (m.s1 - m.s0 < eps || m.height < eps)
             return false;
