@@ -152,7 +152,7 @@ Result<FitResult> fit_design(const ModelMesh& model, const FitOptions& options,
         SurfaceSamples samples;
         RansacOptions ro;
         RansacResult fit;
-        double explained = 0; ///< samples on a prism's face or on a host's page
+        double explained = 0; ///< samples on a prism's paper faces or on a host's page
     };
     auto attempt = [&](const Alignment& a) {
         Attempt t;
@@ -178,11 +178,12 @@ Result<FitResult> fit_design(const ModelMesh& model, const FitOptions& options,
         t.fit = fit_prisms(t.samples, card, ro);
         size_t n = 0;
         for (size_t i = 0; i < t.fit.owner.size(); ++i)
-            n += t.fit.owner[i] >= 0 || t.fit.on_base[i];
+            n += t.fit.on_principal[i] || t.fit.on_base[i];
         t.explained = t.fit.owner.empty() ? 0.0 : double(n) / double(t.fit.owner.size());
         return t;
     };
-    // The alignment whose primitives explain the most samples; the first (the mirror plane)
+    // The alignment whose primitives' paper faces (not their open ends) explain the most
+    // samples; the first (the mirror plane)
     // unless another explains a hundredth more (docs/MATH.md, "Which way is up").
     size_t chosen = 0;
     Attempt best = attempt(aligned.value.front());

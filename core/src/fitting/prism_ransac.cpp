@@ -347,19 +347,34 @@ public:
         open.a1 = 1e300;
         const Section sec = section_of(open);
         std::vector<double> along;
-        // A wall across the hinge inside the section stops the growth before it: past an L's
-        // inner corner the same top and front belong to another part (the prism would enclose
-        // that wall).
-        double stop_lo = -1e300, stop_hi = 1e300;
+        // A wall across the hinge inside the section, standing on the host, stops the growth
+        // before it: past an L's inner corner the same top and front belong to another part
+        // (the prism would enclose that wall). A wall higher up (a cab on a chassis) is a part
+        // on top of a lower one; the volumetric test judges the grown prism then.
+        std::vector<std::pair<double, double>> walls; // (a, t) of such samples
         for (const Local& q : subset) {
             int face = -1;
             const Where w = classify(open, sec, q, o_.threshold, h.flat, &face);
             if (w == Where::face && face <= 2)
                 along.push_back(q.a);
-            else if (w == Where::inside && std::abs(q.na) > kNormalAgreement && q.a < m.a0)
-                stop_lo = std::max(stop_lo, q.a);
-            else if (w == Where::inside && std::abs(q.na) > kNormalAgreement && q.a > m.a1)
-                stop_hi = std::min(stop_hi, q.a);
+            else if (w == Where::inside && std::abs(q.na) > kNormalAgreement &&
+                     (q.a < m.a0 || q.a > m.a1))
+                walls.push_back({q.a, q.t});
+        }
+        std::sort(walls.begin(), walls.end());
+        double stop_lo = -1e300, stop_hi = 1e300;
+        for (size_t i = 0; i < walls.size();) {
+            size_t j = i;
+            double lowest = walls[i].second;
+            while (j + 1 < walls.size() && walls[j + 1].first - walls[j].first <= o_.threshold)
+                lowest = std::min(lowest, walls[++j].second);
+            if (lowest < 0.25 * m.height) {
+                if (walls[i].first < m.a0)
+                    stop_lo = std::max(stop_lo, walls[j].first);
+                else
+                    stop_hi = std::min(stop_hi, walls[i].first);
+            }
+            i = j + 1;
         }
         along.erase(std::remove_if(along.begin(), along.end(),
                                    [&](double a) { return a <= stop_lo || a >= stop_hi; }),
@@ -379,6 +394,12 @@ public:
             ++j;
         m.a0 = std::min(m.a0, along[i]);
         m.a1 = std::max(m.a1, along[j]);
+        // Grown up to the wall that stopped it: the part ends on that wall (the scoring subset
+        // is sparse, its last face sample falls short of it).
+        if (m.a0 - stop_lo <= gap)
+            m.a0 = stop_lo;
+        if (stop_hi - m.a1 <= gap)
+            m.a1 = stop_hi;
     }
 
     /// Local optimisation: each face moves to the median of its inliers, slopes to their
@@ -576,6 +597,7 @@ RansacResult fit_prisms(const SurfaceSamples& samples, const PrismHost& card,
     r.hosts.push_back(card);
     r.owner.assign(total, -1);
     r.on_base.assign(total, false);
+    r.on_principal.assign(total, false);
     if (total == 0)
         return r;
     Search search(samples, o);
@@ -733,11 +755,14 @@ RansacResult fit_prisms(const SurfaceSamples& samples, const PrismHost& card,
                 search.refit(m, locals[m.host], remaining, host);
                 const Section sec = section_of(m);
                 int n = 0;
-                for (int i : remaining)
-                    if (classify(m, sec, locals[m.host][i], eps, host.flat) == Where::face) {
+                for (int i : remaining) {
+                    int face = -1;
+                    if (classify(m, sec, locals[m.host][i], eps, host.flat, &face) == Where::face) {
                         r.owner[i] = int(r.prisms.size());
+                        r.on_principal[i] = face <= 2 || face == 5;
                         ++n;
                     }
+                }
                 m.inliers = n;
                 r.prisms.push_back(m);
                 Eigen::AlignedBox3d box;

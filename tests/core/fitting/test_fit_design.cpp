@@ -530,9 +530,7 @@ TEST(FitDesign, LInPlanIsTwoBoxesOnTheWingsBackWallAndAStep)
     FitOptions given;
     given.up = Vec3(0, 0, 1);
     given.facing = Vec3(0, -1, 0);
-    // Under NPCA alone the fit ties between this and a fold across the wing (both explain
-    // every sample): not asserted here (docs/SHAPE_RESULTS.md reports both).
-    for (const FitOptions& o : {given}) {
+    for (const FitOptions& o : {given, FitOptions()}) {
         const FitResult r = fitted(l_plan_model(), o);
         ASSERT_EQ(r.mechanisms.size(), 3u) << describe(r);
         // Fold on y = 20: 20 in front, 30 behind; the card fits 60 long, 30 deep, 30 high.
