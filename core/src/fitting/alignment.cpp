@@ -83,7 +83,8 @@ Vec3 orient_by_skew(const Vec3& axis, const std::vector<Vec3>& points, const Vec
     return axis;
 }
 
-/// Flat area facing out of the model at each end of `axis` (within a thousandth of its extent):
+/// Flat area facing out of the model at each end of `axis`, of faces lying wholly in the end
+/// plane (within a thousandth of the extent):
 /// [0] at the low end facing down, [1] at the high end facing up.
 std::array<double, 2> end_areas(const ModelMesh& model, const Vec3& axis)
 {
@@ -106,9 +107,10 @@ std::array<double, 2> end_areas(const ModelMesh& model, const Vec3& axis)
             far = std::max(far, model.vertices[t[k]].dot(axis));
             near = std::min(near, model.vertices[t[k]].dot(axis));
         }
-        if (along < -0.99 && near < lo + tolerance)
+        // The whole face in the end plane: a facet of a round side only touches it.
+        if (along < -0.99 && far < lo + tolerance)
             area[0] += 0.5 * twice;
-        if (along > 0.99 && far > hi - tolerance)
+        if (along > 0.99 && near > hi - tolerance)
             area[1] += 0.5 * twice;
     }
     return area;
