@@ -3,6 +3,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 namespace popup {
@@ -82,10 +83,10 @@ Vec3 orient_by_skew(const Vec3& axis, const std::vector<Vec3>& points, const Vec
     return axis;
 }
 
-/// The sign of the up axis a model stands on: the end with more flat area facing out of it at
-/// its extreme (a house's floor, not its ridge); the skew decides a tie (a box).
-Vec3 standing_way(const ModelMesh& model, const Vec3& axis, const std::vector<Vec3>& points,
-                  const Vec3& centre)
+/// Flat area facing out of the model at each end of `axis`, of faces lying wholly in the end
+/// plane (within a thousandth of the extent):
+/// [0] at the low end facing down, [1] at the high end facing up.
+std::array<double, 2> end_areas(const ModelMesh& model, const Vec3& axis)
 {
     double lo = 1e300, hi = -1e300;
     for (const Vec3& v : model.vertices) {
@@ -93,33 +94,160 @@ Vec3 standing_way(const ModelMesh& model, const Vec3& axis, const std::vector<Ve
         hi = std::max(hi, v.dot(axis));
     }
     const double tolerance = 1e-3 * (hi - lo);
-    double low_area = 0, high_area = 0;
+    std::array<double, 2> area{0, 0};
     for (const auto& t : model.triangles) {
         const Vec3 c = (model.vertices[t[1]] - model.vertices[t[0]])
                            .cross(model.vertices[t[2]] - model.vertices[t[0]]);
-        const double area = 0.5 * c.norm();
-        if (!(area > 0))
+        const double twice = c.norm();
+        if (!(twice > 0))
             continue;
-        const double along = c.dot(axis) / c.norm();
+        const double along = c.dot(axis) / twice;
         double far = -1e300, near = 1e300;
         for (int k = 0; k < 3; ++k) {
             far = std::max(far, model.vertices[t[k]].dot(axis));
             near = std::min(near, model.vertices[t[k]].dot(axis));
         }
-        if (along < -0.99 && near < lo + tolerance)
-            low_area += area;
-        if (along > 0.99 && far > hi - tolerance)
-            high_area += area;
+        // The whole face in the end plane: a facet of a round side only touches it.
+        if (along < -0.99 && far < lo + tolerance)
+            area[0] += 0.5 * twice;
+        if (along > 0.99 && near > hi - tolerance)
+            area[1] += 0.5 * twice;
     }
-    const double total = low_area + high_area;
-    if (total > 0 && std::abs(low_area - high_area) > 1e-6 * total)
-        return low_area > high_area ? axis : Vec3(-axis);
+    return area;
+}
+
+/// The up a model stands on (docs/MATH.md, "Which way is up"): the signed NPCA axis whose
+/// bounding-box bottom carries the most flat, downward-facing area (a house's floor, not its
+/// roof; an upright cylinder's cap, not a facet of its side). Axes whose bottoms are within
+/// 10 % of the largest are as good (a truck's floor and its flat side): the larger NPCA
+/// eigenvalue decides among them, the thesis's up. A model with no flat bottom worth the name
+/// (under 1 % of its area: a blob) keeps the first NPCA axis. The sign: the end with more flat
+/// area, the skew deciding a tie.
+Vec3 standing_up(const ModelMesh& model, const Mat3& axes, const std::vector<Vec3>& points,
+                 const Vec3& centre)
+{
+    double total = 0;
+    for (const auto& t : model.triangles)
+        total += 0.5 * (model.vertices[t[1]] - model.vertices[t[0]])
+                           .cross(model.vertices[t[2]] - model.vertices[t[0]])
+                           .norm();
+    std::array<std::array<double, 2>, 3> areas{};
+    double largest = 0;
+    for (int k = 0; k < 3; ++k) {
+        areas[k] = end_areas(model, axes.col(k));
+        largest = std::max({largest, areas[k][0], areas[k][1]});
+    }
+    int best_axis = -1;
+    if (largest >= 0.01 * total)
+        for (int k = 0; k < 3 && best_axis < 0; ++k)
+            if (std::max(areas[k][0], areas[k][1]) >= 0.9 * largest)
+                best_axis = k;
+    const int k = best_axis < 0 ? 0 : best_axis;
+    const Vec3 axis = axes.col(k);
+    const double low = areas[k][0], high = areas[k][1], sum = low + high;
+    if (sum > 0 && std::abs(low - high) > 1e-6 * sum)
+        return low > high ? axis : Vec3(-axis);
     return orient_by_skew(axis, points, centre);
+}
+
+/// Planes across `x` on which the model has a large flat wall inside its extent (not at either
+/// end): where a box fold's backbone can stand on the model's own wall (docs/MATH.md).
+/// Returns their positions (x · point), largest wall first, at most `count`, each carrying at
+/// least `min_area`.
+std::vector<double> inner_walls(const ModelMesh& model, const Vec3& x, double min_area, int count)
+{
+    double lo = 1e300, hi = -1e300;
+    for (const Vec3& v : model.vertices) {
+        lo = std::min(lo, v.dot(x));
+        hi = std::max(hi, v.dot(x));
+    }
+    const double tolerance = 1e-3 * (hi - lo);
+    std::map<long, std::pair<double, double>> bins; // bin -> (area, area-weighted position)
+    for (const auto& t : model.triangles) {
+        const Vec3 c = (model.vertices[t[1]] - model.vertices[t[0]])
+                           .cross(model.vertices[t[2]] - model.vertices[t[0]]);
+        const double twice = c.norm();
+        if (!(twice > 0) || std::abs(c.dot(x)) < 0.99 * twice)
+            continue;
+        const double at =
+            (model.vertices[t[0]] + model.vertices[t[1]] + model.vertices[t[2]]).dot(x) / 3;
+        if (at < lo + 10 * tolerance || at > hi - 10 * tolerance)
+            continue;
+        auto& bin = bins[std::lround((at - lo) / (2 * tolerance))];
+        bin.first += 0.5 * twice;
+        bin.second += 0.5 * twice * at;
+    }
+    // Neighbouring bins are one wall cut by the binning.
+    std::vector<std::pair<double, double>> walls; // (area, position)
+    for (auto it = bins.begin(); it != bins.end();) {
+        double area = 0, moment = 0;
+        long last = it->first;
+        while (it != bins.end() && it->first <= last + 1) {
+            area += it->second.first;
+            moment += it->second.second;
+            last = it->first;
+            ++it;
+        }
+        if (area >= min_area)
+            walls.push_back({area, moment / area});
+    }
+    std::stable_sort(walls.begin(), walls.end(),
+                     [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::vector<double> out;
+    for (size_t i = 0; i < walls.size() && int(i) < count; ++i)
+        out.push_back(walls[i].second);
+    return out;
+}
+
+/// The alignment for the card axes (x toward the viewer, y along the fold, up) with the central
+/// fold on the plane x · p = fold_at (model units), or at the middle of the model's extent
+/// across it when `fold_at` is empty.
+Alignment placed(const ModelMesh& model, const Vec3& x, const Vec3& y, const Vec3& up,
+                 const std::optional<double>& fold_at, const CardRoom& room)
+{
+    Alignment a;
+    a.up = up;
+    a.facing = x;
+    Mat3 rotation;
+    rotation.row(0) = x.transpose();
+    rotation.row(1) = y.transpose();
+    rotation.row(2) = up.transpose();
+    Eigen::AlignedBox3d box;
+    for (const Vec3& v : model.vertices)
+        box.extend(rotation * v);
+    // The fold at the middle of the model's extent across it: on a mirror-symmetric model its
+    // mirror plane, exactly.
+    const double fold = fold_at ? *fold_at : box.center().x();
+    Vec3 centre = rotation.transpose() * Vec3(fold, 0, 0);
+    box.translate(Vec3(-fold, 0, 0));
+    const double half_x = std::max(-box.min().x(), box.max().x());
+    const double length = box.sizes().y(), height = box.sizes().z();
+    const double usable_w = room.width * (1 - 2 * room.margin);
+    const double usable_d = room.depth * (1 - 2 * room.margin);
+    // Closed, a box of height c and half depth g reaches c + g from the fold along the page
+    // (docs/MATH.md, Fitting): the model's height plus its half depth must fit on one page.
+    // Closed, a box's end panels stand out of its ends by its half depth: the length plus
+    // both must fit along the fold.
+    a.scale = std::min(usable_w / std::max(length + 2 * half_x, 1e-300),
+                       usable_d / std::max(height + half_x, 1e-300));
+    const Vec3 shift(0, room.width / 2 - a.scale * box.center().y(), -a.scale * box.min().z());
+    a.model_to_card.setIdentity();
+    a.model_to_card.topLeftCorner<3, 3>() = a.scale * rotation;
+    a.model_to_card.topRightCorner<3, 1>() = shift - a.scale * rotation * centre;
+    a.card_box = Eigen::AlignedBox3d(a.scale * box.min() + shift, a.scale * box.max() + shift);
+    return a;
 }
 
 bool usable_direction(const Vec3& v)
 {
     return v.allFinite() && v.norm() > 1e-12;
+}
+
+/// A mirror symmetric model mirrors its samples onto themselves: the mean distance is then the
+/// nearest-sample distance, under one sample spacing. Above it the plane is not a mirror plane.
+bool mirror_plane(double mean_mirror_distance, double spacing)
+{
+    return mean_mirror_distance <= spacing;
 }
 
 } // namespace
@@ -143,12 +271,13 @@ Mat3 normal_principal_axes(const ModelMesh& model, Vec3* eigenvalues)
     return axes;
 }
 
-Result<Alignment> align_model(const ModelMesh& model, const SurfaceSamples& samples,
-                              const std::optional<Vec3>& up_option,
-                              const std::optional<Vec3>& facing_option, const CardRoom& room)
+Result<std::vector<Alignment>> alignment_candidates(const ModelMesh& model,
+                                                    const SurfaceSamples& samples,
+                                                    const std::optional<Vec3>& up_option,
+                                                    const std::optional<Vec3>& facing_option,
+                                                    const CardRoom& room)
 {
-    Result<Alignment> r;
-    Alignment& a = r.value;
+    Result<std::vector<Alignment>> r;
     if (up_option && !usable_direction(*up_option))
         r.fail(DiagnosticCode::bad_option,
                "up: must be a finite, non-zero 3-vector (the model direction that becomes the "
@@ -173,8 +302,8 @@ Result<Alignment> align_model(const ModelMesh& model, const SurfaceSamples& samp
     centre /= double(pts.size());
 
     const Mat3 axes = normal_principal_axes(model);
-    Vec3 up =
-        up_option ? Vec3(up_option->normalized()) : standing_way(model, axes.col(0), pts, centre);
+    const Vec3 up =
+        up_option ? Vec3(up_option->normalized()) : standing_up(model, axes, pts, centre);
     if (facing_option) {
         const Vec3 f = *facing_option - facing_option->dot(up) * up;
         if (f.norm() < 1e-6 * facing_option->norm()) {
@@ -189,6 +318,8 @@ Result<Alignment> align_model(const ModelMesh& model, const SurfaceSamples& samp
     Vec3 e1 = axes.col(1) - axes.col(1).dot(up) * up;
     if (e1.norm() < 0.5)
         e1 = axes.col(2) - axes.col(2).dot(up) * up;
+    if (e1.norm() < 0.5)
+        e1 = axes.col(0) - axes.col(0).dot(up) * up;
     e1.normalize();
     const Vec3 e2 = up.cross(e1);
 
@@ -200,6 +331,22 @@ Result<Alignment> align_model(const ModelMesh& model, const SurfaceSamples& samp
     // The coarse scan mirrors 500 samples, the fine one 1500.
     const size_t fine_stride = std::max<size_t>(1, pts.size() / 1500);
     const size_t coarse_stride = std::max<size_t>(1, pts.size() / 500);
+    auto score_normal = [&](const Vec3& n, size_t stride) {
+        // Through the middle of the model's extent along n (a mirror plane passes there).
+        double lo = 1e300, hi = -1e300;
+        for (const Vec3& v : model.vertices) {
+            lo = std::min(lo, v.dot(n));
+            hi = std::max(hi, v.dot(n));
+        }
+        const double middle = 0.5 * (lo + hi);
+        double sum = 0;
+        size_t count = 0;
+        for (size_t i = 0; i < pts.size(); i += stride, ++count) {
+            const Vec3 q = pts[i] - 2.0 * (pts[i].dot(n) - middle) * n;
+            sum += grid.distance(q);
+        }
+        return sum / double(count);
+    };
     auto score = [&](double theta, size_t stride) {
         const Vec3 n = std::cos(theta) * e1 + std::sin(theta) * e2;
         double sum = 0;
@@ -256,48 +403,63 @@ Result<Alignment> align_model(const ModelMesh& model, const SurfaceSamples& samp
         }
     }
     const Vec3 mirror_normal = std::cos(best_theta) * e1 + std::sin(best_theta) * e2;
-    a.symmetry_error = best / diagonal;
 
-    Vec3 x, y;
+    // Directions across the fold: the facing given, else the mirror plane's normal first, then
+    // (a model with no mirror plane across its NPCA axes, an L) the horizontal NPCA axes.
+    std::vector<Vec3> normals;
     if (facing_option) {
-        x = (*facing_option - facing_option->dot(up) * up).normalized();
-        y = up.cross(x);
+        normals.push_back((*facing_option - facing_option->dot(up) * up).normalized());
     } else {
-        // The fold runs in the mirror plane; its sign (which end is the card's y = 0) is the
-        // model's own, by skew, so a turned copy lands the same way.
-        y = orient_by_skew(up.cross(mirror_normal), pts, centre);
-        x = y.cross(up);
+        normals.push_back(mirror_normal);
+        if (!mirror_plane(best, samples.spacing))
+            for (const Vec3& n : {e1, e2})
+                if (std::abs(n.dot(mirror_normal)) < std::cos(2 * M_PI / 180))
+                    normals.push_back(n);
     }
-    a.up = up;
-    a.facing = x;
+    double total_area = 0;
+    for (const auto& t : model.triangles)
+        total_area += 0.5 * (model.vertices[t[1]] - model.vertices[t[0]])
+                                .cross(model.vertices[t[2]] - model.vertices[t[0]])
+                                .norm();
+    for (size_t k = 0; k < normals.size(); ++k) {
+        const Vec3& n = normals[k];
+        Vec3 x, y;
+        if (facing_option) {
+            x = n;
+            y = up.cross(x);
+        } else {
+            // The fold runs in the mirror plane; its sign (which end is the card's y = 0) is
+            // the model's own, by skew, so a turned copy lands the same way.
+            y = orient_by_skew(up.cross(n), pts, centre);
+            x = y.cross(up);
+        }
+        const double mirrored = k == 0 && !facing_option ? best : score_normal(x, fine_stride);
+        std::vector<std::optional<double>> folds{std::nullopt};
+        // No mirror plane across x: the fold may stand on one of the model's inner walls
+        // across x instead, where a box's backbone is the wall (each a twentieth of its area).
+        if (!mirror_plane(mirrored, samples.spacing))
+            for (double at : inner_walls(model, x, 0.05 * total_area, 2))
+                folds.push_back(at);
+        for (const auto& fold : folds) {
+            Alignment a = placed(model, x, y, up, fold, room);
+            a.symmetry_error = mirrored / diagonal;
+            r.value.push_back(a);
+        }
+    }
+    return r;
+}
 
-    Mat3 rotation;
-    rotation.row(0) = x.transpose();
-    rotation.row(1) = y.transpose();
-    rotation.row(2) = up.transpose();
-    Eigen::AlignedBox3d box;
-    for (const Vec3& v : model.vertices)
-        box.extend(rotation * (v - centre));
-    // The fold at the middle of the model's extent across it: on a mirror-symmetric model its
-    // mirror plane, exactly (the samples' centroid is only near it).
-    const double middle = box.center().x();
-    centre += middle * x;
-    box.translate(Vec3(-middle, 0, 0));
-    const double half_x = std::max(-box.min().x(), box.max().x());
-    const double length = box.sizes().y(), height = box.sizes().z();
-    const double usable_w = room.width * (1 - 2 * room.margin);
-    const double usable_d = room.depth * (1 - 2 * room.margin);
-    // Closed, a box of height c and half depth g reaches c + g from the fold along the page
-    // (docs/MATH.md, Fitting): the model's height plus its half depth must fit on one page.
-    // Closed, a box's end panels stand out of its ends by its half depth: the length plus
-    // both must fit along the fold.
-    a.scale = std::min(usable_w / std::max(length + 2 * half_x, 1e-300),
-                       usable_d / std::max(height + half_x, 1e-300));
-    const Vec3 shift(0, room.width / 2 - a.scale * box.center().y(), -a.scale * box.min().z());
-    a.model_to_card.setIdentity();
-    a.model_to_card.topLeftCorner<3, 3>() = a.scale * rotation;
-    a.model_to_card.topRightCorner<3, 1>() = shift - a.scale * rotation * centre;
-    a.card_box = Eigen::AlignedBox3d(a.scale * box.min() + shift, a.scale * box.max() + shift);
+Result<Alignment> align_model(const ModelMesh& model, const SurfaceSamples& samples,
+                              const std::optional<Vec3>& up_option,
+                              const std::optional<Vec3>& facing_option, const CardRoom& room)
+{
+    Result<Alignment> r;
+    Result<std::vector<Alignment>> all =
+        alignment_candidates(model, samples, up_option, facing_option, room);
+    r.diagnostics = all.diagnostics;
+    r.ok = all.ok;
+    if (all.ok)
+        r.value = all.value.front();
     return r;
 }
 

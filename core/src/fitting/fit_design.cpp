@@ -126,49 +126,80 @@ Result<FitResult> fit_design(const ModelMesh& model, const FitOptions& options,
     FitResult& r = result.value;
     StageTimer timer(r);
 
-    // Alignment (§5.1.1): NPCA up, the mirror plane, the bounding box and the scale.
+    // Alignment (§5.1.1): the up the model stands on, the mirror plane, the bounding box and
+    // the scale; a model with no mirror plane offers a few alignments, each fitted below.
     const SurfaceSamples coarse =
         sample_surface(model, std::min(options.samples, 4000), options.seed);
     CardRoom room{options.card_width, options.card_depth, options.margin};
-    const Result<Alignment> aligned = align_model(model, coarse, options.up, options.facing, room);
+    const Result<std::vector<Alignment>> aligned =
+        alignment_candidates(model, coarse, options.up, options.facing, room);
     if (!aligned.ok) {
         result.fail_with(aligned.diagnostics);
         return result;
     }
-    const Alignment& a = aligned.value;
-    r.model_to_card = a.model_to_card;
-    r.symmetry_error = a.symmetry_error;
     r.card.width = options.card_width;
     r.card.depth = options.card_depth;
     timer.lap("align");
     stop_if_cancelled(cancel, "fit_design: alignment");
 
-    // Pseudo-vertices, in the card's frame.
-    const SurfaceSamples samples =
-        transformed(sample_surface(model, options.samples, options.seed + 1), a.model_to_card);
+    // Pseudo-vertices in model units, placed on the card per alignment.
+    const SurfaceSamples model_samples = sample_surface(model, options.samples, options.seed + 1);
     timer.lap("sample");
     stop_if_cancelled(cancel, "fit_design: sampling");
 
     // Volumetric RANSAC on the base patch pairs, from the central fold.
-    const double diagonal = a.scale * model.diagonal();
-    PrismHost card;
-    card.name = "central fold";
-    card.origin = Vec3::Zero();
-    card.length = options.card_width;
-    card.across_min = -options.card_depth;
-    card.across_max = options.card_depth;
-    RansacOptions ro;
-    ro.threshold = options.threshold * diagonal;
-    // τ in samples: the five visible faces of a cube of edge min_shape·diagonal.
-    const double tau = options.min_shape * diagonal;
-    ro.min_points =
-        std::max(8.0, 5 * tau * tau / std::max(samples.spacing * samples.spacing, 1e-300));
-    ro.probability = options.probability;
-    ro.seed = options.seed;
-    ro.max_primitives = options.max_mechanisms;
-    ro.min_part = options.min_part_mm;
-    ro.cancel = cancel;
-    const RansacResult fit = fit_prisms(samples, card, ro);
+    struct Attempt {
+        SurfaceSamples samples;
+        RansacOptions ro;
+        RansacResult fit;
+        double explained = 0; ///< samples on a prism's paper faces or on a host's page
+    };
+    auto attempt = [&](const Alignment& a) {
+        Attempt t;
+        t.samples = transformed(model_samples, a.model_to_card);
+        const double diagonal = a.scale * model.diagonal();
+        PrismHost card;
+        card.name = "central fold";
+        card.origin = Vec3::Zero();
+        card.length = options.card_width;
+        card.across_min = -options.card_depth;
+        card.across_max = options.card_depth;
+        RansacOptions& ro = t.ro;
+        ro.threshold = options.threshold * diagonal;
+        // τ in samples: the five visible faces of a cube of edge min_shape·diagonal.
+        const double tau = options.min_shape * diagonal;
+        ro.min_points =
+            std::max(8.0, 5 * tau * tau / std::max(t.samples.spacing * t.samples.spacing, 1e-300));
+        ro.probability = options.probability;
+        ro.seed = options.seed;
+        ro.max_primitives = options.max_mechanisms;
+        ro.min_part = options.min_part_mm;
+        ro.cancel = cancel;
+        t.fit = fit_prisms(t.samples, card, ro);
+        size_t n = 0;
+        for (size_t i = 0; i < t.fit.owner.size(); ++i)
+            n += t.fit.on_principal[i] || t.fit.on_base[i];
+        t.explained = t.fit.owner.empty() ? 0.0 : double(n) / double(t.fit.owner.size());
+        return t;
+    };
+    // The alignment whose primitives' paper faces (not their open ends) explain the most
+    // samples; the first (the mirror plane)
+    // unless another explains a hundredth more (docs/MATH.md, "Which way is up").
+    size_t chosen = 0;
+    Attempt best = attempt(aligned.value.front());
+    for (size_t k = 1; k < aligned.value.size(); ++k) {
+        Attempt t = attempt(aligned.value[k]);
+        if (t.explained > best.explained + 0.01) {
+            best = std::move(t);
+            chosen = k;
+        }
+    }
+    const Alignment& a = aligned.value[chosen];
+    r.model_to_card = a.model_to_card;
+    r.symmetry_error = a.symmetry_error;
+    const SurfaceSamples& samples = best.samples;
+    const RansacOptions& ro = best.ro;
+    const RansacResult& fit = best.fit;
     r.ransac_draws = fit.draws;
     timer.lap("fit_primitives");
     stop_if_cancelled(cancel, "fit_design: fitting primitives");

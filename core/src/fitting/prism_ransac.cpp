@@ -58,7 +58,7 @@ Section section_of(const Prism& m)
 }
 
 /// Face index: 0 top or ground slope, 1 side s1 (rect), 2 side s0 or backdrop slope, 3 end a0,
-/// 4 end a1.
+/// 4 end a1, 5 a rectangular prism's backbone (its hinge plane, s = 0, on a flat host).
 Where classify(const Prism& m, const Section& sec, const Local& l, double eps, bool flat,
                int* face = nullptr)
 {
@@ -76,6 +76,10 @@ Where classify(const Prism& m, const Section& sec, const Local& l, double eps, b
         const bool in_t = l.t > -eps && l.t < m.height + eps;
         if (!in_s || !in_t)
             return Where::outside;
+        // A box fold's backbone C stands on its hinge from the page to the top: a wall of the
+        // model there (an L's inner wall with the fold on it) lies on the box, not inside it.
+        if (flat && std::abs(l.s) < eps && std::abs(l.ns) > kNormalAgreement && l.t < m.height)
+            return set(5);
         if (deep_a && l.s > m.s0 + eps && l.s < m.s1 - eps && l.t > eps && l.t < m.height - eps)
             return Where::inside;
         if (std::abs(l.t - m.height) < eps && l.nt > kNormalAgreement)
@@ -214,8 +218,12 @@ bool fit_host(const PrismHost& h, Prism& m, double eps, double min_part)
             m.s1 = d;
         } else {
             m.s0 = 0;
-            if (m.s1 >= h.across_max || m.height >= h.up_max * 0.98)
-                return false; // a step must stay below its wall and on its page
+            // A step must stay below its wall and on its page: one as tall as its wall (an
+            // arm behind a box, flush with its top) stops just below it.
+            if (m.height >= h.up_max * 0.98 && m.height <= h.up_max + eps)
+                m.height = h.up_max * 0.98;
+            if (m.s1 >= h.across_max || m.height > h.up_max * 0.98)
+                return false;
         }
         if (m.s1 - m.s0 < eps || m.height < eps)
             return false;
@@ -275,6 +283,18 @@ private:
     std::array<double, kLevels> sizes_{};
 };
 
+/// True when a corner of the prism stands above the highest sample by more than ε: a prism
+/// lies inside the model (a tent fitted to two near-parallel slopes would otherwise put its
+/// apex far above it). Only the height: across and along, a box grown to the thinnest part
+/// may reach past a thin model.
+bool outside_model(const Prism& m, const PrismHost& h, const Eigen::AlignedBox3d& model, double eps)
+{
+    for (const Vec3& c : m.corners(h))
+        if (c.z() > model.max().z() + eps)
+            return true;
+    return false;
+}
+
 struct Scored {
     Prism prism;
     double score = -1; ///< estimated inliers among the remaining samples
@@ -282,7 +302,11 @@ struct Scored {
 
 class Search {
 public:
-    Search(const SurfaceSamples& samples, const RansacOptions& o) : s_(samples), o_(o) {}
+    Search(const SurfaceSamples& samples, const RansacOptions& o) : s_(samples), o_(o)
+    {
+        for (const Vec3& p : samples.points)
+            box_.extend(p);
+    }
 
     std::vector<Local> locals(const PrismHost& h) const
     {
@@ -323,11 +347,38 @@ public:
         open.a1 = 1e300;
         const Section sec = section_of(open);
         std::vector<double> along;
+        // A wall across the hinge inside the section, standing on the host, stops the growth
+        // before it: past an L's inner corner the same top and front belong to another part
+        // (the prism would enclose that wall). A wall higher up (a cab on a chassis) is a part
+        // on top of a lower one; the volumetric test judges the grown prism then.
+        std::vector<std::pair<double, double>> walls; // (a, t) of such samples
         for (const Local& q : subset) {
             int face = -1;
-            if (classify(open, sec, q, o_.threshold, h.flat, &face) == Where::face && face <= 2)
+            const Where w = classify(open, sec, q, o_.threshold, h.flat, &face);
+            if (w == Where::face && face <= 2)
                 along.push_back(q.a);
+            else if (w == Where::inside && std::abs(q.na) > kNormalAgreement &&
+                     (q.a < m.a0 || q.a > m.a1))
+                walls.push_back({q.a, q.t});
         }
+        std::sort(walls.begin(), walls.end());
+        double stop_lo = -1e300, stop_hi = 1e300;
+        for (size_t i = 0; i < walls.size();) {
+            size_t j = i;
+            double lowest = walls[i].second;
+            while (j + 1 < walls.size() && walls[j + 1].first - walls[j].first <= o_.threshold)
+                lowest = std::min(lowest, walls[++j].second);
+            if (lowest < 0.25 * m.height) {
+                if (walls[i].first < m.a0)
+                    stop_lo = std::max(stop_lo, walls[j].first);
+                else
+                    stop_hi = std::min(stop_hi, walls[i].first);
+            }
+            i = j + 1;
+        }
+        along.erase(std::remove_if(along.begin(), along.end(),
+                                   [&](double a) { return a <= stop_lo || a >= stop_hi; }),
+                    along.end());
         if (along.empty())
             return;
         std::sort(along.begin(), along.end());
@@ -343,6 +394,12 @@ public:
             ++j;
         m.a0 = std::min(m.a0, along[i]);
         m.a1 = std::max(m.a1, along[j]);
+        // Grown up to the wall that stopped it: the part ends on that wall (the scoring subset
+        // is sparse, its last face sample falls short of it).
+        if (m.a0 - stop_lo <= gap)
+            m.a0 = stop_lo;
+        if (stop_hi - m.a1 <= gap)
+            m.a1 = stop_hi;
     }
 
     /// Local optimisation: each face moves to the median of its inliers, slopes to their
@@ -359,7 +416,9 @@ public:
                 if (classify(m, sec, l[i], o_.threshold, h.flat, &f) != Where::face)
                     continue;
                 const Local& q = l[i];
-                if (m.kind == Prism::Kind::rectangular) {
+                if (f == 5) {
+                    continue; // the backbone stays on the hinge
+                } else if (m.kind == Prism::Kind::rectangular) {
                     const double c[5] = {q.t, q.s, q.s, q.a, q.a};
                     coord[f].push_back(c[f]);
                 } else if (f == 0) {
@@ -411,7 +470,8 @@ public:
                 next.a0 = median(coord[3]);
             if (!coord[4].empty())
                 next.a1 = median(coord[4]);
-            if (!fit_host(h, next, o_.threshold, o_.min_part))
+            if (!fit_host(h, next, o_.threshold, o_.min_part) ||
+                outside_model(next, h, box_, o_.threshold))
                 return;
             m = next;
         }
@@ -420,6 +480,7 @@ public:
 private:
     const SurfaceSamples& s_;
     const RansacOptions& o_;
+    Eigen::AlignedBox3d box_; ///< the samples' bounding box (card frame)
 };
 
 /// True when the prism's box overlaps one of `taken` by more than ε along every axis: two
@@ -536,6 +597,7 @@ RansacResult fit_prisms(const SurfaceSamples& samples, const PrismHost& card,
     r.hosts.push_back(card);
     r.owner.assign(total, -1);
     r.on_base.assign(total, false);
+    r.on_principal.assign(total, false);
     if (total == 0)
         return r;
     Search search(samples, o);
@@ -647,7 +709,8 @@ RansacResult fit_prisms(const SurfaceSamples& samples, const PrismHost& card,
                     if (fit_host(host, rect, eps, o.min_part)) {
                         const double sc =
                             search.score(rect, sub[h], grd[h], host.flat, scale, best_rect.score);
-                        if (sc > best_rect.score && !overlaps(rect, host, taken, eps))
+                        if (sc > best_rect.score && !overlaps(rect, host, taken, eps) &&
+                            !outside_model(rect, host, box, eps))
                             best_rect = {rect, sc};
                     }
                 }
@@ -673,7 +736,8 @@ RansacResult fit_prisms(const SurfaceSamples& samples, const PrismHost& card,
                 if (!fit_host(host, tri, eps, o.min_part))
                     continue;
                 const double sc = search.score(tri, sub[h], grd[h], true, scale, best_tri.score);
-                if (sc > best_tri.score && !overlaps(tri, host, taken, eps))
+                if (sc > best_tri.score && !overlaps(tri, host, taken, eps) &&
+                    !outside_model(tri, host, box, eps))
                     best_tri = {tri, sc};
             }
             r.draws += 64;
@@ -691,11 +755,14 @@ RansacResult fit_prisms(const SurfaceSamples& samples, const PrismHost& card,
                 search.refit(m, locals[m.host], remaining, host);
                 const Section sec = section_of(m);
                 int n = 0;
-                for (int i : remaining)
-                    if (classify(m, sec, locals[m.host][i], eps, host.flat) == Where::face) {
+                for (int i : remaining) {
+                    int face = -1;
+                    if (classify(m, sec, locals[m.host][i], eps, host.flat, &face) == Where::face) {
                         r.owner[i] = int(r.prisms.size());
+                        r.on_principal[i] = face <= 2 || face == 5;
                         ++n;
                     }
+                }
                 m.inliers = n;
                 r.prisms.push_back(m);
                 Eigen::AlignedBox3d box;

@@ -198,6 +198,18 @@ ModelMesh annexed_model()
     return m;
 }
 
+ModelMesh l_plan_model()
+{
+    // The plan drawn in (x, -y) and extruded 30 along the section's normal, then turned
+    // (x, y, z) -> (x, -z, y): a proper rotation, so the faces stay outward.
+    const ModelMesh flat =
+        extrude_section({{0, 0}, {0, -50}, {20, -50}, {20, -20}, {60, -20}, {60, 0}}, 0, 30);
+    Mat3 turn;
+    turn << 1, 0, 0, 0, 0, -1, 0, 1, 0;
+    ModelMesh m = moved(flat, turn, 1.0, Vec3::Zero());
+    m.source = "L plan";
+    return m;
+}
 ModelMesh l_building_model()
 {
     ModelMesh m = extrude_elevation({{0, 0}, {100, 0}, {100, 24}, {30, 24}, {30, 60}, {0, 60}}, 20);

@@ -40,6 +40,10 @@ ModelMesh annexed_model();
 /// 40 deep.
 ModelMesh l_building_model();
 
+/// An L in plan, 30 high: a wing 60 (x) by 20 (y) along the front, and an arm 20 (x) by 50 (y)
+/// from its left end to the back (tools/make_models.py's "l_building").
+ModelMesh l_plan_model();
+
 /// A UV sphere of `radius` at `centre` (segments around, rings from pole to pole).
 ModelMesh sphere_mesh(const Vec3& centre, double radius, int segments = 32, int rings = 16);
 /// A closed cylinder between two points.

@@ -520,3 +520,56 @@ TEST(FitDesign, PrimitiveSearchStopsAtItsCancelFlag)
     EXPECT_NEAR(r.prisms[0].s1, 20, 0.02 * 40);
     EXPECT_NEAR(r.prisms[0].a1 - r.prisms[0].a0, 120, 0.02 * 120);
 }
+
+/// The L in plan of tools/make_models.py (a wing 60 x 20 along the front, an arm 20 x 50 to the
+/// back, 30 high): no mirror plane, so the fold stands on the wing's back wall (y = 20), which
+/// becomes the wing box's backbone. Two box folds side by side, each 20 deep on both sides of
+/// the fold, and a step on the arm box's back side for the arm's last 10 behind it.
+TEST(FitDesign, LInPlanIsTwoBoxesOnTheWingsBackWallAndAStep)
+{
+    FitOptions given;
+    given.up = Vec3(0, 0, 1);
+    given.facing = Vec3(0, -1, 0);
+    for (const FitOptions& o : {given, FitOptions()}) {
+        const FitResult r = fitted(l_plan_model(), o);
+        ASSERT_EQ(r.mechanisms.size(), 3u) << describe(r);
+        // Fold on y = 20: 20 in front, 30 behind; the card fits 60 long, 30 deep, 30 high.
+        const double s = expected_scale(60, 30, 30, o);
+        const double scale = r.model_to_card.block(0, 0, 3, 1).norm();
+        EXPECT_NEAR(scale, s, 1e-9 * s);
+        const double tol = 0.02 * std::sqrt(60 * 60 + 50 * 50 + 30 * 30) * s; // 2 % of diagonal
+        const FittedMechanism *wing = nullptr, *arm = nullptr, *step = nullptr;
+        for (const FittedMechanism& m : r.mechanisms) {
+            if (m.type == "step_fold")
+                step = &m;
+            else if (m.type == "box_fold" && m.parameters.at("width") > 30 * s)
+                wing = &m;
+            else if (m.type == "box_fold")
+                arm = &m;
+        }
+        ASSERT_TRUE(wing && arm && step) << describe(r);
+        for (const FittedMechanism* box : {wing, arm}) {
+            EXPECT_EQ(box->host, "central fold");
+            EXPECT_NEAR(box->parameters.at("depth_ground"), 20 * s, tol) << box->name;
+            EXPECT_NEAR(box->parameters.at("depth_backdrop"), 20 * s, tol) << box->name;
+            EXPECT_NEAR(box->parameters.at("height"), 30 * s, tol) << box->name;
+        }
+        EXPECT_NEAR(wing->parameters.at("width"), 40 * s, tol);
+        EXPECT_NEAR(arm->parameters.at("width"), 20 * s, tol);
+        // Side by side along the fold: the arm at one end of the L's 60, the wing beyond it.
+        const double arm_end = arm->parameters.at("offset") + arm->parameters.at("width");
+        const double wing_end = wing->parameters.at("offset") + wing->parameters.at("width");
+        EXPECT_NEAR(std::min(std::abs(arm_end - wing->parameters.at("offset")),
+                             std::abs(wing_end - arm->parameters.at("offset"))),
+                    0.0, tol);
+        // The step stands on the arm's back wall (the backdrop side, or the ground side when
+        // NPCA turns the card): 10 along the page, as tall as the wall (a step stops at 98 % of
+        // its wall, the generator's bound).
+        const bool behind = step->host == arm->name + ".side_backdrop";
+        ASSERT_TRUE(behind || step->host == arm->name + ".side_ground") << describe(r);
+        const auto& q = step->parameters;
+        EXPECT_NEAR(q.at(behind ? "run_backdrop" : "run_ground"), 10 * s, tol);
+        EXPECT_NEAR(q.at(behind ? "run_ground" : "run_backdrop"), 30 * s, tol);
+        EXPECT_NEAR(step->parameters.at("width"), 20 * s, tol);
+    }
+}

@@ -1,5 +1,6 @@
 #pragma once
 #include <optional>
+#include <vector>
 
 #include "popup/fitting/model_mesh.hpp"
 #include "popup/fitting/surface_samples.hpp"
@@ -26,11 +27,24 @@ struct CardRoom {
     double margin = 0.1; ///< fraction of each card dimension kept free on every side
 };
 
-/// NPCA up axis (the principal axis of the area-weighted normal covariance, or `up`), the mirror
-/// plane containing it (its normal becomes card x unless `facing` is given), the tight box in
-/// that frame and the scale that keeps the model inside the closed card. `samples` are the
-/// model's pseudo-vertices in model units, used to score mirror planes. Errors name `up` or
+/// The alignments worth fitting, best guess first (docs/MATH.md, "Which way is up"). Up is
+/// `up`, else the signed NPCA axis (of the area-weighted normal covariance) whose bounding-box
+/// bottom carries the most flat downward-facing area. Card x is `facing`, else the normal of
+/// the mirror plane containing up; the fold lies at the middle of the model's extent across x.
+/// When that plane is no mirror plane (mean mirrored-sample distance above one sample spacing:
+/// an L), the horizontal NPCA axes are offered as x too, and for each x the fold may also
+/// stand on the model's two largest inner walls across x (each at least 5 % of its area).
+/// Each candidate carries the tight box and the scale that keeps the model inside the closed
+/// card. `samples` are the model's pseudo-vertices in model units. Errors name `up` or
 /// `facing` when they are zero, not finite, or parallel to each other.
+Result<std::vector<Alignment>> alignment_candidates(const ModelMesh& model,
+                                                    const SurfaceSamples& samples,
+                                                    const std::optional<Vec3>& up,
+                                                    const std::optional<Vec3>& facing,
+                                                    const CardRoom& room);
+
+/// The first of alignment_candidates(): up, the mirror plane containing it (its normal becomes
+/// card x unless `facing` is given), the fold at the middle of the model across it.
 Result<Alignment> align_model(const ModelMesh& model, const SurfaceSamples& samples,
                               const std::optional<Vec3>& up, const std::optional<Vec3>& facing,
                               const CardRoom& room);

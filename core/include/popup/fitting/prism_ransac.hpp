@@ -65,10 +65,13 @@ struct RansacOptions {
 };
 
 struct RansacResult {
-    std::vector<PrismHost> hosts;        ///< the card's pair first, then as primitives offer them
-    std::vector<Prism> prisms;           ///< in the order found (hosts before what they carry)
-    std::vector<int> owner;              ///< per sample: the prism it is an inlier of, or -1
-    std::vector<bool> on_base;           ///< per sample: lies on a host's plane (under a prism)
+    std::vector<PrismHost> hosts; ///< the card's pair first, then as primitives offer them
+    std::vector<Prism> prisms;    ///< in the order found (hosts before what they carry)
+    std::vector<int> owner;       ///< per sample: the prism it is an inlier of, or -1
+    std::vector<bool> on_base;    ///< per sample: lies on a host's plane (under a prism)
+    /// Per sample: lies on a face of its prism that its mechanism makes of paper (a top, a
+    /// side, a slope, a box's backbone), not on an end across the hinge.
+    std::vector<bool> on_principal;
     long draws = 0;                      ///< minimal samples drawn
     bool stopped_by_probability = false; ///< P(τ, C) > p_t ended the search
 };
