@@ -37,10 +37,10 @@ void add_box(ModelMesh& mesh, const Vec3& lo, const Vec3& hi)
 }
 
 const Vec3 body_origin(0, 150, 0);
-// At the last frame (the card open flat) the arm lies over x in [-3, 66] and y in [61, 69].
-const Vec3 arm_lo(-3, 61, -2), arm_hi(66, 69, 2);
+// At the last frame (the card open flat) the arm lies over x in [-3, 66] and y in [63, 67].
+const Vec3 arm_lo(-3, 63, -2), arm_hi(66, 67, 2);
 
-/// Bones body (root), arm and head (no vertices: pruned into the body); the arm's origin
+/// Bones body (root), arm and head, a box each; the arm's origin
 /// follows the sample horizontal translation's point; the mesh is authored at the last frame.
 Animation rig()
 {
@@ -58,10 +58,11 @@ Animation rig()
     const Vec3 tip_open = mechanism_point(h, M_PI);
     add_box(a.mesh, Vec3(-20, 120, -5), Vec3(20, 175, 5)); // body
     add_box(a.mesh, arm_lo, arm_hi);                       // arm
+    add_box(a.mesh, Vec3(-8, 175, -4), Vec3(8, 190, 4));   // head
     a.bind_inverse = {at(body_origin).inverse(), at(Vec3(tip_open.x(), tip_open.y(), 0)).inverse(),
                       at(body_origin + Vec3(0, 20, 0)).inverse()};
-    for (int v = 0; v < 16; ++v)
-        a.skin.push_back({{v < 8 ? 0 : 1, 1.0}});
+    for (int v = 0; v < 24; ++v)
+        a.skin.push_back({{v / 8, 1.0}});
     return a;
 }
 
