@@ -158,6 +158,9 @@ TEST(MotionOutlines, TheArmsPatchIsItsPosedBoxClippedToThePatch)
         poly.push_back(x.head<2>());
     }
     const double expected = area_of(clip_to_rectangle(poly, arm_lo.head<2>(), arm_hi.head<2>()));
+    // By hand: M lies from the fold (x = 0) to the reach, 60 mm for the rig's mechanism (fitted
+    // within 1 %), and the box's 4 mm band y in [63, 67] lies inside M's width: 60 × 4 mm².
+    EXPECT_NEAR(expected, 60.0 * 4.0, 0.01 * 240.0);
     ASSERT_GT(expected, 1.0);
     ASSERT_LT(expected, area_of(poly) - 1.0); // the box does cut the patch
     EXPECT_NEAR(profile->area, expected, 1e-3);
