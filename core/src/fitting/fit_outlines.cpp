@@ -46,7 +46,8 @@ struct Part {
 /// The mechanism's principal parts in `s`, sorted by part name: the order in which the
 /// workbench applies a feature's profiles (popupwb.profiles.apply_profiles), so each frame is
 /// measured on the same paper in both places.
-std::vector<Part> parts_of(const Scaffold& s, const FittedMechanism& m)
+std::vector<Part> parts_of(const Scaffold& s, const FittedMechanism& m,
+                           const std::vector<std::string>& prefixes)
 {
     std::vector<Part> out;
     const std::string prefix = m.name + ".";
@@ -54,7 +55,7 @@ std::vector<Part> parts_of(const Scaffold& s, const FittedMechanism& m)
         if (p.name.rfind(prefix, 0) != 0)
             continue;
         const std::string part = p.name.substr(prefix.size());
-        for (const std::string& principal : principal_parts(m.type))
+        for (const std::string& principal : prefixes)
             if (is_part(part, principal)) {
                 out.push_back({p.id, part});
                 break;
@@ -310,62 +311,84 @@ std::vector<std::string> principal_parts(const std::string& type)
     return {};
 }
 
+namespace {
+
+/// One mechanism's outlines (fit_outlines' loop body): together when the check passes, else one
+/// at a time, keeping what the simulator accepts.
+void outline_mechanism(OutlineOutcome& out, const ModelMesh& model_in_card,
+                       const FittedMechanism& m, const std::vector<std::string>& prefixes,
+                       bool pose_at_90, const CancelFlag* cancel)
+{
+    ValidityOptions vo;
+    vo.cancel = cancel;
+    stop_if_cancelled(cancel, "outlines");
+    const std::vector<Part> parts = parts_of(out.scaffold, m, prefixes);
+    if (parts.empty())
+        return;
+    // All of the mechanism's outlines at once: one check when they agree.
+    Scaffold together = out.scaffold;
+    std::vector<FittedProfile> kept;
+    bool all_applied = true;
+    for (const Part& part : parts) {
+        Result<FittedProfile> fp = outline_part(together, model_in_card, m, part, pose_at_90);
+        if (!fp.ok) {
+            all_applied = false;
+            break;
+        }
+        if (!fp.value.part.empty())
+            kept.push_back(fp.value);
+    }
+    if (all_applied && check_validity(together, vo).valid()) {
+        out.scaffold = together;
+        for (const FittedProfile& fp : kept)
+            out.profiles.push_back(fp);
+        return;
+    }
+    // One at a time: keep what the simulator accepts.
+    for (const Part& part : parts) {
+        Scaffold trial = out.scaffold;
+        Result<FittedProfile> fp = outline_part(trial, model_in_card, m, part, pose_at_90);
+        if (!fp.ok) {
+            out.dropped.push_back(
+                {m.name, "profile dropped",
+                 part.name + ": " + first_error(fp.diagnostics, "it could not be applied")});
+            continue;
+        }
+        if (fp.value.part.empty())
+            continue; // the part is already the model's outline there
+        const ValidityReport report = check_validity(trial, vo);
+        if (!report.valid()) {
+            out.dropped.push_back({m.name, "profile dropped",
+                                   part.name + ": the validity check failed with it: " +
+                                       first_error(report.diagnostics, "not valid")});
+            continue;
+        }
+        out.scaffold = trial;
+        out.profiles.push_back(fp.value);
+    }
+}
+
+} // namespace
+
 OutlineOutcome fit_outlines(const ModelMesh& model_in_card, const Scaffold& scaffold,
                             const std::vector<FittedMechanism>& mechanisms,
                             const CancelFlag* cancel)
 {
     OutlineOutcome out;
     out.scaffold = scaffold;
-    ValidityOptions vo;
-    vo.cancel = cancel;
-    for (const FittedMechanism& m : mechanisms) {
-        stop_if_cancelled(cancel, "fit_design: outlines");
-        const std::vector<Part> parts = parts_of(out.scaffold, m);
-        if (parts.empty())
-            continue;
-        const bool flat = lies_flat(out.scaffold, m);
-        // All of the mechanism's outlines at once: one check when they agree.
-        Scaffold together = out.scaffold;
-        std::vector<FittedProfile> kept;
-        bool all_applied = true;
-        for (const Part& part : parts) {
-            Result<FittedProfile> fp = outline_part(together, model_in_card, m, part, flat);
-            if (!fp.ok) {
-                all_applied = false;
-                break;
-            }
-            if (!fp.value.part.empty())
-                kept.push_back(fp.value);
-        }
-        if (all_applied && check_validity(together, vo).valid()) {
-            out.scaffold = together;
-            for (const FittedProfile& fp : kept)
-                out.profiles.push_back(fp);
-            continue;
-        }
-        // One at a time: keep what the simulator accepts.
-        for (const Part& part : parts) {
-            Scaffold trial = out.scaffold;
-            Result<FittedProfile> fp = outline_part(trial, model_in_card, m, part, flat);
-            if (!fp.ok) {
-                out.dropped.push_back(
-                    {m.name, "profile dropped",
-                     part.name + ": " + first_error(fp.diagnostics, "it could not be applied")});
-                continue;
-            }
-            if (fp.value.part.empty())
-                continue; // the part is already the model's outline there
-            const ValidityReport report = check_validity(trial, vo);
-            if (!report.valid()) {
-                out.dropped.push_back({m.name, "profile dropped",
-                                       part.name + ": the validity check failed with it: " +
-                                           first_error(report.diagnostics, "not valid")});
-                continue;
-            }
-            out.scaffold = trial;
-            out.profiles.push_back(fp.value);
-        }
-    }
+    for (const FittedMechanism& m : mechanisms)
+        outline_mechanism(out, model_in_card, m, principal_parts(m.type),
+                          lies_flat(out.scaffold, m), cancel);
+    return out;
+}
+
+OutlineOutcome fit_outlines_of(const ModelMesh& model_in_card, const Scaffold& scaffold,
+                               const FittedMechanism& mechanism,
+                               const std::vector<std::string>& parts, const CancelFlag* cancel)
+{
+    OutlineOutcome out;
+    out.scaffold = scaffold;
+    outline_mechanism(out, model_in_card, mechanism, parts, false, cancel);
     return out;
 }
 

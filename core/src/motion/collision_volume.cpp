@@ -19,6 +19,12 @@ std::array<Vec3, 8> OrientedBox::corners() const
 double overlap_depth(const OrientedBox& a, const OrientedBox& b)
 {
     const Vec3 d = b.centre - a.centre;
+    if (a.axes == Mat3::Identity() && b.axes == Mat3::Identity()) {
+        // Two axis-aligned boxes (every collision volume): the 15 axes reduce to the three
+        // coordinate axes (the edge crossings are ±e_k or zero), with the same overlaps.
+        const Vec3 overlap = a.half + b.half - d.cwiseAbs();
+        return overlap.minCoeff() <= 0 ? 0.0 : overlap.minCoeff();
+    }
     double depth = std::numeric_limits<double>::infinity();
     // The shadow of a box on unit axis n has radius Σ half_i |axis_i · n|; the boxes overlap on
     // n by ra + rb − |d·n|.
@@ -53,20 +59,26 @@ CollisionVolume collision_volume(const MotionMechanism& m, const VolumeOptions& 
 {
     CollisionVolume v;
     const int n = std::max(1, options.bands), k = std::max(1, options.samples_per_band);
-    std::vector<Vec3> previous;
+    std::vector<Vec3> previous, now;
     for (int band = 0; band < n; ++band) {
         Eigen::AlignedBox3d box;
         double chord = 0.0;
-        previous.clear();
+        // A band starts at the angle where the one before ended: its vertices are `previous`.
+        const bool shared = band > 0;
+        if (!shared)
+            previous.clear();
         for (int i = 0; i <= k; ++i) {
             const double theta = M_PI * (band + double(i) / k) / n;
-            const std::vector<Vec3> now = mechanism_vertices(m, theta);
+            if (i == 0 && shared)
+                now.swap(previous);
+            else
+                now = mechanism_vertices(m, theta);
             for (std::size_t j = 0; j < now.size(); ++j) {
                 box.extend(now[j]);
-                if (j < previous.size())
+                if (i > 0 && j < previous.size())
                     chord = std::max(chord, (now[j] - previous[j]).norm());
             }
-            previous = now;
+            previous.swap(now);
         }
         OrientedBox b;
         b.centre = box.center();

@@ -18,6 +18,10 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+/// A chain the search moved onto a mechanism this much worse (E_m, fraction of the character's
+/// diagonal) than its own mapping is not resolved by it (docs/DESIGN.md, Conflicting chains).
+constexpr double remap_bound = 0.1;
+
 double seconds_since(Clock::time_point t)
 {
     return std::chrono::duration<double>(Clock::now() - t).count();
@@ -207,6 +211,42 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
     for (const AnnealResult& a : results)
         r.iterations += a.iterations;
     r.timings_s.push_back({"annealing", seconds_since(t)});
+
+    // Conflicts the search resolved by moving a chain off its own mechanism onto one that
+    // misses its path by more than remap_bound (of the diagonal) beyond its own: the chain is
+    // not resolved (thesis §6.4.3), so when its own mechanism collides with another slot's it
+    // becomes stationary instead, and the reason names the other chain.
+    for (int i = int(state.slots.size()) - 1; i >= 0; --i) {
+        const Slot& s = state.slots[i];
+        if (s.chains.size() != 1 || s.mechanism.kind == MotionKind::stationary)
+            continue;
+        const int j = s.chains.front();
+        const Candidate& own = p.candidates[j][int(mapped[j])];
+        const double error = motion_error(s.mechanism, p.chains[j]);
+        if (mapped[j] == MotionKind::stationary || !std::isfinite(own.error_mm) ||
+            error <= own.error_mm + remap_bound * p.diagonal)
+            continue;
+        AnnealState trial = state;
+        trial.slots[i].mechanism = own.mechanism;
+        const SlotCollision* worst = nullptr;
+        const std::vector<SlotCollision> hits = state_collisions(p, trial);
+        for (const SlotCollision& h : hits)
+            if ((h.a == i || h.b == i) && (!worst || h.depth > worst->depth))
+                worst = &h;
+        if (!worst)
+            continue; // its own mechanism fits in: the search kept the other one for eq 6.5
+        const int other = worst->a == i ? worst->b : worst->a;
+        std::ostringstream why;
+        why << "its own " << to_string(mapped[j]) << " mechanism (" << own.error_mm
+            << " mm from its path) collides with the one carrying "
+            << chain_names(p, state.slots[other]) << " (volumes overlap by " << worst->depth
+            << " mm) and they move too differently to share a patch (paths "
+            << path_distance(p.chains[j], p.chains[state.slots[other].chains.front()])
+            << " mm apart, RMS); the search's " << to_string(s.mechanism.kind)
+            << " instead misses it by " << error << " mm, more than " << remap_bound
+            << " of the character's diagonal worse";
+        demote(p, state, i, why.str(), reasons);
+    }
 
     // Collisions the search could not resolve: the lighter mechanism of the deepest pair
     // becomes stationary (thesis §6.4.3 move 4), until none is left.

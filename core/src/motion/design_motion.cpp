@@ -1,8 +1,10 @@
 #include "popup/motion/design_motion.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 #include "design_from_targets.hpp"
+#include "motion_outlines.hpp"
 
 namespace popup {
 
@@ -21,6 +23,25 @@ Result<MotionResult> design_motion(const Animation& animation, const MotionOptio
     stop_if_cancelled(cancel, "design_motion: targets");
     Result<MotionResult> out =
         motion::design_from_targets(targets.value, options, cancel, progress);
+    // Patches: the body parts' outlines on the built design (needs the mesh, so here).
+    if (out.ok && options.outlines) {
+        const auto t = std::chrono::steady_clock::now();
+        const std::size_t before = out.value.diagnostics.size();
+        motion::outline_motion(animation, out.value, cancel);
+        out.diagnostics.insert(out.diagnostics.end(), out.value.diagnostics.begin() + long(before),
+                               out.value.diagnostics.end());
+        const double outline_s =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+        auto& timings = out.value.timings_s;
+        auto total = std::find_if(timings.begin(), timings.end(),
+                                  [](const auto& x) { return x.first == "total"; });
+        if (total != timings.end()) {
+            total->second += outline_s;
+            timings.insert(total, {"outlines", outline_s});
+        } else {
+            timings.push_back({"outlines", outline_s});
+        }
+    }
     // The input stage first; the total counts it too.
     out.value.timings_s.insert(out.value.timings_s.begin(), {"targets", input_s});
     for (auto& [stage, seconds] : out.value.timings_s)

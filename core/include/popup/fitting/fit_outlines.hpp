@@ -35,6 +35,14 @@ OutlineOutcome fit_outlines(const ModelMesh& model_in_card, const Scaffold& scaf
                             const std::vector<FittedMechanism>& mechanisms,
                             const CancelFlag* cancel = nullptr);
 
+/// fit_outlines for one mechanism whose outlined parts are `parts` (part-name prefixes, as
+/// principal_parts gives them) instead of its type's principal parts, posed at the design state
+/// (180°). The motion design outlines each moving patch with its own body part this way.
+OutlineOutcome fit_outlines_of(const ModelMesh& model_in_card, const Scaffold& scaffold,
+                               const FittedMechanism& mechanism,
+                               const std::vector<std::string>& parts,
+                               const CancelFlag* cancel = nullptr);
+
 /// The same for `model` in its own units, placed on the card by `model_to_card` first.
 OutlineOutcome fit_outlines_for(const ModelMesh& model, const Eigen::Matrix4d& model_to_card,
                                 const Scaffold& scaffold,
