@@ -110,9 +110,9 @@ TEST(MotionTargets, ProjectsAndPlacesTheDefaultFit)
         EXPECT_LT((tip.effector[i] - expected).norm(), 1e-9) << "s = " << tip.s[i];
         EXPECT_LT((tip.root[i] - (centre - scale * box_centre)).norm(), 1e-9);
     }
-    // The still post and the hub: one sample pair each. Depth: post at z = 5 nearest (1), the
-    // others at z = 0 deepest (0).
-    EXPECT_EQ(t.paths[2].s.size(), 2u);
+    // The still post: no turn, so only the 8 equal starting intervals (MotionView.min_intervals).
+    // Depth: post at z = 5 nearest (1), the others at z = 0 deepest (0).
+    EXPECT_EQ(t.paths[2].s.size(), 9u);
     EXPECT_NEAR(t.paths[2].depth, 1.0, 1e-12);
     EXPECT_NEAR(t.paths[1].depth, 0.0, 1e-12);
     EXPECT_NEAR(t.paths[0].depth, 0.0, 1e-12);
