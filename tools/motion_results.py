@@ -135,10 +135,10 @@ def markdown(rows, seed, iterations):
     lines += [
         "",
         "Reading the table: E_m is measured at the adaptive samples of each path (thesis §6.2, "
-        "flatness τangle = 2°). A straight path is flat, so it keeps only its two end points "
-        '("fewest samples" 2): its error then says only that the mechanism starts and ends in '
-        "the right places, not how it moves between (line_vertical, line_horizontal and "
-        "rig_horizontal score 0 that way, whatever their mapping). The rigs' known paths "
+        "flatness τangle = 2°), refined from 8 equal intervals of s (MotionView.min_intervals): "
+        'a straight path keeps 9 samples ("fewest samples"), so its error sees the pace along '
+        "the line, not only where it starts and ends (with 2 samples, as first built, every "
+        "line scored 0 whatever its mapping). The rigs' known paths "
         "(tests/python/test_motion_pipeline.py) are the stricter check.",
     ]
     lines += [

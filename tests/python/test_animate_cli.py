@@ -71,16 +71,6 @@ def test_a_waving_figure_writes_its_files(waved):
     assert report["core_valid"] is True and report["validity"]["valid"] is True
 
 
-NO_TABS = pytest.mark.xfail(
-    strict=True,
-    reason="design_motion makes mechanisms whose glued creases are shorter than the sheets' "
-    "3 mm glue tab (no_room_for_tab), on every seed tried (1-7): the design is valid but its "
-    "sheets are not, so popup animate exits 1; the design helper's to fix (a minimum part "
-    "size, as FitOptions.min_part_mm)",
-)
-
-
-@NO_TABS
 def test_a_waving_figure_exits_0_with_sheets(waved):
     out, proc, report = waved
     assert proc.returncode == 0, proc.stdout + proc.stderr
@@ -190,7 +180,6 @@ def test_the_document_holds_the_reported_mechanisms(waved, freecad):
         freecad.closeDocument(doc.Name)
 
 
-@NO_TABS
 def test_popup_verify_accepts_the_sheets(waved, home):
     out = waved[0]
     proc = popup(

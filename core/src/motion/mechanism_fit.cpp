@@ -178,7 +178,8 @@ std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& t,
             auto trial = [&](double l) {
                 MotionMechanism q;
                 q.kind = MotionKind::rotation;
-                q.p = {clamp(A1.y() - l, 0, W), l, clamp(ratio * l * l / h, 2.0, D - 2), h};
+                q.p = {clamp(A1.y() - l, 0, W), l,
+                       clamp(ratio * l * l / h, shortest_crease(), D - 2), h};
                 return q;
             };
             auto eq62 = [&](double l) {
@@ -207,14 +208,14 @@ std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& t,
         m.kind = MotionKind::vertical;
         const double beta = M_PI / 4, drop = clamp(A1.y() - A0.y(), 2.0, D - 2);
         const double height = clamp(drop / std::sin(beta), shortest_crease(), D - 2);
-        const double side = clamp(0.5 * height, shortest_crease(), 0.4 * D);
+        const double side = clamp(0.5 * height, shortest_crease() / std::sin(beta), 0.4 * D);
         m.p = {clamp(A1.y(), 0, W - 2 * side * std::cos(beta)), side, height, beta};
         out[int(MotionKind::vertical)] = finish(m, 500);
     }
     {
         // Horizontal: P = r·C/|C| is at (r, y) open and on the fold closed: r from the last
         // pose; the runs' ratio k = b/a shapes x(θ) (1-D search), with a − b = r/2.
-        const double r = clamp(A1.x(), 3.0, D - 2);
+        const double r = clamp(A1.x(), shortest_crease(), D - 2);
         auto trial = [&](double k) {
             MotionMechanism q;
             q.kind = MotionKind::horizontal;
@@ -232,7 +233,7 @@ std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& t,
         m.kind = MotionKind::diagonal;
         const double alpha = M_PI / 4;
         const double diff = A1.x() / std::sin(alpha);
-        const double sum = std::abs(diff) + 20;
+        const double sum = std::abs(diff) + 2 * shortest_crease() + 2; // both runs glued
         const double a = (sum + diff) / 2, b = (sum - diff) / 2;
         // The step is 0.2 of the spine wide: at least the shortest glued crease.
         const double spine = clamp(

@@ -336,6 +336,9 @@ std::string infeasibility(const MotionMechanism& m, const CardParams& card)
         const RotationArmParams r = rotation_params(m);
         if (!(r.spine >= shortest_crease() && r.spine <= W))
             return fail("spine", r.spine, "in [shortest glued crease, card width]");
+        // The wing's width: a glue tab on its crease needs a patch that wide to sit on.
+        if (!(r.run >= shortest_crease()))
+            return fail("run", r.run, ">= the shortest glued crease");
         if (!(r.offset >= 0 && r.offset + r.spine <= W))
             return fail("offset", r.offset, "in [0, card width - spine]");
         if (!(r.run > margin && r.run < D - margin))
@@ -358,9 +361,10 @@ std::string infeasibility(const MotionMechanism& m, const CardParams& card)
             return fail("height", p.height, "in (1, card depth)");
         // Glued creases: the walls' feet and tops (side), the front spine (height) and the top's
         // diagonal (2·side·cos(wall_angle)).
-        if (!(std::min({p.side, p.height, 2 * along}) >= shortest_crease()))
+        if (!(std::min({p.side, p.height, 2 * along, across}) >= shortest_crease()))
             return fail("side", p.side,
-                        "with height and 2·side·cos(wall_angle) >= the shortest glued crease");
+                        "with height, side·sin(wall_angle) and 2·side·cos(wall_angle) >= the "
+                        "shortest glued crease");
         break;
     }
     case MotionKind::horizontal: {
@@ -373,6 +377,9 @@ std::string infeasibility(const MotionMechanism& m, const CardParams& card)
             return fail("run_ground", h.run_ground, "in (1, card depth - 1)");
         if (!(h.run_backdrop > margin && h.run_backdrop < h.run_ground - margin))
             return fail("run_backdrop", h.run_backdrop, "in (1, run_ground - 1)");
+        // The step's strips and the extruding patch carry glue tabs: each that wide.
+        if (!(std::min({h.run_backdrop, h.reach}) >= shortest_crease()))
+            return fail("run_backdrop", h.run_backdrop, "with reach >= the shortest glued crease");
         if (!(h.reach > h.run_ground - h.run_backdrop + margin && h.reach <= D - margin))
             return fail("reach", h.reach, "in (run_ground - run_backdrop + 1, card depth - 1]");
         break;
@@ -394,8 +401,10 @@ std::string infeasibility(const MotionMechanism& m, const CardParams& card)
         // wing reaches run·(1 − z/spine) from the spine; the step's creases must stay on it.
         const double room = v.run * (1 - (s.offset + s.width) / v.spine) - margin;
         // Glued creases: the wings' feet (run), the spine, the step's folds (step_width).
-        if (!(std::min({v.run, v.spine, s.width}) >= shortest_crease()))
-            return fail("run", v.run, "with spine and step_width >= the shortest glued crease");
+        if (!(std::min({v.run, v.spine, s.width, s.run_ground, s.run_backdrop}) >=
+              shortest_crease()))
+            return fail("run", v.run,
+                        "with spine, step_width and the step's runs >= the shortest glued crease");
         if (!(s.run_ground > margin && s.run_ground < room))
             return fail("run_ground", s.run_ground, "inside the v-fold's wing");
         if (!(s.run_backdrop > margin && s.run_backdrop < room))

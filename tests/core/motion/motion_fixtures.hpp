@@ -21,7 +21,7 @@ inline MotionMechanism sample_mechanism(MotionKind kind)
         m.p = {50, 30, 40, 15, 60};
         break;
     case MotionKind::diagonal:
-        m.p = {70, 60, 50 * M_PI / 180, 50, 10, 12, 12, 8}; // step 12 mm wide: a glued crease
+        m.p = {70, 60, 50 * M_PI / 180, 50, 10, 12, 16, 12}; // glued creases: >= 11.1 mm
         break;
     case MotionKind::stationary:
         m.p = {40, 30, 20, 15, 10, 18};
