@@ -14,16 +14,13 @@ allowed range).
 
 import math
 import os
-import sys
 import time
 
-from popupwb.cli_fit import DEFAULT_PAPER, _diagnostic_codes, _named, _write_sheets
+from popupwb import cli_design_steps as steps
+from popupwb.cli_design_steps import DESIGN_FILE, REPORT_FILE, SHEETS_DIR
 
-DESIGN_FILE = "design.FCStd"
-REPORT_FILE = "report.json"
 PATHS_FILE = "paths.png"
 MOVIE_FILE = "motion.gif"
-SHEETS_DIR = "sheets"
 PROGRESS_STEP = 0.1  # a progress line every 10 %
 
 
@@ -43,10 +40,8 @@ def add_parser(sub):
         "design found, 2 unusable input.",
     )
     animate.add_argument("animation", help="animation file, or a .json of named trajectories")
-    animate.add_argument("--out", required=True, metavar="DIR", help="folder for the files")
-    animate.add_argument(
-        "--seed", type=int, default=1, metavar="S", help="random seed; same seed, same design"
-    )
+    steps.add_out_flag(animate)
+    steps.add_seed_flag(animate)
     animate.add_argument(
         "--iterations",
         type=int,
@@ -75,19 +70,8 @@ def add_parser(sub):
         metavar="MM",
         help="card mm per file unit (default: the character's projected box fits the card)",
     )
-    animate.add_argument(
-        "--paper",
-        help="paper of the sheets, A4, A3, Letter, Tabloid or WxH mm; the card is the largest "
-        f"that fits on it (default: the PopUp preference, else {DEFAULT_PAPER})",
-    )
+    steps.add_paper_flag(animate)
     return animate
-
-
-class _Say:
-    """Progress lines on stderr."""
-
-    def __call__(self, text):
-        print(f"popup animate: {text}", file=sys.stderr, flush=True)
 
 
 class _Progress:
@@ -106,8 +90,7 @@ class _Progress:
 
 def _options(args, cli, motion_run):
     """The MotionOptions and the paper from the flags; InputError naming the flag."""
-    if args.seed < 0:
-        raise cli.InputError(f"--seed {args.seed}: must be >= 0")
+    steps.check_seed(args, cli)
     if not 1 <= args.iterations <= motion_run.MAX_ITERATIONS:
         raise cli.InputError(
             f"--iterations {args.iterations}: must be 1 to {motion_run.MAX_ITERATIONS}"
@@ -126,17 +109,9 @@ def _options(args, cli, motion_run):
         )
     if args.scale is not None and not (math.isfinite(args.scale) and args.scale > 0):
         raise cli.InputError(f"--scale {args.scale:g}: must be a finite number of mm > 0")
-    try:
-        view = motion_run.direction(args.view, "--view") if args.view is not None else None
-        up = motion_run.direction(args.up, "--up") if args.up is not None else None
-    except ValueError as e:
-        raise cli.InputError(str(e))
-    paper = args.paper or cli._preferences().sheet_paper or DEFAULT_PAPER
-    try:
-        card_size = motion_run.card_size_for_paper(paper)
-    except ValueError as e:
-        raise cli.InputError(f"--paper {paper}: {cli._one_line(e)}")
-    try:
+    view, up = steps.directions(args, cli, motion_run.direction, ("view", "up"))
+    paper, card_size = steps.paper_and_card_size(args, cli, motion_run.card_size_for_paper)
+    with steps.core_range_checks(cli):
         options = motion_run.motion_options(
             seed=args.seed,
             iterations=args.iterations,
@@ -147,26 +122,20 @@ def _options(args, cli, motion_run):
             scale=args.scale,
             card_size=card_size,
         )
-    except ValueError as e:  # the core's own range checks of the same values
-        raise cli.InputError(cli._one_line(e))
     return options, paper
 
 
 def run(args, cli):
     """The `popup animate` command; `cli` is the popupwb.cli module that parsed `args`."""
-    say = _Say()
+    say = steps.Say("animate")
     popupcore = cli._import_core()
     from popupwb.motion import motion_run
 
-    for needed in ("load_animation", "load_trajectories", "MotionOptions", "design_motion"):
-        if not hasattr(popupcore, needed):
-            raise RuntimeError(f"popupcore.{needed} is missing: rebuild (make build)")
+    steps.require_core(
+        popupcore, ("load_animation", "load_trajectories", "MotionOptions", "design_motion")
+    )
     options, paper = _options(args, cli, motion_run)
-    if os.path.exists(args.out) and not os.path.isdir(args.out):
-        raise cli.InputError(f"--out {args.out}: is a file, not a folder")
-    why = cli.unreadable(args.animation)
-    if why:
-        raise cli.InputError(why)
+    steps.check_out_and_input(args, cli, args.animation)
 
     stages = motion_run.Stages(say)
     with stages.stage("load", f"reading {args.animation}"):
@@ -174,7 +143,7 @@ def run(args, cli):
             try:
                 animation, what = motion_run.read_animation(args.animation)
             except (ValueError, RuntimeError, OSError) as e:
-                raise cli.InputError(_named(args.animation, e, cli))
+                raise cli.InputError(steps.named(args.animation, e, cli))
     say(what)
 
     os.makedirs(args.out, exist_ok=True)
@@ -189,14 +158,9 @@ def run(args, cli):
     try:
         result = motion_run.design(animation, options, on_progress=_Progress(say))
     except popupcore.DesignError as e:
-        if "no_design_found" not in _diagnostic_codes(e):
-            raise cli.InputError(_named(args.animation, e, cli))
-        say(f"no valid design: {cli._one_line(e)}")
+        steps.raise_unless_no_design(e, args.animation, cli)
         report = _report(common, None, None, stages, files)
-        report["diagnostics"] = list(getattr(e, "diagnostics", None) or [])
-        _write_report(args.out, report, files, say)
-        print(f"no valid design found for {args.animation}; see {files['report']}")
-        return cli.EXIT_INVALID
+        return steps.report_no_design(args, cli, args.animation, e, report, files, say)
     _add_core_stages(stages, result, time.perf_counter() - started)
     say(
         f"{len(result.chains)} chain(s) on {len(result.mechanisms)} mechanism(s); weighted "
@@ -206,25 +170,9 @@ def run(args, cli):
     validity = _write_design(args, cli, result, animation, stages, files, say)
     _write_pictures(args, result, animation, stages, files, say)
     report = _report(common, result, validity, stages, files)
-    if report["valid"] and result.mechanisms:
-        status = _write_sheets(args, cli, paper, files, stages, say)
-    else:
-        status = cli.EXIT_INVALID
-        for d in report.get("diagnostics") or []:
-            say(f"{d.get('severity', 'error')}: {d.get('code')}: {d.get('message')}")
-        say("no valid design found: no sheets written")
-    from popupwb.fitting.fit_report import timings
-
-    report["timings_s"] = timings(stages.timings, stages.total())
-    report["sheets_ok"] = bool(report["valid"] and status == cli.EXIT_VALID)
-    _write_report(args.out, report, files, say)
-    _print_summary(report, files)
-    if report["valid"] and status != cli.EXIT_VALID:
-        print(
-            "but its cutting sheets have errors (listed above; "
-            f"{os.path.join(files['sheets'], 'report.json')})"
-        )
-    return status if report["valid"] else cli.EXIT_INVALID
+    valid = report["valid"] and result.mechanisms
+    status = steps.sheets_of_valid_design(args, cli, paper, report, valid, files, stages, say)
+    return steps.finish(args, cli, report, status, files, stages, say, _print_summary)
 
 
 def _add_core_stages(stages, result, wall_s):
@@ -238,24 +186,17 @@ def _add_core_stages(stages, result, wall_s):
 
 def _write_design(args, cli, result, animation, stages, files, say):
     """Builds, checks and saves the FreeCAD design; returns the check's dict."""
-    with cli._stdout_to_stderr():
-        FreeCAD = cli._import_freecad()
-        from popupwb import validity
+    with steps.design_document(cli, "PopUpAnimate") as doc:
         from popupwb.motion.design_from_motion import build_design
 
-        doc = FreeCAD.newDocument("PopUpAnimate")
-        try:
-            with stages.stage("document", "building the card's features"):
-                design = build_design(
-                    doc, result, animation, source_file=os.path.abspath(args.animation)
-                )
-            with stages.stage("check", "checking the card's validity"):
-                checked = validity.run_check(design.card)
-            files["design"] = os.path.join(args.out, DESIGN_FILE)
-            doc.saveAs(os.path.abspath(files["design"]))
-        finally:
-            FreeCAD.closeDocument(doc.Name)
-    say(f"wrote {files['design']}")
+        _, checked = steps.build_and_check(
+            stages,
+            lambda: build_design(
+                doc, result, animation, source_file=os.path.abspath(args.animation)
+            ),
+        )
+        path = steps.save_design(doc, args.out, files)
+    say(f"wrote {path}")
     return checked
 
 
@@ -306,31 +247,16 @@ def _report(common, result, validity, stages, files):
     )
 
 
-def _write_report(out, report, files, say):
-    from popupwb.motion.motion_report import write_report
-
-    files["report"] = os.path.join(out, REPORT_FILE)
-    report["files"] = dict(files)
-    write_report(report, files["report"])
-    say(f"wrote {files['report']}")
-
-
 def _print_summary(report, files):
-    for role in ("design", "paths", "movie", "report"):
-        if role in files:
-            print(f"wrote {files[role]}")
+    steps.print_written(files, ("design", "paths", "movie", "report"))
     for chain in report["chains"]:
         why = f" ({chain['reason']})" if chain["reason"] else ""
         print(
             f"chain {chain['name']}: {chain['mechanism']}, {chain['status']}{why}, error "
-            f"{_g(chain['error'])}, weight {_g(chain['weight'])}"
+            f"{steps.g(chain['error'])}, weight {steps.g(chain['weight'])}"
         )
     print(
         f"{report['number_of_mechanisms']} mechanism(s); weighted motion error "
-        f"{_g(report['weighted_error'])} of the character's diagonal"
+        f"{steps.g(report['weighted_error'])} of the character's diagonal"
     )
     print("valid design" if report["valid"] else "no valid design found")
-
-
-def _g(value):
-    return "n/a" if value is None else f"{value:.4g}"

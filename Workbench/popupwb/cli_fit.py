@@ -14,13 +14,11 @@ second copy of it.
 
 import math
 import os
-import sys
 
-DESIGN_FILE = "design.FCStd"
-REPORT_FILE = "report.json"
+from popupwb import cli_design_steps as steps
+from popupwb.cli_design_steps import DESIGN_FILE, REPORT_FILE, SHEETS_DIR
+
 PREVIEW_FILE = "preview.png"
-SHEETS_DIR = "sheets"
-DEFAULT_PAPER = "A4"
 
 
 def add_parser(sub, max_mechanisms):
@@ -34,7 +32,7 @@ def add_parser(sub, max_mechanisms):
         "files of popup sheet). Exit 0 valid, 1 no valid design found, 2 unusable input.",
     )
     fit.add_argument("model", help="model file, or an .FCStd holding Mesh or Part objects")
-    fit.add_argument("--out", required=True, metavar="DIR", help="folder for the files")
+    steps.add_out_flag(fit)
     fit.add_argument(
         "--max-mechanisms",
         type=int,
@@ -42,9 +40,7 @@ def add_parser(sub, max_mechanisms):
         metavar="N",
         help=f"at most this many mechanisms, 1 to {max_mechanisms} (default 8)",
     )
-    fit.add_argument(
-        "--seed", type=int, default=1, metavar="S", help="random seed; same seed, same design"
-    )
+    steps.add_seed_flag(fit)
     fit.add_argument(
         "--detail",
         type=float,
@@ -59,11 +55,7 @@ def add_parser(sub, max_mechanisms):
         help="shortest glued crease a mechanism may have, mm (default: what the sheets' "
         "narrowest glue tab needs; 0 allows any, and the sheets may then refuse a tab)",
     )
-    fit.add_argument(
-        "--paper",
-        help=f"paper of the sheets, A4, A3, Letter, Tabloid or WxH mm; the card is the largest "
-        f"that fits on it (default: the PopUp preference, else {DEFAULT_PAPER})",
-    )
+    steps.add_paper_flag(fit)
     fit.add_argument(
         "--up",
         metavar="X,Y,Z",
@@ -77,74 +69,39 @@ def add_parser(sub, max_mechanisms):
     return fit
 
 
-class _Say:
-    """Progress lines on stderr."""
-
-    def __call__(self, text):
-        print(f"popup fit: {text}", file=sys.stderr, flush=True)
-
-
 def _options(args, cli, fit_run):
     """The FitOptions, the paper and the directions from the flags; InputError naming the flag."""
     if not 1 <= args.max_mechanisms <= fit_run.MAX_MECHANISMS:
         raise cli.InputError(
             f"--max-mechanisms {args.max_mechanisms}: must be 1 to {fit_run.MAX_MECHANISMS}"
         )
-    if args.seed < 0:
-        raise cli.InputError(f"--seed {args.seed}: must be >= 0")
+    steps.check_seed(args, cli)
     if not (math.isfinite(args.detail) and 0.0 <= args.detail <= 1.0):
         raise cli.InputError(f"--detail {args.detail:g}: must be from 0 (coarse) to 1 (fine)")
     if args.min_part is not None and not (math.isfinite(args.min_part) and args.min_part >= 0):
         raise cli.InputError(f"--min-part {args.min_part:g}: must be a length >= 0 mm")
-    try:
-        up = fit_run.direction(args.up, "--up") if args.up is not None else None
-        facing = fit_run.direction(args.facing, "--facing") if args.facing is not None else None
-    except ValueError as e:
-        raise cli.InputError(str(e))
-    paper = args.paper or cli._preferences().sheet_paper or DEFAULT_PAPER
-    try:
-        card_size = fit_run.card_size_for_paper(paper)
-    except ValueError as e:
-        raise cli.InputError(f"--paper {paper}: {cli._one_line(e)}")
-    try:
+    up, facing = steps.directions(args, cli, fit_run.direction, ("up", "facing"))
+    paper, card_size = steps.paper_and_card_size(args, cli, fit_run.card_size_for_paper)
+    with steps.core_range_checks(cli):
         options = fit_run.fit_options(
             args.max_mechanisms, args.seed, up, facing, args.detail, card_size
         )
         if args.min_part is not None:
             options.min_part_mm = args.min_part
-    except ValueError as e:  # the core's own range checks of the same values
-        raise cli.InputError(cli._one_line(e))
     return options, paper
-
-
-def _diagnostic_codes(error):
-    return [d.get("code") for d in getattr(error, "diagnostics", None) or []]
-
-
-def _write_outcome(out, report, files, say):
-    from popupwb.fitting.fit_report import write_report
-
-    files["report"] = os.path.join(out, REPORT_FILE)
-    report["files"] = dict(files)
-    write_report(report, files["report"])
-    say(f"wrote {files['report']}")
 
 
 def run(args, cli):
     """The `popup fit` command; `cli` is the popupwb.cli module that parsed `args`."""
-    say = _Say()
+    say = steps.Say("fit")
     popupcore = cli._import_core()
     from popupwb.fitting import fit_run
 
-    for needed in ("load_model", "clean_model", "FitOptions", "fit_design", "fit_metrics"):
-        if not hasattr(popupcore, needed):
-            raise RuntimeError(f"popupcore.{needed} is missing: rebuild (make build)")
+    steps.require_core(
+        popupcore, ("load_model", "clean_model", "FitOptions", "fit_design", "fit_metrics")
+    )
     options, paper = _options(args, cli, fit_run)
-    if os.path.exists(args.out) and not os.path.isdir(args.out):
-        raise cli.InputError(f"--out {args.out}: is a file, not a folder")
-    why = cli.unreadable(args.model)
-    if why:
-        raise cli.InputError(why)
+    steps.check_out_and_input(args, cli, args.model)
 
     stages = fit_run.Stages(say)
     with stages.stage("load", f"reading {args.model}"):
@@ -154,13 +111,13 @@ def run(args, cli):
             try:
                 model, what = fit_run.read_model(args.model)
             except (ValueError, RuntimeError, OSError) as e:
-                raise cli.InputError(_named(args.model, e, cli))
+                raise cli.InputError(steps.named(args.model, e, cli))
     say(f"{what}: {len(model.vertices)} vertices, {len(model.triangles)} triangles")
     with stages.stage("clean", "cleaning the mesh"):
         try:
             model, repairs = fit_run.clean_model(model)
         except ValueError as e:
-            raise cli.InputError(_named(args.model, e, cli))
+            raise cli.InputError(steps.named(args.model, e, cli))
     done = {k: v for k, v in repairs.items() if v and not isinstance(v, bool)}
     if done:
         say("repaired: " + ", ".join(f"{k} {v}" for k, v in sorted(done.items())))
@@ -177,13 +134,9 @@ def run(args, cli):
     try:
         result = fit_run.fit(model, options)
     except popupcore.DesignError as e:
-        if "no_design_found" not in _diagnostic_codes(e):
-            raise cli.InputError(_named(args.model, e, cli))
-        say(f"no valid design: {cli._one_line(e)}")
-        report = _no_design_report(common, stages, e)
-        _write_outcome(args.out, report, files, say)
-        print(f"no valid design found for {args.model}; see {files['report']}")
-        return cli.EXIT_INVALID
+        steps.raise_unless_no_design(e, args.model, cli)
+        report = _no_design_report(common, stages)
+        return steps.report_no_design(args, cli, args.model, e, report, files, say)
     stages.add(result.timings)
     say(
         f"fitted {len(result.primitives)} primitive(s), {len(result.mechanisms)} mechanism(s); "
@@ -192,31 +145,13 @@ def run(args, cli):
 
     design = _write_design(args, cli, result, model, options, stages, files, say)
     report = _report(common, result, design, stages, files)
-    if design["validity"]["valid"] and result.valid and result.mechanisms:
-        status = _write_sheets(args, cli, paper, files, stages, say)
-    else:
-        status = cli.EXIT_INVALID
-        for d in report.get("diagnostics") or []:
-            say(f"{d.get('severity', 'error')}: {d.get('code')}: {d.get('message')}")
-        say("no valid design found: no sheets written")
-    report["timings_s"] = _report_timings(stages)
-    report["sheets_ok"] = bool(report["valid"] and status == cli.EXIT_VALID)
-    _write_outcome(args.out, report, files, say)
-    _print_summary(report, files)
-    if report["valid"] and status != cli.EXIT_VALID:
-        print(
-            "but its cutting sheets have errors (listed above; "
-            f"{os.path.join(files['sheets'], 'report.json')})"
-        )
+    valid = design["validity"]["valid"] and result.valid and result.mechanisms
+    status = steps.sheets_of_valid_design(args, cli, paper, report, valid, files, stages, say)
+    status = steps.finish(args, cli, report, status, files, stages, say, _print_summary)
     if not result.mechanisms:
         print(f"no mechanism could be fitted to {args.model}")
         return cli.EXIT_INVALID
-    return status if report["valid"] else cli.EXIT_INVALID
-
-
-def _named(path, error, cli):
-    text = cli._one_line(error)
-    return text if path in text or os.path.basename(path) in text else f"{path}: {text}"
+    return status
 
 
 def _write_design(args, cli, result, model, options, stages, files, say):
@@ -226,74 +161,49 @@ def _write_design(args, cli, result, model, options, stages, files, say):
     from popupwb.fitting.model_source import transformed
     from popupwb.fitting.preview import scaffold_outlines, write_preview
 
-    with cli._stdout_to_stderr():
-        FreeCAD = cli._import_freecad()
-        from popupwb import card_scaffold, validity
+    with steps.design_document(cli, "PopUpFit") as doc:
+        from popupwb import card_scaffold
         from popupwb.fitting.design_from_fit import build_design
 
-        doc = FreeCAD.newDocument("PopUpFit")
-        try:
-            with stages.stage("document", "building the card's features"):
-                design = build_design(doc, result, model, source_file=_model_file(args.model))
-            with stages.stage("check", "checking the card's validity"):
-                checked = validity.run_check(design.card)
-            files["design"] = os.path.join(args.out, DESIGN_FILE)
-            doc.saveAs(os.path.abspath(files["design"]))
-            say(f"wrote {files['design']}")
-            built = card_scaffold.for_card(design.card)
-            if built.card_error or built.errors:
-                problems = [built.card_error] if built.card_error else []
-                raise RuntimeError(
-                    "the fitted design does not build in FreeCAD: "
-                    + "; ".join(problems + list(built.errors.values()))
-                )
-            scaffold = built.scaffold
-            metrics = None  # a card without mechanisms has no pop-up to measure
-            if result.mechanisms:
-                with stages.stage("metrics", "measuring the pop-up against the model"):
-                    metrics = fit_run.measure(model, result, scaffold, options)
-            with stages.stage("preview", "drawing the preview"):
-                outlines, card_patches = scaffold_outlines(scaffold)
-                files["preview"] = write_preview(
-                    os.path.join(args.out, PREVIEW_FILE),
-                    transformed(model.vertices, result.model_to_card),
-                    model.triangles,
-                    outlines,
-                    card_patches,
-                    title=f"{os.path.basename(args.model)}: {len(result.mechanisms)} mechanism(s)",
-                )
-            say(f"wrote {files['preview']}")
-            return {
-                "validity": checked,
-                "metrics": metrics,
-                "patches": len(scaffold.patches),
-            }
-        finally:
-            FreeCAD.closeDocument(doc.Name)
+        design, checked = steps.build_and_check(
+            stages,
+            lambda: build_design(doc, result, model, source_file=_model_file(args.model)),
+        )
+        say(f"wrote {steps.save_design(doc, args.out, files)}")
+        built = card_scaffold.for_card(design.card)
+        if built.card_error or built.errors:
+            problems = [built.card_error] if built.card_error else []
+            raise RuntimeError(
+                "the fitted design does not build in FreeCAD: "
+                + "; ".join(problems + list(built.errors.values()))
+            )
+        scaffold = built.scaffold
+        metrics = None  # a card without mechanisms has no pop-up to measure
+        if result.mechanisms:
+            with stages.stage("metrics", "measuring the pop-up against the model"):
+                metrics = fit_run.measure(model, result, scaffold, options)
+        with stages.stage("preview", "drawing the preview"):
+            outlines, card_patches = scaffold_outlines(scaffold)
+            files["preview"] = write_preview(
+                os.path.join(args.out, PREVIEW_FILE),
+                transformed(model.vertices, result.model_to_card),
+                model.triangles,
+                outlines,
+                card_patches,
+                title=f"{os.path.basename(args.model)}: {len(result.mechanisms)} mechanism(s)",
+            )
+        say(f"wrote {files['preview']}")
+        return {
+            "validity": checked,
+            "metrics": metrics,
+            "patches": len(scaffold.patches),
+        }
 
 
 def _model_file(path):
     """The model file the card keeps for its artwork: a mesh file, not a FreeCAD document (its
     meshes and shapes have no colours of their own to print)."""
     return "" if path.lower().endswith(".fcstd") else os.path.abspath(path)
-
-
-def _write_sheets(args, cli, paper, files, stages, say):
-    """`popup sheet DIR/design.FCStd --out DIR/sheets --paper PAPER`, through cmd_sheet itself."""
-    sheets = os.path.join(args.out, SHEETS_DIR)
-    with stages.stage("sheets", f"laying out the cutting sheets on {paper}"):
-        sheet_args = cli.build_parser().parse_args(
-            ["sheet", files["design"], "--out", sheets, "--paper", paper]
-        )
-        status = sheet_args.run(sheet_args)
-    files["sheets"] = sheets
-    return status
-
-
-def _report_timings(stages):
-    from popupwb.fitting.fit_report import timings
-
-    return timings(stages.timings, stages.total())
 
 
 def _report(common, result, design, stages, files):
@@ -311,10 +221,10 @@ def _report(common, result, design, stages, files):
     )
 
 
-def _no_design_report(common, stages, error):
+def _no_design_report(common, stages):
     from popupwb.fitting.fit_report import build_report
 
-    report = build_report(
+    return build_report(
         **common,
         result=None,
         validity=None,
@@ -324,14 +234,10 @@ def _no_design_report(common, stages, error):
         total_s=stages.total(),
         files={},
     )
-    report["diagnostics"] = list(getattr(error, "diagnostics", None) or [])
-    return report
 
 
 def _print_summary(report, files):
-    for role in ("design", "preview", "report"):
-        if role in files:
-            print(f"wrote {files[role]}")
+    steps.print_written(files, ("design", "preview", "report"))
     kinds = ", ".join(f"{m['name']} ({m['type']} on {m['host']})" for m in report["mechanisms"])
     print(f"{report['number_of_mechanisms']} mechanism(s): {kinds or 'none'}")
     metrics = report.get("metrics") or {}
@@ -341,15 +247,11 @@ def _print_summary(report, files):
             "model to pop-up, / diagonal {:.1f} mm: mean {}, rms {}, max {}; volume difference "
             "{}; coverage {}".format(
                 metrics.get("diagonal_mm") or 0.0,
-                _g(hausdorff.get("mean")),
-                _g(hausdorff.get("rms")),
-                _g(hausdorff.get("max")),
-                _g(metrics.get("volume_difference")),
-                _g(metrics.get("coverage")),
+                steps.g(hausdorff.get("mean")),
+                steps.g(hausdorff.get("rms")),
+                steps.g(hausdorff.get("max")),
+                steps.g(metrics.get("volume_difference")),
+                steps.g(metrics.get("coverage")),
             )
         )
     print("valid design" if report["valid"] else "no valid design found")
-
-
-def _g(value):
-    return "n/a" if value is None else f"{value:.4g}"

@@ -9,11 +9,10 @@ huge.FCStd holds a 300 x 300 mm custom card: open, 300 x 600 mm, larger than eve
 card.FCStd is the demo's A4 card (tools/run_demo.py, BUILD_CARD): open, 210 x 297 mm.
 """
 
-import importlib.util
 import os
 import textwrap
 
-from test_cli import SOURCE_DIR, run_freecad_script
+from cli_runner import load_tool, run_freecad_script
 
 PAGE_DEPTH = 105.0  # mm, an A5 card's page
 BAD_OVERHANG = 30.0 + 80.0 - PAGE_DEPTH  # mm: foot + slope of the tall tent beyond the page
@@ -57,11 +56,7 @@ def build_cards(folder, home):
 
 def build_demo_card(folder, home):
     """The demo's card.FCStd in `folder`, built by the demo's own script."""
-    spec = importlib.util.spec_from_file_location(
-        "run_demo", os.path.join(SOURCE_DIR, "tools", "run_demo.py")
-    )
-    run_demo = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(run_demo)
+    run_demo = load_tool("run_demo")
     paths = [os.path.join(folder, name) for name in ("card.FCStd", "validity.json", "validity.txt")]
     run_freecad_script(run_demo.BUILD_CARD, *paths, home=home)
     return paths[0]

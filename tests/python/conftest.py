@@ -81,6 +81,13 @@ def doc(freecad):
     freecad.closeDocument(document.Name)
 
 
+@pytest.fixture(scope="module")
+def user_home(tmp_path_factory):
+    """An empty FreeCAD user home for a test file's `popup` runs (cli_runner.py): the command line
+    must work without the workbench installed."""
+    return str(tmp_path_factory.mktemp("home"))
+
+
 @pytest.fixture(scope="session")
 def data_dir():
     return os.path.join(SOURCE_DIR, "tests", "data")

@@ -7,16 +7,13 @@ target path, put back through report.json's animation_to_card, is the arc the BV
 draw; the GIF has the movie's frame count and size; the report's totals are re-added from its
 own rows and its mechanisms are the document's features."""
 
-import json
-import math
 import os
 
 import numpy as np
 import pytest
 
 import bvh_samples
-from test_cli import popup
-from test_cli_fit import assert_named_error
+from cli_runner import assert_named_error, popup, read_report, run_design
 
 REPORT_KEYS = {
     "valid": bool,
@@ -35,19 +32,7 @@ SEED = "2"
 
 
 def animate(path, out, *extra, home=None):
-    proc = popup("animate", str(path), "--out", str(out), *extra, home=home)
-    assert "Traceback" not in proc.stdout + proc.stderr, proc.stderr
-    return proc
-
-
-def read_report(out):
-    with open(os.path.join(out, "report.json")) as f:
-        return json.load(f)
-
-
-@pytest.fixture(scope="module")
-def home(tmp_path_factory):
-    return str(tmp_path_factory.mktemp("home"))
+    return run_design("animate", path, out, *extra, home=home)
 
 
 @pytest.fixture(scope="module")
@@ -56,9 +41,9 @@ def wave(tmp_path_factory):
 
 
 @pytest.fixture(scope="module")
-def waved(wave, tmp_path_factory, home):
+def waved(wave, tmp_path_factory, user_home):
     out = tmp_path_factory.mktemp("wave")
-    proc = animate(wave, out, "--seed", SEED, "--iterations", ITERATIONS, home=home)
+    proc = animate(wave, out, "--seed", SEED, "--iterations", ITERATIONS, home=user_home)
     return out, proc, read_report(out)
 
 
@@ -180,16 +165,16 @@ def test_the_document_holds_the_reported_mechanisms(waved, freecad):
         freecad.closeDocument(doc.Name)
 
 
-def test_popup_verify_accepts_the_sheets(waved, home):
+def test_popup_verify_accepts_the_sheets(waved, user_home):
     out = waved[0]
     proc = popup(
-        "verify", os.path.join(out, "design.FCStd"), os.path.join(out, "sheets"), home=home
+        "verify", os.path.join(out, "design.FCStd"), os.path.join(out, "sheets"), home=user_home
     )
     assert proc.returncode == 0, proc.stdout + proc.stderr
 
 
-def test_the_same_seed_gives_the_same_design(wave, waved, tmp_path, home):
-    proc = animate(wave, tmp_path, "--seed", SEED, "--iterations", ITERATIONS, home=home)
+def test_the_same_seed_gives_the_same_design(wave, waved, tmp_path, user_home):
+    proc = animate(wave, tmp_path, "--seed", SEED, "--iterations", ITERATIONS, home=user_home)
     assert proc.returncode == waved[1].returncode, proc.stderr
     again, first = read_report(tmp_path), waved[2]
     assert again["mechanisms"] == first["mechanisms"]
@@ -219,16 +204,16 @@ def _bad_animation(folder, kind):
 
 
 @pytest.mark.parametrize("kind", ["empty", "garbage", "nan", "single", "missing"])
-def test_unusable_animations_exit_2_naming_the_file(kind, tmp_path, home):
+def test_unusable_animations_exit_2_naming_the_file(kind, tmp_path, user_home):
     path = _bad_animation(tmp_path, kind)
-    proc = animate(path, tmp_path / "out", home=home)
+    proc = animate(path, tmp_path / "out", home=user_home)
     assert_named_error(proc, os.path.basename(path))
     assert not os.path.exists(tmp_path / "out" / "design.FCStd")
 
 
-def test_a_single_frame_says_so(tmp_path, home):
+def test_a_single_frame_says_so(tmp_path, user_home):
     path = _bad_animation(tmp_path, "single")
-    proc = animate(path, tmp_path / "out", home=home)
+    proc = animate(path, tmp_path / "out", home=user_home)
     assert_named_error(proc, "still.bvh")
     assert "frame" in proc.stderr.strip().splitlines()[-1].lower()
 
@@ -247,10 +232,10 @@ def test_a_single_frame_says_so(tmp_path, home):
         (("--paper", "B9"), "--paper B9"),
     ],
 )
-def test_bad_options_exit_2_naming_the_flag(wave, flags, fragment, tmp_path, home):
-    assert_named_error(animate(wave, tmp_path / "out", *flags, home=home), fragment)
+def test_bad_options_exit_2_naming_the_flag(wave, flags, fragment, tmp_path, user_home):
+    assert_named_error(animate(wave, tmp_path / "out", *flags, home=user_home), fragment)
 
 
-def test_a_last_frame_past_the_end_is_named(wave, tmp_path, home):
-    proc = animate(wave, tmp_path / "out", "--last-frame", "99", home=home)
+def test_a_last_frame_past_the_end_is_named(wave, tmp_path, user_home):
+    proc = animate(wave, tmp_path / "out", "--last-frame", "99", home=user_home)
     assert_named_error(proc, "99")

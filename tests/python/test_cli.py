@@ -4,20 +4,19 @@ import json
 import math
 import os
 import shutil
-import subprocess
 import textwrap
 
 import pytest
 
-from conftest import TIME_SCALE
-
-SOURCE_DIR = os.environ.get(
-    "POPUP_SOURCE_DIR", os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from cli_runner import (
+    SOURCE_DIR,
+    assert_clean_error,
+    data,
+    popup,
+    read_report,
+    run_freecad_script,
 )
-BUILD_DIR = os.environ.get("POPUP_BUILD_DIR", os.path.join(SOURCE_DIR, "build"))
-POPUP = os.path.join(BUILD_DIR, "bin", "popup")
-DATA_DIR = os.path.join(SOURCE_DIR, "tests", "data")
-FREECAD_LIB = "/usr/lib/freecad-python3/lib"
+
 VERDICTS = ("foldable", "stable", "intersection_free", "enclosed")
 
 # Invalid test designs and the property each one fails.
@@ -35,157 +34,7 @@ def documented_codes():
         return {line.split("`")[1] for line in f if line.startswith("| `")}
 
 
-def data(name):
-    path = os.path.join(DATA_DIR, name)
-    assert os.path.isfile(path), f"test design {path} is missing"
-    return path
-
-
-@pytest.fixture(scope="module")
-def user_home(tmp_path_factory):
-    """An empty FreeCAD user home: the CLI must work without the workbench installed."""
-    return str(tmp_path_factory.mktemp("home"))
-
-
-def popup(*args, home=None, env_vars=None):
-    """Runs build/bin/popup with `args`; `env_vars` adds to (or overrides) the environment."""
-    assert os.access(POPUP, os.X_OK), f"{POPUP} missing: run `make build`"
-    env = dict(os.environ)
-    if home:
-        env.update(FREECAD_USER_HOME=home, HOME=home)
-    env.update(env_vars or {})
-    return subprocess.run(
-        [POPUP, *args],
-        capture_output=True,
-        text=True,
-        timeout=300 * TIME_SCALE,
-        env=env,
-        cwd=SOURCE_DIR,
-    )
-
-
-def assert_clean_error(proc, *fragments):
-    """Exit 2, one line on stderr containing every fragment, no traceback anywhere."""
-    assert proc.returncode == 2, (proc.returncode, proc.stdout, proc.stderr)
-    assert "Traceback" not in proc.stderr + proc.stdout
-    lines = proc.stderr.strip().splitlines()
-    assert len(lines) == 1, proc.stderr
-    for fragment in fragments:
-        assert fragment in lines[0], (fragment, lines[0])
-
-
-def words(text):
-    return text.lower().replace("-", " ").replace("_", " ")
-
-
-def test_version():
-    proc = popup("--version")
-    assert proc.returncode == 0
-    assert proc.stdout.strip() == "popup 0.1.0"
-
-
-def test_valid_design():
-    proc = popup("check", data("tent_fold.json"))
-    assert proc.returncode == 0, proc.stderr
-    assert proc.stdout.startswith("VALID")
-    assert "Traceback" not in proc.stderr
-
-
-def test_json_report():
-    proc = popup("check", data("tent_fold.json"), "--json", "--samples", "37")
-    assert proc.returncode == 0, proc.stderr
-    report = json.loads(proc.stdout)  # exactly one JSON document on stdout
-    assert isinstance(report, dict)
-    for key in ("valid", *VERDICTS):
-        assert report[key] is True, key
-    for key in ("max_hinge_residual", "max_edge_strain", "flatness_at_zero", "model_size"):
-        assert isinstance(report[key], float), key
-    assert report["max_hinge_residual"] <= 1e-9 * report["model_size"]
-    assert report["samples"] == 37
-    assert report["file"] == data("tent_fold.json")
-    assert isinstance(report["diagnostics"], list)
-    for d in report["diagnostics"]:
-        assert set(d) == {"code", "severity", "message", "patches", "parameter", "angle_deg"}
-        assert d["code"] in documented_codes()
-
-
-@pytest.mark.parametrize("name", sorted(INVALID))
-def test_invalid_design_names_the_failing_property(name):
-    failing = INVALID[name]
-    proc = popup("check", data(name))
-    assert proc.returncode == 1, (proc.stdout, proc.stderr)
-    assert proc.stdout.startswith("INVALID")
-    assert f"not {words(failing)}" in words(proc.stdout)
-    assert "Traceback" not in proc.stderr
-
-    proc = popup("check", data(name), "--json")
-    assert proc.returncode == 1
-    report = json.loads(proc.stdout)
-    assert report["valid"] is False and report[failing] is False
-    assert report["diagnostics"], "an invalid design comes with findings"
-
-
-def test_missing_file(tmp_path):
-    path = str(tmp_path / "no_such_design.json")
-    assert_clean_error(popup("check", path), path, "no such file")
-
-
-def test_garbage_json(tmp_path):
-    path = tmp_path / "garbage.json"
-    path.write_text("{ this is not JSON ]")
-    assert_clean_error(popup("check", str(path)), str(path), "JSON")
-
-
-def test_inconsistent_design(tmp_path):
-    with open(data("tent_fold.json"), encoding="utf-8") as f:
-        design = json.load(f)
-    del design["patches"][0]["outline"]
-    path = tmp_path / "no_outline.json"
-    path.write_text(json.dumps(design))
-    assert_clean_error(popup("check", str(path), "--json"), str(path), "patches[0].outline")
-
-
-@pytest.mark.parametrize(
-    "options, fragment",
-    [
-        (["--samples", "1"], "--samples 1: must be 2 to 100000"),
-        (["--samples", "99999999999999999999"], "--samples 99999999999999999999: must be 2 to"),
-        (["--clearance", "inf"], "--clearance inf"),
-        (["--samples", "many"], "--samples"),
-        (["--clearance", "-1"], "--clearance"),
-        (["--colour", "red"], "--colour"),
-    ],
-)
-def test_bad_option(options, fragment):
-    assert_clean_error(popup("check", data("tent_fold.json"), *options), fragment)
-
-
-def test_no_command():
-    proc = popup()
-    assert proc.returncode == 2
-    assert "Traceback" not in proc.stderr
-
-
 # --- FreeCAD documents ------------------------------------------------------------------------
-
-
-def run_freecad_script(script, *args, home):
-    """Runs `script` in Debian's Python with FreeCAD and the workbench (headless, as the tests'
-    document builders need); fails the test with its stderr when it fails."""
-    env = dict(os.environ)
-    env["PYTHONPATH"] = os.pathsep.join(
-        [os.path.join(BUILD_DIR, "python"), os.path.join(SOURCE_DIR, "Workbench"), FREECAD_LIB]
-    )
-    env.update(FREECAD_USER_HOME=home, HOME=home)
-    proc = subprocess.run(
-        ["/usr/bin/python3", "-c", script, *map(str, args)],
-        capture_output=True,
-        text=True,
-        timeout=300 * TIME_SCALE,
-        env=env,
-    )
-    assert proc.returncode == 0, proc.stderr
-    return proc
 
 
 MAKE_DOCUMENTS = textwrap.dedent(
@@ -218,19 +67,7 @@ def documents(tmp_path_factory, user_home):
     for name in ("tent_fold.json", "broken_tent.json"):
         shutil.copy(data(name), out / name)
         designs.append(str(out / name))
-    env = dict(os.environ)
-    env["PYTHONPATH"] = os.pathsep.join(
-        [os.path.join(BUILD_DIR, "python"), os.path.join(SOURCE_DIR, "Workbench"), FREECAD_LIB]
-    )
-    env.update(FREECAD_USER_HOME=user_home, HOME=user_home)
-    proc = subprocess.run(
-        ["/usr/bin/python3", "-c", MAKE_DOCUMENTS, *designs, str(out)],
-        capture_output=True,
-        text=True,
-        timeout=300 * TIME_SCALE,
-        env=env,
-    )
-    assert proc.returncode == 0, proc.stderr
+    run_freecad_script(MAKE_DOCUMENTS, *designs, out, home=user_home)
     return out
 
 
@@ -276,19 +113,7 @@ CARD_DOCUMENT = textwrap.dedent(
 def card_documents(tmp_path_factory, user_home):
     """card.FCStd (an A5 card with a box carrying a tent) and bad_card.FCStd (its tent broken)."""
     folder = tmp_path_factory.mktemp("cards")
-    env = dict(os.environ)
-    env["PYTHONPATH"] = os.pathsep.join(
-        [os.path.join(BUILD_DIR, "python"), os.path.join(SOURCE_DIR, "Workbench"), FREECAD_LIB]
-    )
-    env.update(FREECAD_USER_HOME=user_home, HOME=user_home)
-    proc = subprocess.run(
-        ["/usr/bin/python3", "-c", CARD_DOCUMENT, str(folder)],
-        capture_output=True,
-        text=True,
-        timeout=300 * TIME_SCALE,
-        env=env,
-    )
-    assert proc.returncode == 0, proc.stderr
+    run_freecad_script(CARD_DOCUMENT, folder, home=user_home)
     return folder
 
 
@@ -408,8 +233,7 @@ def test_sheet_corner_limit_decides_the_sharp_corner_warning(tmp_path):
         args = ["--out", str(out), "--paper", "500x400", "--min-corner-angle", str(limit)]
         proc = popup("sheet", design, *args)
         assert proc.returncode == 0, proc.stderr
-        with open(out / "report.json") as f:
-            report = json.load(f)
+        report = read_report(out)
         return [d for d in report["warnings"] if d["code"] == "sharp_corner"]
 
     (spike,) = sharp_corners(30)

@@ -6,7 +6,7 @@ import json
 import pytest
 
 from cli_documents import BAD_OVERHANG, build_cards
-from test_cli import assert_clean_error, data, popup, user_home  # noqa: F401 (fixture)
+from cli_runner import assert_clean_error, data, popup
 
 
 @pytest.fixture(scope="module")

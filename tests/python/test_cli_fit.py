@@ -6,9 +6,6 @@ Known answers come from how the models were made (make_models.BOXES), never from
 cuboid's bounding box put through report.json's model_to_card must stand on the card, and its one
 box fold must have the cuboid's dimensions in card millimetres."""
 
-import importlib.util
-import json
-import math
 import os
 import struct
 import zipfile
@@ -16,7 +13,7 @@ import zipfile
 import numpy as np
 import pytest
 
-from test_cli import SOURCE_DIR, popup
+from cli_runner import assert_named_error, load_tool, read_report, run_design
 
 UPRIGHT = ("--up", "0,0,1", "--facing", "0,-1,0")  # make_models: z up, the front faces -y
 REPORT_KEYS = {
@@ -33,21 +30,7 @@ REPORT_KEYS = {
 STATS = ("mean", "rms", "max")
 
 
-def _make_models():
-    spec = importlib.util.spec_from_file_location(
-        "make_models", os.path.join(SOURCE_DIR, "tools", "make_models.py")
-    )
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-make_models = _make_models()
-
-
-@pytest.fixture(scope="module")
-def home(tmp_path_factory):
-    return str(tmp_path_factory.mktemp("home"))
+make_models = load_tool("make_models")
 
 
 @pytest.fixture(scope="module")
@@ -66,20 +49,13 @@ def models(tmp_path_factory):
 
 
 def fit(model, out, *extra, home=None):
-    proc = popup("fit", str(model), "--out", str(out), *extra, home=home)
-    assert "Traceback" not in proc.stdout + proc.stderr, proc.stderr
-    return proc
-
-
-def read_report(out):
-    with open(os.path.join(out, "report.json")) as f:
-        return json.load(f)
+    return run_design("fit", model, out, *extra, home=home)
 
 
 @pytest.fixture(scope="module")
-def cuboid_fit(models, tmp_path_factory, home):
+def cuboid_fit(models, tmp_path_factory, user_home):
     out = tmp_path_factory.mktemp("cuboid")
-    proc = fit(models["cuboid"], out, *UPRIGHT, "--seed", "3", home=home)
+    proc = fit(models["cuboid"], out, *UPRIGHT, "--seed", "3", home=user_home)
     assert proc.returncode == 0, proc.stdout + proc.stderr
     return out, proc, read_report(out)
 
@@ -96,8 +72,7 @@ def test_a_cuboid_writes_every_file(cuboid_fit):
     assert "popup fit: reading" in proc.stderr  # progress goes to stderr
     assert "valid design" in proc.stdout.splitlines()
     # The sheets are those `popup sheet` writes: its own report sits beside them.
-    with open(os.path.join(out, "sheets", "report.json")) as f:
-        assert json.load(f)["round_trip"]["ok"] is True
+    assert read_report(out, "sheets")["round_trip"]["ok"] is True
 
 
 def test_the_report_has_every_key_with_its_type(cuboid_fit):
@@ -189,16 +164,16 @@ def test_the_document_reopens_with_the_reported_mechanisms_and_recomputes(cuboid
         freecad.closeDocument(doc.Name)
 
 
-def test_the_same_seed_gives_the_same_design(models, cuboid_fit, tmp_path, home):
-    proc = fit(models["cuboid"], tmp_path, *UPRIGHT, "--seed", "3", home=home)
+def test_the_same_seed_gives_the_same_design(models, cuboid_fit, tmp_path, user_home):
+    proc = fit(models["cuboid"], tmp_path, *UPRIGHT, "--seed", "3", home=user_home)
     assert proc.returncode == 0, proc.stderr
     again, first = read_report(tmp_path), cuboid_fit[2]
     assert again["mechanisms"] == first["mechanisms"]
     assert again["model_to_card"] == first["model_to_card"]
 
 
-def test_a_defective_mesh_is_repaired_and_still_fits(models, tmp_path, home):
-    proc = fit(models["defective"], tmp_path, *UPRIGHT, home=home)
+def test_a_defective_mesh_is_repaired_and_still_fits(models, tmp_path, user_home):
+    proc = fit(models["defective"], tmp_path, *UPRIGHT, home=user_home)
     report = read_report(tmp_path)
     # What make_models.DEFECTIVE_OBJ was written with: a zero-area and a needle triangle, a
     # duplicated face, two flipped triangles and the top left out (its duplicated vertex is
@@ -212,7 +187,7 @@ def test_a_defective_mesh_is_repaired_and_still_fits(models, tmp_path, home):
     assert report["valid"] is True and report["number_of_mechanisms"] >= 1
 
 
-def test_a_freecad_document_with_a_part_solid_is_a_model(tmp_path, home, freecad):
+def test_a_freecad_document_with_a_part_solid_is_a_model(tmp_path, user_home, freecad):
     import Part
 
     doc = freecad.newDocument("BoxModel")
@@ -222,29 +197,19 @@ def test_a_freecad_document_with_a_part_solid_is_a_model(tmp_path, home, freecad
     path = str(tmp_path / "block.FCStd")
     doc.saveAs(path)
     freecad.closeDocument(doc.Name)
-    proc = fit(path, tmp_path / "out", *UPRIGHT, home=home)
+    proc = fit(path, tmp_path / "out", *UPRIGHT, home=user_home)
     assert proc.returncode == 0, proc.stdout + proc.stderr
     assert "Block of block.FCStd" in proc.stderr
     assert read_report(tmp_path / "out")["number_of_mechanisms"] >= 1
 
 
-def test_a_model_with_nothing_to_pop_up_exits_1_with_a_report(models, tmp_path, home):
-    proc = fit(models["plate"], tmp_path, *UPRIGHT, home=home)
+def test_a_model_with_nothing_to_pop_up_exits_1_with_a_report(models, tmp_path, user_home):
+    proc = fit(models["plate"], tmp_path, *UPRIGHT, home=user_home)
     assert proc.returncode == 1, proc.stdout + proc.stderr
     report = read_report(tmp_path)
     assert report["valid"] is False
     assert not os.path.exists(tmp_path / "sheets")
     assert "no valid design" in proc.stdout.lower() + proc.stderr.lower()
-
-
-def assert_named_error(proc, *fragments):
-    """Exit 2; the last stderr line is the one error line, naming every fragment; no traceback."""
-    assert proc.returncode == 2, (proc.returncode, proc.stdout, proc.stderr)
-    lines = proc.stderr.strip().splitlines()
-    errors = [line for line in lines if line.startswith("popup: error:")]
-    assert errors == lines[-1:], proc.stderr
-    for fragment in fragments:
-        assert fragment in lines[-1], (fragment, lines[-1])
 
 
 def _bad_model(folder, kind):
@@ -271,9 +236,9 @@ def _bad_model(folder, kind):
 
 
 @pytest.mark.parametrize("kind", ["empty", "random", "nan", "damaged", "missing"])
-def test_unusable_models_exit_2_naming_the_file(kind, tmp_path, home):
+def test_unusable_models_exit_2_naming_the_file(kind, tmp_path, user_home):
     path = _bad_model(tmp_path, kind)
-    proc = fit(path, tmp_path / "out", home=home)
+    proc = fit(path, tmp_path / "out", home=user_home)
     assert_named_error(proc, os.path.basename(path))
     assert not os.path.exists(tmp_path / "out" / "design.FCStd")
 
@@ -289,12 +254,12 @@ def test_unusable_models_exit_2_naming_the_file(kind, tmp_path, home):
         (("--paper", "B9"), "--paper B9"),
     ],
 )
-def test_bad_options_exit_2_naming_the_flag(models, flags, fragment, tmp_path, home):
-    proc = fit(models["cuboid"], tmp_path / "out", *flags, home=home)
+def test_bad_options_exit_2_naming_the_flag(models, flags, fragment, tmp_path, user_home):
+    proc = fit(models["cuboid"], tmp_path / "out", *flags, home=user_home)
     assert_named_error(proc, fragment)
 
 
-def test_an_out_that_is_a_file_is_named(models, tmp_path, home):
+def test_an_out_that_is_a_file_is_named(models, tmp_path, user_home):
     taken = tmp_path / "taken"
     taken.write_text("")
-    assert_named_error(fit(models["cuboid"], taken, home=home), f"--out {taken}")
+    assert_named_error(fit(models["cuboid"], taken, home=user_home), f"--out {taken}")

@@ -16,7 +16,7 @@ import ezdxf
 import pytest
 
 from cli_documents import build_cards, build_demo_card
-from test_cli import assert_clean_error, popup, user_home  # noqa: F401 (fixture)
+from cli_runner import assert_clean_error, popup
 
 MARGIN = 10.0
 SHEET_GAP = 20.0  # mm between sheets in sheets.dxf

@@ -13,7 +13,7 @@ import pypdf
 import pytest
 
 from cli_documents import BAD_OVERHANG, build_cards
-from test_cli import assert_clean_error, popup, user_home  # noqa: F401 (fixture)
+from cli_runner import assert_clean_error, popup
 
 STAMP = "NOT VALID: not enclosed"
 SHEET_GAP = 20.0  # mm between sheets in sheets.dxf

@@ -11,7 +11,8 @@ import pytest
 
 import sheet_mutations
 from cli_documents import build_cards
-from test_cli import assert_clean_error, data, documented_codes, popup, run_freecad_script
+from cli_runner import assert_clean_error, data, popup, run_freecad_script
+from test_cli import documented_codes
 
 BOX = data("mechanisms/box.json")
 TENT = data("mechanisms/tent.json")

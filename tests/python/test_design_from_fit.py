@@ -225,7 +225,7 @@ def test_the_card_gives_back_its_model_in_the_card_frame(doc, core, tetrahedron)
 
 
 def test_popup_sheet_prints_the_source_model_as_artwork(tmp_path, freecad, core):
-    from test_cli import popup
+    from cli_runner import popup
 
     from popupwb.fitting.design_from_fit import build_design
 

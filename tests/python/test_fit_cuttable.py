@@ -7,12 +7,12 @@
   box), where FreeCAD's rebuild refused them: every mechanism fitted for seeds 1..5 of each model
   is rebuilt through the FreeCAD features without error."""
 
-import json
 import math
 import os
 
 import pytest
 
+from cli_runner import read_report
 from test_cli_fit import UPRIGHT, fit, make_models
 
 MODELS = ("cuboid", "house", "truck", "tent", "l_building", "blob", "figure")
@@ -22,11 +22,6 @@ MODELS = ("cuboid", "house", "truck", "tent", "l_building", "blob", "figure")
 def model_files(tmp_path_factory):
     folder = tmp_path_factory.mktemp("cuttable_models")
     return {name: make_models.write_model(name, str(folder / f"{name}.stl")) for name in MODELS}
-
-
-@pytest.fixture(scope="module")
-def home(tmp_path_factory):
-    return str(tmp_path_factory.mktemp("home"))
 
 
 def test_min_part_default_is_the_shortest_crease_of_the_narrowest_default_tab(freecad):
@@ -45,15 +40,13 @@ def test_min_part_default_is_the_shortest_crease_of_the_narrowest_default_tab(fr
 
 
 @pytest.mark.parametrize("name", ["truck", "l_building"])
-def test_sheets_of_truck_and_l_building_have_no_errors(name, model_files, tmp_path, home):
+def test_sheets_of_truck_and_l_building_have_no_errors(name, model_files, tmp_path, user_home):
     from popupwb.core import popupcore
 
-    proc = fit(model_files[name], tmp_path, *UPRIGHT, home=home)
+    proc = fit(model_files[name], tmp_path, *UPRIGHT, home=user_home)
     assert proc.returncode == 0, proc.stdout + proc.stderr
-    with open(tmp_path / "report.json") as f:
-        report = json.load(f)
-    with open(tmp_path / "sheets" / "report.json") as f:
-        sheets = json.load(f)
+    report = read_report(tmp_path)
+    sheets = read_report(tmp_path, "sheets")
     assert report["valid"] is True and report["sheets_ok"] is True
     assert sheets["errors"] == [], sheets["errors"]
     # Every glued crease of a box fold is at least min_part_mm (less the range margin).

@@ -14,10 +14,8 @@ import os
 import numpy as np
 import pytest
 
-from test_cli import popup
-from test_cli_fit import make_models
-
-UPRIGHT = ("--up", "0,0,1", "--facing", "0,-1,0")
+from cli_runner import popup, read_report, run_design
+from test_cli_fit import UPRIGHT, make_models
 
 
 def _area(loop):
@@ -34,13 +32,8 @@ def truck_fit(tmp_path_factory):
     out = folder / "fit"
     # One box as long as the truck: its sides are thinner than the glue tabs' minimum
     # (--min-part, 11.1 mm by default), which would have the fitter take a tent instead.
-    proc = popup(
-        "fit", model, "--out", str(out), *UPRIGHT, "--max-mechanisms", "1", "--min-part", "0"
-    )
-    assert "Traceback" not in proc.stdout + proc.stderr, proc.stderr
-    with open(out / "report.json") as f:
-        report = json.load(f)
-    return out, proc, report
+    proc = run_design("fit", model, out, *UPRIGHT, "--max-mechanisms", "1", "--min-part", "0")
+    return out, proc, read_report(out)
 
 
 def test_the_box_sides_take_the_wheel_arches(truck_fit):
@@ -115,8 +108,7 @@ def test_the_profiled_sheets_verify(truck_fit, tmp_path):
         "1",
     )
     assert proc.returncode == 0, proc.stdout + proc.stderr
-    with open(sheets / "report.json") as f:
-        trip = json.load(f)["round_trip"]
+    trip = read_report(sheets)["round_trip"]
     assert trip["ok"] is True
     assert trip["angles"] == 13  # the CLI's default sweep, design angle to closed
     assert trip["max_error"] <= trip["tolerance"]

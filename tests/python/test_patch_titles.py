@@ -7,7 +7,7 @@ import textwrap
 
 import pytest
 
-from test_cli import popup, run_freecad_script, user_home  # noqa: F401 (fixture)
+from cli_runner import popup, run_freecad_script
 
 # A box fold and a step fold at the box's Offset on one A5 card (an explicit Offset: placement
 # would put the step beside the box): the step sits inside the box, so the box's top halves pass
@@ -71,7 +71,7 @@ def test_a_renamed_mechanism_is_named_by_its_label(doc):
     assert any(expected in line for line in card.Diagnostics), list(card.Diagnostics)
 
 
-def test_popup_check_prints_the_maker_names(tmp_path, user_home):  # noqa: F811
+def test_popup_check_prints_the_maker_names(tmp_path, user_home):
     path = tmp_path / "box_and_step.FCStd"
     run_freecad_script(BOX_AND_STEP, path, home=user_home)
     proc = popup("check", str(path), home=user_home)

@@ -9,7 +9,7 @@ import ezdxf
 import pytest
 
 from cli_documents import build_cards
-from test_cli import assert_clean_error, popup, run_freecad_script, user_home  # noqa: F401
+from cli_runner import assert_clean_error, popup, run_freecad_script
 
 MAGENTA_ACI = 6  # AutoCAD's palette: index 6 is (255, 0, 255)
 
@@ -32,7 +32,7 @@ def set_preferences(home, **values):
 
 
 @pytest.fixture(scope="module")
-def cards(tmp_path_factory, user_home):  # noqa: F811
+def cards(tmp_path_factory, user_home):
     return build_cards(tmp_path_factory.mktemp("cards"), user_home)
 
 

@@ -18,7 +18,7 @@ import pytest
 
 import sheet_mutations
 from cli_documents import build_demo_card
-from test_cli import DATA_DIR, popup
+from cli_runner import DATA_DIR, popup
 
 MECHANISMS = [
     "step",

@@ -14,102 +14,66 @@ import io
 import os
 
 import FreeCAD
-import FreeCADGui
 from PySide import QtCore, QtGui
 
 from popupwb.motion import motion_run
+from popupwb.taskpanels.long_job_panel import (
+    AXES,
+    MAX_SEED,
+    LongJobPanel,
+    axis_box,
+    real_box,
+    spin_box,
+)
 
-AXES = {
-    "+X": (1.0, 0.0, 0.0),
-    "-X": (-1.0, 0.0, 0.0),
-    "+Y": (0.0, 1.0, 0.0),
-    "-Y": (0.0, -1.0, 0.0),
-    "+Z": (0.0, 0.0, 1.0),
-    "-Z": (0.0, 0.0, -1.0),
-}
 DEFAULT_VIEW, DEFAULT_UP = "-Z", "+Y"
-MAX_SEED = 2**31 - 1
 MAX_FRAME = 10**7
 PLOT_WIDTH_PX = 420
 
 last_panel = None  # the panel opened last (scripts and the GUI tests drive it)
 
 
-class FromAnimationPanel:
+class FromAnimationPanel(LongJobPanel):
     def __init__(self, path, doc, card_size=None):
         global last_panel
         last_panel = self
+        super().__init__(doc)
         self.path = path
-        self.doc = doc
         self.card_size = card_size
         self.animation = None  # the popupcore.Animation, read at the first design
-        self.result = None
-        self.design = None  # the MotionDesign OK built
         self.plot_png = None  # bytes of the paths plot of the last design
-
-        self.form = QtGui.QWidget()
-        self.form.setWindowTitle(f"Pop-up from {os.path.basename(path)}")
-        self.form.setObjectName("PopUpFromAnimationPanel")
-        layout = QtGui.QVBoxLayout(self.form)
-        layout.addWidget(self._animation_group())
-        layout.addWidget(self._design_group())
-        self.status = QtGui.QLabel("Press Design to map the character's limbs to mechanisms.")
-        self.status.setObjectName("DesignStatus")
-        self.status.setWordWrap(True)
-        layout.addWidget(self.status)
+        self._make_form(
+            f"Pop-up from {os.path.basename(path)}",
+            "PopUpFromAnimationPanel",
+            [self._animation_group(), self._design_group()],
+            "DesignStatus",
+            "Press Design to map the character's limbs to mechanisms.",
+        )
         self.plot = QtGui.QLabel()
         self.plot.setObjectName("PathsPlot")
         self.plot.setAlignment(QtCore.Qt.AlignCenter)
         self.plot.setToolTip(
             "Solid: each end effector's target path on the card; dashed: its mechanism's point"
         )
-        layout.addWidget(self.plot)
+        self.layout.addWidget(self.plot)
 
     # --- widgets ----------------------------------------------------------------------------
-
-    def _axis_box(self, name, tip, default):
-        box = QtGui.QComboBox()
-        box.setObjectName(name)
-        box.addItems(list(AXES))
-        box.setCurrentIndex(box.findText(default))
-        box.setToolTip(tip)
-        return box
-
-    def _spin(self, name, low, high, value, tip, special=None):
-        box = QtGui.QSpinBox()
-        box.setObjectName(name)
-        box.setRange(low, high)
-        box.setValue(value)
-        box.setToolTip(tip)
-        if special:
-            box.setSpecialValueText(special)
-        return box
-
-    def _real(self, name, low, high, value, step, tip):
-        box = QtGui.QDoubleSpinBox()
-        box.setObjectName(name)
-        box.setRange(low, high)
-        box.setDecimals(3)
-        box.setSingleStep(step)
-        box.setValue(value)
-        box.setToolTip(tip)
-        return box
 
     def _animation_group(self):
         group = QtGui.QGroupBox("Animation")
         form = QtGui.QFormLayout(group)
         self.file_label = QtGui.QLabel(os.path.basename(self.path))
         self.file_label.setToolTip(self.path)
-        self.first_frame = self._spin(
+        self.first_frame = spin_box(
             "FirstFrame", 0, MAX_FRAME, 0, "Frame shown when the card is closed"
         )
-        self.last_frame = self._spin(
+        self.last_frame = spin_box(
             "LastFrame", -1, MAX_FRAME, -1, "Frame shown when the card is open flat", "last"
         )
-        self.view = self._axis_box(
+        self.view = axis_box(
             "ViewAxis", "File direction from the eye toward the character", DEFAULT_VIEW
         )
-        self.up = self._axis_box("UpAxis", "File direction that becomes up on the card", DEFAULT_UP)
+        self.up = axis_box("UpAxis", "File direction that becomes up on the card", DEFAULT_UP)
         form.addRow("File", self.file_label)
         form.addRow("First frame", self.first_frame)
         form.addRow("Last frame", self.last_frame)
@@ -123,7 +87,7 @@ class FromAnimationPanel:
         defaults = popupcore.MotionOptions()
         group = QtGui.QGroupBox("Design")
         form = QtGui.QFormLayout(group)
-        self.prune = self._real(
+        self.prune = real_box(
             "Pruning",
             0.0,
             1.0,
@@ -131,10 +95,10 @@ class FromAnimationPanel:
             0.01,
             "τp: a leaf chain lighter than this fraction of the mean is merged into its parent",
         )
-        self.motion_weight = self._real(
+        self.motion_weight = real_box(
             "MotionWeight", 0.0, 1e6, defaults.motion_weight, 5.0, "w_m of eq 6.5: follow the paths"
         )
-        self.depth_weight = self._real(
+        self.depth_weight = real_box(
             "DepthWeight",
             0.0,
             1e6,
@@ -142,14 +106,14 @@ class FromAnimationPanel:
             5.0,
             "w_d of eq 6.5: keep the depth order",
         )
-        self.iterations = self._spin(
+        self.iterations = spin_box(
             "Iterations",
             1,
             motion_run.MAX_ITERATIONS,
             int(defaults.iterations),
             "Annealing iterations per search chain",
         )
-        self.seed = self._spin("Seed", 0, MAX_SEED, 1, "Same seed, same design")
+        self.seed = spin_box("Seed", 0, MAX_SEED, 1, "Same seed, same design")
         self.design_button = QtGui.QPushButton("Design")
         self.design_button.setObjectName("DesignButton")
         self.design_button.clicked.connect(self.run_design)
@@ -193,31 +157,28 @@ class FromAnimationPanel:
     def run_design(self):
         """Designs with the current settings and plots the paths; returns the MotionResult or
         None (cancelled, or no design: the status line says why)."""
-        from popupwb import progress
         from popupwb.core import popupcore
 
         self.result = None
         self.plot_png = None
         self.plot.clear()
         label = f"{os.path.basename(self.path)}: designing an animated pop-up"
-        try:
+
+        def job():
             animation = self._load()
             options = self.options()
             meter = popupcore.MotionProgress()
-            self.result = progress.run(
+            return self._run_core(
                 label,
                 popupcore.design_motion,
                 animation,
                 options,
-                cancel=progress.CANCEL_FLAG,
                 progress=meter,
                 fraction=lambda: meter.value,
             )
-        except progress.Cancelled:
-            self._say(f"{label}: cancelled")
-            return None
-        except ValueError as error:  # DesignError: no design, or an unusable file or option
-            self._say(f"{label}: {error}", error=True)
+
+        self.result = self._attempt(label, job)
+        if self.result is None:
             return None
         self._show_plot()
         self._say(self.summary())
@@ -249,39 +210,14 @@ class FromAnimationPanel:
             f"{result.weighted_error:.3f}; {verdict}. OK builds the card."
         )
 
-    def _say(self, text, error=False):
-        self.status.setText(text)
-        (FreeCAD.Console.PrintError if error else FreeCAD.Console.PrintMessage)(text + "\n")
-
     # --- task dialog protocol ---------------------------------------------------------------
-
-    def getStandardButtons(self):
-        return int(QtGui.QDialogButtonBox.Ok | QtGui.QDialogButtonBox.Cancel)
 
     def accept(self):
         if self.result is None and self.run_design() is None:
             return False  # keep the panel open: the status line says what went wrong
-        from popupwb import validity
         from popupwb.motion.design_from_motion import build_design
 
-        name = os.path.basename(self.path)
-        self.doc.openTransaction(f"Pop-up from {name}")
-        try:
-            self.design = build_design(self.doc, self.result, self.animation, self.path)
-        except ValueError as error:
-            self.doc.abortTransaction()
-            self._say(f"{name}: {error}", error=True)
-            return False
-        self.doc.commitTransaction()
-        validity.run_check(self.design.card)
-        self._close()
-        FreeCADGui.Selection.clearSelection()
-        FreeCADGui.Selection.addSelection(self.design.card)
-        return True
-
-    def reject(self):
-        self._close()
-        return True
-
-    def _close(self):
-        FreeCADGui.Control.closeDialog()
+        return self._build_card(
+            os.path.basename(self.path),
+            lambda: build_design(self.doc, self.result, self.animation, self.path),
+        )
