@@ -3,10 +3,13 @@ tests in tests/gui/ (each a ctest entry run with /usr/bin/python3).
 
 A test passes its macro body and a config dict; the body runs after PRELUDE, which defines
 `CONFIG`, `result` (a dict the body fills in) and helpers: count_non_white, report_view_text,
-wait_until. The harness writes `result` to JSON when the body ends or raises (the traceback goes
-to result["errors"]) and quits FreeCAD.
+wait_until, settle, save_screenshot, visible_progress_dialog, cancel_progress_later. The harness
+writes `result` to JSON when the body ends or raises (the traceback goes to result["errors"]) and
+quits FreeCAD. Checks prints the test's PASS/FAIL lines, with the checks every test makes of the
+run itself (macro_ran, no_traceback).
 """
 
+import importlib.util
 import json
 import os
 import shutil
@@ -69,10 +72,35 @@ def wait_until(condition, timeout_ms=60000):
     return True
 
 
+def settle(ms=300):
+    wait_until(lambda: False, ms)  # the report view appends queued messages on events
+
+
 def save_screenshot(path, width=%(width)d, height=%(height)d):
     view = Gui.ActiveDocument.ActiveView
     view.saveImage(path, width, height, "White")
     return path
+
+
+def visible_progress_dialog():
+    from popupwb import progress
+
+    found = [d for d in Gui.getMainWindow().findChildren(QtGui.QProgressDialog)
+             if d.objectName() == progress.DIALOG_NAME and d.isVisible()]
+    return found[0] if found else None
+
+
+def cancel_progress_later(ms, record):
+    # Presses Cancel on PopUp's progress dialog `ms` after now (timers run inside the wait loop
+    # and the long job's own event loop); `record` gets whether the dialog was up and its bar.
+    def press():
+        dialog = visible_progress_dialog()
+        record["dialog_visible"] = dialog is not None
+        if dialog is not None:
+            record["bar"] = [dialog.value(), dialog.maximum()]
+            dialog.cancel()
+
+    QtCore.QTimer.singleShot(ms, press)
 """
 
 EPILOGUE = r"""
@@ -149,6 +177,21 @@ def run_macro(name, body, config=None, timeout=180):
         return code, None, out_dir
 
 
+def make_models():
+    """tools/make_models.py, the writer of the test models, as a module."""
+    spec = importlib.util.spec_from_file_location(
+        "make_models", os.path.join(SOURCE_DIR, "tools", "make_models.py")
+    )
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def write_model(name, path):
+    """make_models' model `name` written to `path` (its extension chooses the format)."""
+    return make_models().write_model(name, path)
+
+
 class Checks:
     """PASS/FAIL lines for a GUI test; exit_code() is 1 when any failed."""
 
@@ -159,6 +202,19 @@ class Checks:
     def __call__(self, what, ok, detail=""):
         self.results.append(bool(ok))
         print(f"{'PASS' if ok else 'FAIL'}  {what}" + (f"  ({detail})" if detail else ""))
+
+    def macro_ran(self, code, result, out_dir):
+        """FreeCAD quit cleanly and the macro raised nothing; returns the result ({} if none)."""
+        self("FreeCAD exited 0", code == 0, f"exit {code}, log {out_dir}/freecad.log")
+        r = result or {}
+        errors = r.get("errors", ["no result"])
+        self("macro raised nothing", not errors, "\n".join(errors))
+        return r
+
+    def no_traceback(self, log, what="no traceback in the report view", shown=None):
+        """`log` (None: nothing was read, a failure) holds no traceback; `shown` is its part
+        printed with the line (default: all of it)."""
+        self(what, "Traceback" not in (log if log is not None else "Traceback"), shown or log)
 
     def exit_code(self):
         failed = self.results.count(False)

@@ -5,21 +5,16 @@ in, Fit draws the fitted prisms over the model, a second fit is cancelled from t
 dialog, and OK builds a checked card with one feature per fitted mechanism and the model linked.
 Screenshots: <build>/sandbox/gui_from_model/from_model_overlay.png and from_model_card.png."""
 
-import importlib.util
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gui_harness import SANDBOX, SOURCE_DIR, Checks, run_macro  # noqa: E402
+from gui_harness import SANDBOX, Checks, run_macro, write_model  # noqa: E402
 
 NAME = "gui_from_model"
 
 BODY = r"""
 import time
-
-
-def settle(ms=300):
-    wait_until(lambda: False, ms)
 
 
 def overlay_node():
@@ -88,15 +83,7 @@ def run():
     # Cancel: the dialog shows at once and Cancel is pressed while the fit runs.
     progress.SHOW_AFTER_MS = 0
     cancel = {}
-
-    def press():
-        dialogs = [d for d in Gui.getMainWindow().findChildren(QtGui.QProgressDialog)
-                   if d.objectName() == progress.DIALOG_NAME and d.isVisible()]
-        cancel["dialog_visible"] = bool(dialogs)
-        if dialogs:
-            dialogs[0].cancel()
-
-    QtCore.QTimer.singleShot(1, press)
+    cancel_progress_later(1, cancel)
     panel.detail.setValue(1.0)
     cancel["returned"] = panel.fit() is not None
     cancel["status"] = panel.status.text()
@@ -125,29 +112,16 @@ def run():
 """
 
 
-def _write_house(path):
-    spec = importlib.util.spec_from_file_location(
-        "make_models", os.path.join(SOURCE_DIR, "tools", "make_models.py")
-    )
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module.write_model("house", path)
-
-
 def main():
     check = Checks(NAME)
     os.makedirs(os.path.join(SANDBOX, NAME + "_models"), exist_ok=True)
     config = {
-        "model": _write_house(os.path.join(SANDBOX, NAME + "_models", "house.stl")),
+        "model": write_model("house", os.path.join(SANDBOX, NAME + "_models", "house.stl")),
         "overlay_png": os.path.join(SANDBOX, NAME, "from_model_overlay.png"),
         "card_png": os.path.join(SANDBOX, NAME, "from_model_card.png"),
     }
     code, result, out_dir = run_macro(NAME, BODY, config, timeout=300)
-    check("FreeCAD exited 0", code == 0, f"exit {code}, log {out_dir}/freecad.log")
-    r = result or {}
-    check(
-        "macro raised nothing", not r.get("errors", ["no result"]), "\n".join(r.get("errors", []))
-    )
+    r = check.macro_ran(code, result, out_dir)
     check("the command is active with a mesh selected", r.get("command_active") is True)
     check(
         "the command opens the panel on the selected mesh",
@@ -188,11 +162,7 @@ def main():
     check("the card is checked valid", r.get("validity") == "Valid", r.get("validity"))
     check("nothing in error", r.get("invalid") == [], r.get("invalid"))
     check("the overlay is gone after OK", r.get("overlay_after_ok") is False)
-    check(
-        "no traceback in the report view",
-        "Traceback" not in r.get("log", "Traceback"),
-        r.get("log"),
-    )
+    check.no_traceback(r.get("log"))
     check("card screenshot saved", r.get("card_non_white_pixels", 0) > 1000, config["card_png"])
     return check.exit_code()
 

@@ -21,7 +21,6 @@ Screenshots in <build>/sandbox/gui_profile_picker/ (copies in docs/images/): pro
     POPUP_SOURCE_DIR=. POPUP_BUILD_DIR=build /usr/bin/python3 tests/gui/run_gui_profile_picker.py
 """
 
-import importlib.util
 import json
 import os
 import shutil
@@ -29,7 +28,7 @@ import sys
 import xml.etree.ElementTree as ElementTree
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gui_harness import SANDBOX, SOURCE_DIR, Checks, run_macro  # noqa: E402
+from gui_harness import SANDBOX, Checks, make_models, run_macro  # noqa: E402
 
 NAME = "gui_profile_picker"
 MARK = 5.0  # mm, the side of a registration mark (docs/DESIGN.md, Artwork)
@@ -38,10 +37,6 @@ INKSCAPE_LABEL = "{http://www.inkscape.org/namespaces/inkscape}label"
 
 BODY = r'''
 import Part
-
-
-def settle(ms=300):
-    wait_until(lambda: False, ms)
 
 
 def line_sketch(doc, name, loops, closed=True):
@@ -251,11 +246,7 @@ def _write_house(path):
     """make_models' house as OBJ text with vertex colours (`v x y z r g b`, which assimp reads):
     each triangle gets its own corners, brick below the eaves, slate above, so the artwork's
     colours can only come from the file."""
-    spec = importlib.util.spec_from_file_location(
-        "make_models", os.path.join(SOURCE_DIR, "tools", "make_models.py")
-    )
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
+    module = make_models()
     points, facets = module.mesh_of(module.SOLIDS["house"]()).Topology
     lines = []
     for facet in facets:
@@ -369,11 +360,7 @@ def main():
         "mechanism_panel_png": os.path.join(images_dir, "mechanism_panel_profile.png"),
     }
     code, result, out_dir = run_macro(NAME, BODY, config, timeout=400)
-    check("FreeCAD exited 0", code == 0, f"exit {code}, log {out_dir}/freecad.log")
-    r = result or {}
-    check(
-        "macro raised nothing", not r.get("errors", ["no result"]), "\n".join(r.get("errors", []))
-    )
+    r = check.macro_ran(code, result, out_dir)
 
     # 1. The model file in the GUI process.
     check(
@@ -523,11 +510,7 @@ def main():
     )
     with open(paths["dxf"], "rb") as f:
         check("the DXF stays a cut file (no image)", b"IMAGE" not in f.read())
-    check(
-        "no traceback in the report view",
-        "Traceback" not in r.get("log", "Traceback"),
-        (r.get("log") or "")[-2000:],
-    )
+    check.no_traceback(r.get("log"), shown=(r.get("log") or "")[-2000:])
     return check.exit_code()
 
 
