@@ -53,10 +53,13 @@ def read_report(*folders):
 
 
 def assert_clean_error(proc, *fragments):
-    """Exit 2 and no traceback anywhere. The fragments name what the error line is about for the
-    reader; assert_named_error also finds them in the line."""
+    """Exit 2, one line on stderr containing every fragment, no traceback anywhere."""
     assert proc.returncode == 2, (proc.returncode, proc.stdout, proc.stderr)
     assert "Traceback" not in proc.stderr + proc.stdout
+    lines = proc.stderr.strip().splitlines()
+    assert len(lines) == 1, proc.stderr
+    for fragment in fragments:
+        assert fragment in lines[0], (fragment, lines[0])
 
 
 def assert_named_error(proc, *fragments):

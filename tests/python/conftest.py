@@ -12,6 +12,7 @@ Variables left unset get those values here (HOME excepted), so plain
 `/usr/bin/python3 -m pytest tests/python` works too. Always /usr/bin/python3: FreeCAD's interpreter.
 """
 
+import importlib
 import json
 import os
 import subprocess
@@ -71,6 +72,35 @@ def freecad(sandbox_mod):
     import FreeCAD
 
     return FreeCAD
+
+
+class WorkbenchModules:
+    """popupwb's modules by short name (popup.make, popup.core: popupcore, ...), each imported at
+    its first use, after FreeCAD."""
+
+    MODULES = {
+        "core": "popupwb.core",
+        "make": "popupwb.make",
+        "validity": "popupwb.validity",
+        "card_scaffold": "popupwb.card_scaffold",
+        "placement": "popupwb.placement",
+        "profiles": "popupwb.profiles",
+        "scaffold_feature": "popupwb.features.scaffold_feature",
+        "cutting_sheet": "popupwb.features.cutting_sheet",
+        "pages": "popupwb.sheets.techdraw_pages",
+    }
+
+    def __getattr__(self, name):
+        if name not in self.MODULES:
+            raise AttributeError(f"popup.{name}: not one of {sorted(self.MODULES)}")
+        module = importlib.import_module(self.MODULES[name])
+        return module.popupcore if name == "core" else module
+
+
+@pytest.fixture(scope="module")
+def popup(freecad):
+    """The workbench's modules (WorkbenchModules) for the tests of its objects in documents."""
+    return WorkbenchModules()
 
 
 @pytest.fixture

@@ -34,6 +34,98 @@ def documented_codes():
         return {line.split("`")[1] for line in f if line.startswith("| `")}
 
 
+def words(text):
+    return text.lower().replace("-", " ").replace("_", " ")
+
+
+def test_version():
+    proc = popup("--version")
+    assert proc.returncode == 0
+    assert proc.stdout.strip() == "popup 0.1.0"
+
+
+def test_valid_design():
+    proc = popup("check", data("tent_fold.json"))
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.startswith("VALID")
+    assert "Traceback" not in proc.stderr
+
+
+def test_json_report():
+    proc = popup("check", data("tent_fold.json"), "--json", "--samples", "37")
+    assert proc.returncode == 0, proc.stderr
+    report = json.loads(proc.stdout)  # exactly one JSON document on stdout
+    assert isinstance(report, dict)
+    for key in ("valid", *VERDICTS):
+        assert report[key] is True, key
+    for key in ("max_hinge_residual", "max_edge_strain", "flatness_at_zero", "model_size"):
+        assert isinstance(report[key], float), key
+    assert report["max_hinge_residual"] <= 1e-9 * report["model_size"]
+    assert report["samples"] == 37
+    assert report["file"] == data("tent_fold.json")
+    assert isinstance(report["diagnostics"], list)
+    for d in report["diagnostics"]:
+        assert set(d) == {"code", "severity", "message", "patches", "parameter", "angle_deg"}
+        assert d["code"] in documented_codes()
+
+
+@pytest.mark.parametrize("name", sorted(INVALID))
+def test_invalid_design_names_the_failing_property(name):
+    failing = INVALID[name]
+    proc = popup("check", data(name))
+    assert proc.returncode == 1, (proc.stdout, proc.stderr)
+    assert proc.stdout.startswith("INVALID")
+    assert f"not {words(failing)}" in words(proc.stdout)
+    assert "Traceback" not in proc.stderr
+
+    proc = popup("check", data(name), "--json")
+    assert proc.returncode == 1
+    report = json.loads(proc.stdout)
+    assert report["valid"] is False and report[failing] is False
+    assert report["diagnostics"], "an invalid design comes with findings"
+
+
+def test_missing_file(tmp_path):
+    path = str(tmp_path / "no_such_design.json")
+    assert_clean_error(popup("check", path), path, "no such file")
+
+
+def test_garbage_json(tmp_path):
+    path = tmp_path / "garbage.json"
+    path.write_text("{ this is not JSON ]")
+    assert_clean_error(popup("check", str(path)), str(path), "JSON")
+
+
+def test_inconsistent_design(tmp_path):
+    with open(data("tent_fold.json"), encoding="utf-8") as f:
+        design = json.load(f)
+    del design["patches"][0]["outline"]
+    path = tmp_path / "no_outline.json"
+    path.write_text(json.dumps(design))
+    assert_clean_error(popup("check", str(path), "--json"), str(path), "patches[0].outline")
+
+
+@pytest.mark.parametrize(
+    "options, fragment",
+    [
+        (["--samples", "1"], "--samples 1: must be 2 to 100000"),
+        (["--samples", "99999999999999999999"], "--samples 99999999999999999999: must be 2 to"),
+        (["--clearance", "inf"], "--clearance inf"),
+        (["--samples", "many"], "--samples"),
+        (["--clearance", "-1"], "--clearance"),
+        (["--colour", "red"], "--colour"),
+    ],
+)
+def test_bad_option(options, fragment):
+    assert_clean_error(popup("check", data("tent_fold.json"), *options), fragment)
+
+
+def test_no_command():
+    proc = popup()
+    assert proc.returncode == 2
+    assert "Traceback" not in proc.stderr
+
+
 # --- FreeCAD documents ------------------------------------------------------------------------
 
 

@@ -8,7 +8,7 @@ import math
 import numpy as np
 import pytest
 
-from test_freecad_scaffold import assert_same_points, in_error, recompute_ok
+from freecad_documents import assert_same_points, in_error, recompute_ok
 
 # The test card (valid, checked by test_the_nested_card_is_valid): a box fold on the central fold
 # carrying a tent and a floating layer on its top and a step fold on its ground-side wall, a v-fold
@@ -22,26 +22,6 @@ V_BOX = dict(offset=185.0, side=10.0, height=8.0, wall_angle=45.0)
 LAYER = dict(offset=58.0, width=35.0, height=10.0, support=8.0, overhang=5.0)
 FACES = {"Box": 9, "Tent": 2, "Layer": 9, "Step": 2, "VFold": 2, "VBox": 6}
 ALL_FACES = 2 + sum(FACES.values())
-
-
-@pytest.fixture(scope="module")
-def popup(freecad):
-    import popupwb.card_scaffold as card_scaffold
-    import popupwb.make as make
-    import popupwb.validity as validity
-    from popupwb.core import popupcore
-
-    class Modules:
-        pass
-
-    modules = Modules()
-    modules.core, modules.make, modules.validity, modules.card_scaffold = (
-        popupcore,
-        make,
-        validity,
-        card_scaffold,
-    )
-    return modules
 
 
 def build_card(doc, popup):

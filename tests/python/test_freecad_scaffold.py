@@ -9,24 +9,9 @@ import shutil
 import numpy as np
 import pytest
 
+from freecad_documents import assert_same_points, in_error, recompute_ok
+
 REL = 1e-6
-
-
-@pytest.fixture(scope="module")
-def popup(freecad):
-    """The workbench's modules, imported once FreeCAD is."""
-    import popupwb.features.scaffold_feature as scaffold_feature
-    import popupwb.make as make
-    import popupwb.validity as validity
-    from popupwb.core import popupcore
-
-    class Modules:
-        pass
-
-    modules = Modules()
-    modules.core, modules.make, modules.validity = popupcore, make, validity
-    modules.feature = scaffold_feature
-    return modules
 
 
 @pytest.fixture(scope="module")
@@ -42,24 +27,6 @@ def broken_file(data_dir):
 @pytest.fixture(scope="module")
 def tent(popup, tent_file):
     return popup.core.load_scaffold(tent_file)
-
-
-def recompute_ok(doc, *objects):
-    doc.recompute()
-    for obj in objects:
-        assert "Invalid" not in obj.State and "Error" not in obj.State, obj.getStatusString()
-
-
-def in_error(obj):
-    return "Invalid" in obj.State or "Error" in obj.State
-
-
-def assert_same_points(actual, expected, tolerance):
-    """Same number of points, and every expected point has an actual one within `tolerance`."""
-    actual, expected = np.asarray(actual, float), np.asarray(expected, float)
-    assert actual.shape == expected.shape
-    distances = np.linalg.norm(actual[None, :, :] - expected[:, None, :], axis=2)
-    assert distances.min(axis=1).max() < tolerance
 
 
 def test_scaffold_shape_follows_the_fold_angle(doc, popup, tent_file, tent):
@@ -180,11 +147,11 @@ def test_make_scaffold_refuses_a_missing_file(doc, popup, tmp_path):
 def test_design_is_parsed_once_per_content(popup, tent_file, tmp_path):
     copy = tmp_path / "copy.json"
     shutil.copy(tent_file, copy)
-    first = popup.feature.load_design(str(copy))
-    assert popup.feature.load_design(str(copy)) is first
-    assert popup.feature.load_design(tent_file) is first  # same text, same parse
+    first = popup.scaffold_feature.load_design(str(copy))
+    assert popup.scaffold_feature.load_design(str(copy)) is first
+    assert popup.scaffold_feature.load_design(tent_file) is first  # same text, same parse
     copy.write_text(copy.read_text() + "\n")
-    assert popup.feature.load_design(str(copy)) is not first
+    assert popup.scaffold_feature.load_design(str(copy)) is not first
 
 
 def test_proxy_state_is_json(doc, popup, tent_file):

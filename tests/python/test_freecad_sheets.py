@@ -12,7 +12,7 @@ import xml.etree.ElementTree as ElementTree
 import ezdxf
 import pytest
 
-from test_freecad_scaffold import in_error, recompute_ok
+from freecad_documents import in_error, recompute_ok
 
 # An "A4" card opens to 210 x 297 mm: it fits A3 paper, not A4 within its 10 mm margins.
 TENT = dict(offset=20.0, width=50.0, foot=20.0, foot_backdrop=20.0, slope=30.0)
@@ -23,23 +23,6 @@ PIECES = 6
 # Printable 212 x 300 mm: the card's pages fill the first sheet, the rest go on a second.
 TWO_SHEETS = dict(paper_width=232.0, paper_height=320.0)
 SHEET_GAP = 20.0  # mm between sheets, as in sheets.dxf
-
-
-@pytest.fixture(scope="module")
-def popup(freecad):
-    import popupwb.card_scaffold as card_scaffold
-    import popupwb.features.cutting_sheet as cutting_sheet
-    import popupwb.make as make
-    import popupwb.sheets.techdraw_pages as pages
-    from popupwb.core import popupcore
-
-    class Modules:
-        pass
-
-    modules = Modules()
-    modules.core, modules.make, modules.card_scaffold = popupcore, make, card_scaffold
-    modules.feature, modules.pages = cutting_sheet, pages
-    return modules
 
 
 def build_card(doc, popup, **sheet_options):
@@ -282,7 +265,7 @@ def test_a4_card_does_not_fit_a4_paper(doc, popup, card):
     assert list(sheet.Diagnostics) == [f"error: {message}"]
     assert sheet.SheetSetJson == "" and sheet.RoundTripOk is False
     with pytest.raises(ValueError, match="no layout to export"):
-        popup.feature.export_cutting_sheet(sheet, "/nonexistent")
+        popup.cutting_sheet.export_cutting_sheet(sheet, "/nonexistent")
     assert not in_error(card["Card"]) and not in_error(card["Box"])
     sheet.Paper = "A3"
     recompute_ok(doc, *card.values())
@@ -357,7 +340,7 @@ def test_a_new_fold_angle_does_not_lay_out_again(doc, popup, card, monkeypatch):
 
 def test_export_writes_the_production_files(doc, popup, card, tmp_path):
     sheet = card["Sheet"]
-    paths = popup.feature.export_cutting_sheet(sheet, str(tmp_path / "out"))
+    paths = popup.cutting_sheet.export_cutting_sheet(sheet, str(tmp_path / "out"))
     names = {"sheets.dxf", "sheets.svg", "sheets.pdf", "instructions.pdf", "report.json"}
     assert names <= set(os.listdir(tmp_path / "out"))
     for name in names:
@@ -426,13 +409,13 @@ def test_a_rejected_card_is_laid_out_only_when_forced(doc, popup, tmp_path):
     assert f"CuttingSheet: the card Card is {STAMP}: not_enclosed: " in status
     assert "sticks out of the closed card by 5 mm" in status and "set Force" in status
     assert sheet.SheetSetJson == "" and popup.pages.pages_of(sheet) == []
-    assert not popup.feature.has_layout(sheet)  # PopUp_ExportSheets is disabled
+    assert not popup.cutting_sheet.has_layout(sheet)  # PopUp_ExportSheets is disabled
     with pytest.raises(ValueError, match="no layout to export"):
-        popup.feature.export_cutting_sheet(sheet, str(tmp_path / "refused"))
+        popup.cutting_sheet.export_cutting_sheet(sheet, str(tmp_path / "refused"))
 
     sheet.Force = True
     recompute_ok(doc, card, tent, sheet)
-    assert sheet.NotValid == STAMP and popup.feature.has_layout(sheet)
+    assert sheet.NotValid == STAMP and popup.cutting_sheet.has_layout(sheet)
     assert sheet.Diagnostics[0] == f"warning: {STAMP} (laid out because Force is set)"
     assert any("by 5 mm" in finding for finding in sheet.ValidityFindings)
     pages = popup.pages.pages_of(sheet)
@@ -440,7 +423,7 @@ def test_a_rejected_card_is_laid_out_only_when_forced(doc, popup, tmp_path):
     (stamp,) = stamps_on(pages[0])
     # Centred across the A4 page (210 mm wide) in its 10 mm top margin band (SVG y down).
     assert float(stamp.get("x")) == pytest.approx(105.0) and 0.0 < float(stamp.get("y")) < 10.0
-    paths = popup.feature.export_cutting_sheet(sheet, str(tmp_path / "forced"))
+    paths = popup.cutting_sheet.export_cutting_sheet(sheet, str(tmp_path / "forced"))
     modelspace = ezdxf.readfile(paths["dxf"]).modelspace()
     texts = [text.dxf.text for text in modelspace.query("TEXT[layer=='LABEL']")]
     assert texts.count(STAMP) == sheet.SheetCount

@@ -6,30 +6,11 @@ Offset + Width + DepthGround closed, its end panels standing out; a step from Of
 Width), against the card's width and against the core's placement_conflicts, and the placed card
 must pass popupcore's validity check."""
 
-import types
-
 import pytest
 
-from test_freecad_scaffold import in_error, recompute_ok
+from freecad_documents import in_error, recompute_ok
 
 A5_WIDTH = 148.0  # mm along the fold of an A5 card (its sheet's short side)
-
-
-@pytest.fixture(scope="module")
-def popup(freecad):
-    import popupwb.card_scaffold as card_scaffold
-    import popupwb.make as make
-    import popupwb.placement as placement
-    import popupwb.validity as validity
-    from popupwb.core import popupcore
-
-    return types.SimpleNamespace(
-        make=make,
-        placement=placement,
-        validity=validity,
-        card_scaffold=card_scaffold,
-        core=popupcore,
-    )
 
 
 def box_span(box):

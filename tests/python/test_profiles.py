@@ -14,7 +14,7 @@ import os
 
 import pytest
 
-from test_freecad_scaffold import in_error, recompute_ok
+from freecad_documents import in_error, recompute_ok
 
 TREE = [(-4, 0), (4, 0), (4, 6), (20, 6), (0, 36), (-20, 6), (-4, 6)]
 TRUNK = 8 * 6
@@ -32,23 +32,6 @@ def clipped_tree_area(half_width):
         v = 6 + (k + 0.5) * dv
         area += 2 * min(20 * (36 - v) / 30, half_width) * dv
     return area
-
-
-@pytest.fixture(scope="module")
-def popup(freecad):
-    import popupwb.card_scaffold as card_scaffold
-    import popupwb.make as make
-    import popupwb.profiles as profiles
-    import popupwb.validity as validity
-    from popupwb.core import popupcore
-
-    class Modules:
-        pass
-
-    modules = Modules()
-    modules.core, modules.make, modules.validity = popupcore, make, validity
-    modules.card_scaffold, modules.profiles = card_scaffold, profiles
-    return modules
 
 
 def tree_sketch(doc, points=TREE, name="Tree"):
