@@ -17,14 +17,8 @@ import FreeCAD
 from PySide import QtCore, QtGui
 
 from popupwb.motion import motion_run
-from popupwb.taskpanels.long_job_panel import (
-    AXES,
-    MAX_SEED,
-    LongJobPanel,
-    axis_box,
-    real_box,
-    spin_box,
-)
+from popupwb.taskpanels.long_job_panel import AXES, MAX_SEED, LongJobPanel
+from popupwb.taskpanels.long_job_panel import axis_box, real_box, spin_box
 
 DEFAULT_VIEW, DEFAULT_UP = "-Z", "+Y"
 MAX_FRAME = 10**7

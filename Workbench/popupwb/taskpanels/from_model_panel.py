@@ -15,14 +15,8 @@ cutting sheets' artwork.
 from PySide import QtGui
 
 from popupwb.fitting import fit_run
-from popupwb.taskpanels.long_job_panel import (
-    AXES,
-    MAX_SEED,
-    LongJobPanel,
-    axis_box,
-    real_box,
-    spin_box,
-)
+from popupwb.taskpanels.long_job_panel import AXES, MAX_SEED, LongJobPanel
+from popupwb.taskpanels.long_job_panel import axis_box, real_box, spin_box
 from popupwb.taskpanels.primitive_overlay import PrimitiveOverlay
 
 AUTOMATIC = "Automatic"
