@@ -3,10 +3,11 @@ tests in tests/gui/ (each a ctest entry run with /usr/bin/python3).
 
 A test passes its macro body and a config dict; the body runs after PRELUDE, which defines
 `CONFIG`, `result` (a dict the body fills in) and helpers: count_non_white, report_view_text,
-wait_until, settle, save_screenshot, visible_progress_dialog, cancel_progress_later. The harness
+wait_until, settle, save_screenshot, save_view_fitted, visible_progress_dialog,
+cancel_progress_later, accept_panel. The harness
 writes `result` to JSON when the body ends or raises (the traceback goes to result["errors"]) and
 quits FreeCAD. Checks prints the test's PASS/FAIL lines, with the checks every test makes of the
-run itself (macro_ran, no_traceback).
+run itself (macro_ran, no_traceback) and of a card a panel built (card_built).
 """
 
 import importlib.util
@@ -101,6 +102,30 @@ def cancel_progress_later(ms, record):
             dialog.cancel()
 
     QtCore.QTimer.singleShot(ms, press)
+
+
+def accept_panel(panel, doc):
+    # Presses OK on a panel that builds a card (taskpanels/long_job_panel.py); `result` gets
+    # whether it was accepted, the features' labels, the card's verdict and what is in error
+    # (Checks.card_built reads them). Returns the design OK built, or None.
+    ok = panel.accept()
+    settle()
+    design = panel.design
+    card = design.card if design else None
+    result["accepted"] = bool(ok)
+    result["labels"] = [m.Label for m in design.mechanisms] if design else []
+    result["validity"] = card.Validity if card else None
+    result["invalid"] = [o.Label for o in doc.Objects if "Invalid" in o.State]
+    return design
+
+
+def save_view_fitted(path, prefix, width=1200, height=900):
+    # The whole document seen from the isometric view, saved and its pixels counted.
+    Gui.ActiveDocument.ActiveView.viewIsometric()
+    Gui.SendMsgToActiveView("ViewFit")
+    settle()
+    save_screenshot(path, width, height)
+    count_non_white(path, prefix)
 """
 
 EPILOGUE = r"""
@@ -215,6 +240,19 @@ class Checks:
         """`log` (None: nothing was read, a failure) holds no traceback; `shown` is its part
         printed with the line (default: all of it)."""
         self(what, "Traceback" not in (log if log is not None else "Traceback"), shown or log)
+
+    def card_built(self, r, how):
+        """What accept_panel recorded: OK built a checked, valid card with one feature per
+        mechanism, labelled as the job (`how`: fitted, designed) named them; nothing in error."""
+        self(
+            f"OK builds the card: one feature per mechanism, named as {how}",
+            r.get("accepted") is True
+            and r.get("labels")
+            and r.get("labels") == r.get("mechanism_names"),
+            f"{r.get('labels')} vs {r.get('mechanism_names')}",
+        )
+        self("the card is checked valid", r.get("validity") == "Valid", r.get("validity"))
+        self("nothing in error", r.get("invalid") == [], r.get("invalid"))
 
     def exit_code(self):
         failed = self.results.count(False)

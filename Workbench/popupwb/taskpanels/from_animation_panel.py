@@ -18,7 +18,7 @@ from PySide import QtCore, QtGui
 
 from popupwb.motion import motion_run
 from popupwb.taskpanels.long_job_panel import AXES, MAX_SEED, LongJobPanel
-from popupwb.taskpanels.long_job_panel import axis_box, real_box, spin_box
+from popupwb.taskpanels.long_job_panel import axis_box, form_group, push_button, real_box, spin_box
 
 DEFAULT_VIEW, DEFAULT_UP = "-Z", "+Y"
 MAX_FRAME = 10**7
@@ -54,8 +54,6 @@ class FromAnimationPanel(LongJobPanel):
     # --- widgets ----------------------------------------------------------------------------
 
     def _animation_group(self):
-        group = QtGui.QGroupBox("Animation")
-        form = QtGui.QFormLayout(group)
         self.file_label = QtGui.QLabel(os.path.basename(self.path))
         self.file_label.setToolTip(self.path)
         self.first_frame = spin_box(
@@ -68,19 +66,21 @@ class FromAnimationPanel(LongJobPanel):
             "ViewAxis", "File direction from the eye toward the character", DEFAULT_VIEW
         )
         self.up = axis_box("UpAxis", "File direction that becomes up on the card", DEFAULT_UP)
-        form.addRow("File", self.file_label)
-        form.addRow("First frame", self.first_frame)
-        form.addRow("Last frame", self.last_frame)
-        form.addRow("View along", self.view)
-        form.addRow("Up", self.up)
-        return group
+        return form_group(
+            "Animation",
+            [
+                ("File", self.file_label),
+                ("First frame", self.first_frame),
+                ("Last frame", self.last_frame),
+                ("View along", self.view),
+                ("Up", self.up),
+            ],
+        )
 
     def _design_group(self):
         from popupwb.core import popupcore
 
         defaults = popupcore.MotionOptions()
-        group = QtGui.QGroupBox("Design")
-        form = QtGui.QFormLayout(group)
         self.prune = real_box(
             "Pruning",
             0.0,
@@ -108,16 +108,18 @@ class FromAnimationPanel(LongJobPanel):
             "Annealing iterations per search chain",
         )
         self.seed = spin_box("Seed", 0, MAX_SEED, 1, "Same seed, same design")
-        self.design_button = QtGui.QPushButton("Design")
-        self.design_button.setObjectName("DesignButton")
-        self.design_button.clicked.connect(self.run_design)
-        form.addRow("Pruning τp", self.prune)
-        form.addRow("Motion weight", self.motion_weight)
-        form.addRow("Depth weight", self.depth_weight)
-        form.addRow("Iterations", self.iterations)
-        form.addRow("Seed", self.seed)
-        form.addRow(self.design_button)
-        return group
+        self.design_button = push_button("Design", "DesignButton", self.run_design)
+        return form_group(
+            "Design",
+            [
+                ("Pruning τp", self.prune),
+                ("Motion weight", self.motion_weight),
+                ("Depth weight", self.depth_weight),
+                ("Iterations", self.iterations),
+                ("Seed", self.seed),
+                self.design_button,
+            ],
+        )
 
     # --- designing --------------------------------------------------------------------------
 

@@ -12,11 +12,10 @@ keeps the file as its SourceFile, as `popup fit` does, so its texture and colour
 cutting sheets' artwork.
 """
 
-from PySide import QtGui
 
 from popupwb.fitting import fit_run
 from popupwb.taskpanels.long_job_panel import AXES, MAX_SEED, LongJobPanel
-from popupwb.taskpanels.long_job_panel import axis_box, real_box, spin_box
+from popupwb.taskpanels.long_job_panel import axis_box, form_group, push_button, real_box, spin_box
 from popupwb.taskpanels.primitive_overlay import PrimitiveOverlay
 
 AUTOMATIC = "Automatic"
@@ -51,21 +50,15 @@ class FromModelPanel(LongJobPanel):
         return axis_box(name, tip, AUTOMATIC, first=[AUTOMATIC])
 
     def _alignment_group(self):
-        group = QtGui.QGroupBox("Alignment")
-        form = QtGui.QFormLayout(group)
         self.up = self._axis_box(
             "UpAxis", "Model axis that becomes up on the open card (Automatic: from its normals)"
         )
         self.facing = self._axis_box(
             "FacingAxis", "Model axis that faces the viewer of the open card (Automatic: PCA)"
         )
-        form.addRow("Up", self.up)
-        form.addRow("Facing", self.facing)
-        return group
+        return form_group("Alignment", [("Up", self.up), ("Facing", self.facing)])
 
     def _fit_group(self):
-        group = QtGui.QGroupBox("Fit")
-        form = QtGui.QFormLayout(group)
         self.max_mechanisms = spin_box("MaxMechanisms", 1, fit_run.MAX_MECHANISMS, 8)
         self.detail = real_box(
             "Detail",
@@ -79,14 +72,16 @@ class FromModelPanel(LongJobPanel):
         self.seed = spin_box(
             "Seed", 0, MAX_SEED, 1, "Same seed, same design; another seed tries other samples"
         )
-        self.fit_button = QtGui.QPushButton("Fit")
-        self.fit_button.setObjectName("FitButton")
-        self.fit_button.clicked.connect(self.fit)
-        form.addRow("Maximum mechanisms", self.max_mechanisms)
-        form.addRow("Detail", self.detail)
-        form.addRow("Seed", self.seed)
-        form.addRow(self.fit_button)
-        return group
+        self.fit_button = push_button("Fit", "FitButton", self.fit)
+        return form_group(
+            "Fit",
+            [
+                ("Maximum mechanisms", self.max_mechanisms),
+                ("Detail", self.detail),
+                ("Seed", self.seed),
+                self.fit_button,
+            ],
+        )
 
     # --- fitting ----------------------------------------------------------------------------
 

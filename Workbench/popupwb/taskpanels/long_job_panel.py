@@ -4,7 +4,7 @@ widgets for axes, whole numbers and reals, the job run in progress.run's worker 
 (a cancelled or failed job leaves the reason on the status line, never an exception), and OK's
 build of the card in one undo step, checked and selected.
 
-A subclass makes its groups, runs its job through `_attempt` and builds through `_build_card`;
+A subclass makes its groups (form_group), runs its job through `_attempt` and builds through `_build_card`;
 `_remove_preview` is where it takes its drawing off the 3D view.
 """
 
@@ -55,6 +55,25 @@ def real_box(name, low, high, value, step, tip, decimals=3):
     box.setValue(value)
     box.setToolTip(tip)
     return box
+
+
+def push_button(text, name, slot):
+    button = QtGui.QPushButton(text)
+    button.setObjectName(name)
+    button.clicked.connect(slot)
+    return button
+
+
+def form_group(title, rows):
+    """A group box of rows: (label, widget) pairs, and widgets alone that take the whole row."""
+    group = QtGui.QGroupBox(title)
+    form = QtGui.QFormLayout(group)
+    for row in rows:
+        if isinstance(row, tuple):
+            form.addRow(*row)
+        else:
+            form.addRow(row)
+    return group
 
 
 class LongJobPanel:
