@@ -72,6 +72,13 @@ def assert_named_error(proc, *fragments):
         assert fragment in lines[-1], (fragment, lines[-1])
 
 
+def assert_input_refused(proc, path, out):
+    """The input file `path` refused: exit 2 with the one error line naming it, and no design
+    written to the folder `out`."""
+    assert_named_error(proc, os.path.basename(path))
+    assert not os.path.exists(os.path.join(out, "design.FCStd"))
+
+
 def run_freecad_script(script, *args, home):
     """Runs `script` in Debian's Python with FreeCAD and the workbench (headless, as the tests'
     document builders need); fails the test with its stderr when it fails."""

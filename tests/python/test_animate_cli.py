@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 import bvh_samples
-from cli_runner import assert_named_error, popup, read_report, run_design
+from cli_runner import assert_input_refused, assert_named_error, popup, read_report, run_design
 
 REPORT_KEYS = {
     "valid": bool,
@@ -207,8 +207,7 @@ def _bad_animation(folder, kind):
 def test_unusable_animations_exit_2_naming_the_file(kind, tmp_path, user_home):
     path = _bad_animation(tmp_path, kind)
     proc = animate(path, tmp_path / "out", home=user_home)
-    assert_named_error(proc, os.path.basename(path))
-    assert not os.path.exists(tmp_path / "out" / "design.FCStd")
+    assert_input_refused(proc, path, tmp_path / "out")
 
 
 def test_a_single_frame_says_so(tmp_path, user_home):

@@ -12,7 +12,6 @@ keeps the file as its SourceFile, as `popup fit` does, so its texture and colour
 cutting sheets' artwork.
 """
 
-
 from popupwb.fitting import fit_run
 from popupwb.taskpanels.long_job_panel import AXES, MAX_SEED, LongJobPanel
 from popupwb.taskpanels.long_job_panel import axis_box, form_group, push_button, real_box, spin_box
