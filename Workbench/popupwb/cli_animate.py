@@ -9,7 +9,7 @@ them).
 Progress goes to stderr, the files written and the verdict to stdout. Exit codes as `popup fit`:
 0 a valid design with usable sheets, 1 no valid design (the report and what could be written say
 what was tried), 2 input that cannot be used (one line naming the file or flag, the value and the
-allowed range).
+allowed range). The steps it shares with `popup fit` are in cli_design_steps.py.
 """
 
 import math

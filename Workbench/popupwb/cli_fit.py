@@ -9,7 +9,8 @@ was tried), 2 for input that cannot be used (a one-line error naming the file or
 
 cli.py keeps the parser; this module is the command, handed the cli module for its shared helpers
 (InputError, the FreeCAD import, cmd_sheet) so that `python -m popupwb.cli` does not load a
-second copy of it.
+second copy of it. What it shares with `popup animate` (flags, checks, sheets, report, exit code)
+is in cli_design_steps.py.
 """
 
 import math
