@@ -20,11 +20,6 @@ REPORT_KEYS = {"design", "sheets", "ok", "max_error", "tolerance", "angles", "di
 DIAGNOSTIC_KEYS = {"code", "severity", "message", "patches", "parameter", "angle_deg"}
 
 
-@pytest.fixture(scope="module")
-def home(tmp_path_factory):
-    return str(tmp_path_factory.mktemp("home"))
-
-
 def sheet(design, out, *extra, home=None):
     proc = popup("sheet", design, "--out", str(out), *extra, home=home)
     assert proc.returncode == 0, proc.stdout + proc.stderr
@@ -193,52 +188,52 @@ PRINTED = textwrap.dedent(
 
 
 @pytest.fixture(scope="module")
-def documents(tmp_path_factory, home):
+def documents(tmp_path_factory, user_home):
     """printed.FCStd: an A5 card with a tent, its CuttingSheet printing P1 on the back;
     two_sheets.FCStd: the same with a second CuttingSheet printing everything on the front;
     two_cards.FCStd (cli_documents.py); the card's sheets written both ways."""
     folder = tmp_path_factory.mktemp("documents")
-    run_freecad_script(PRINTED, folder, home=home)
-    build_cards(str(folder), home)
+    run_freecad_script(PRINTED, folder, home=user_home)
+    build_cards(str(folder), user_home)
     printed = str(folder / "printed.FCStd")
-    sheet(printed, folder / "back", "--printed-side", "P1=back", home=home)
-    sheet(printed, folder / "front", "--printed-side", "P1=front", home=home)
-    sheet(printed, folder / "from_card", home=home)  # the CuttingSheet's P1=back
-    sheet(str(folder / "two_cards.FCStd"), folder / "good", "--card", "Good", home=home)
+    sheet(printed, folder / "back", "--printed-side", "P1=back", home=user_home)
+    sheet(printed, folder / "front", "--printed-side", "P1=front", home=user_home)
+    sheet(printed, folder / "from_card", home=user_home)  # the CuttingSheet's P1=back
+    sheet(str(folder / "two_cards.FCStd"), folder / "good", "--card", "Good", home=user_home)
     return folder
 
 
-def test_a_card_is_verified_with_its_cutting_sheets_printed_sides(documents, home):
+def test_a_card_is_verified_with_its_cutting_sheets_printed_sides(documents, user_home):
     printed = documents / "printed.FCStd"
-    proc = verify(printed, documents / "back", "--json", home=home)
+    proc = verify(printed, documents / "back", "--json", home=user_home)
     assert proc.returncode == 0, proc.stdout + proc.stderr
     report = json.loads(proc.stdout)
     assert report["printed_sides"] == {"P1": "back"} and report["object"] == "Card"
-    assert verify(printed, documents / "front", home=home).returncode == 1
+    assert verify(printed, documents / "front", home=user_home).returncode == 1
     # --printed-side overrides the CuttingSheet's, piece by piece.
-    proc = verify(printed, documents / "front", "--printed-side", "P1=front", home=home)
+    proc = verify(printed, documents / "front", "--printed-side", "P1=front", home=user_home)
     assert proc.returncode == 0, proc.stdout + proc.stderr
     # `popup sheet` of the card without the flag prints the sides its CuttingSheet says, as the
     # feature does: the same sheets as with --printed-side P1=back.
     layout = json.loads((documents / "from_card" / "sheets.json").read_text())
     sides = {piece["id"]: piece["printed_side"] for piece in layout["pieces"]}
     assert sides["P1"] == "back" and set(sides.values()) <= {"front", "back"}
-    assert verify(printed, documents / "from_card", home=home).returncode == 0
+    assert verify(printed, documents / "from_card", home=user_home).returncode == 0
 
 
-def test_cutting_sheets_that_disagree_need_printed_side(documents, home):
+def test_cutting_sheets_that_disagree_need_printed_side(documents, user_home):
     two = documents / "two_sheets.FCStd"
     assert_clean_error(
-        verify(two, documents / "back", home=home), "two_sheets.FCStd", "--printed-side"
+        verify(two, documents / "back", home=user_home), "two_sheets.FCStd", "--printed-side"
     )
-    proc = verify(two, documents / "back", "--printed-side", "P1=back", home=home)
+    proc = verify(two, documents / "back", "--printed-side", "P1=back", home=user_home)
     assert proc.returncode == 0, proc.stdout + proc.stderr
 
 
-def test_a_document_with_several_cards_needs_card(documents, home):
+def test_a_document_with_several_cards_needs_card(documents, user_home):
     cards = documents / "two_cards.FCStd"
-    assert_clean_error(verify(cards, documents / "good", home=home), "--card")
-    proc = verify(cards, documents / "good", "--card", "Good", home=home)
+    assert_clean_error(verify(cards, documents / "good", home=user_home), "--card")
+    proc = verify(cards, documents / "good", "--card", "Good", home=user_home)
     assert proc.returncode == 0, proc.stdout + proc.stderr
 
 

@@ -6,13 +6,12 @@ registration marks where docs/DESIGN.md (Artwork) puts them, read back from the 
 The GUI side (the picker, the command, one undo step) is tests/gui/run_gui_profile_picker.py.
 """
 
-import importlib.util
-import os
 import xml.etree.ElementTree as ElementTree
 
 import pytest
 
-SOURCE_DIR = os.environ["POPUP_SOURCE_DIR"]
+from cli_runner import load_tool
+
 SVG = "{http://www.w3.org/2000/svg}"
 LABEL = "{http://www.inkscape.org/namespaces/inkscape}label"
 # A tree on a 60 x 20 riser: trunk 8 x 6 mm on the ground fold, crown a trapezoid 40 mm wide at
@@ -123,12 +122,7 @@ def test_the_sketch_outlines_the_riser_and_scale_follows_a_height_edit(doc, step
 
 
 def _house(tmp_path):
-    spec = importlib.util.spec_from_file_location(
-        "make_models", os.path.join(SOURCE_DIR, "tools", "make_models.py")
-    )
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module.write_model("house", str(tmp_path / "house.stl"))
+    return load_tool("make_models").write_model("house", str(tmp_path / "house.stl"))
 
 
 @pytest.fixture
