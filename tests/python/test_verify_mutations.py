@@ -57,24 +57,19 @@ CORE_DEFECTS = {
 }
 
 
-@pytest.fixture(scope="module")
-def home(tmp_path_factory):
-    return str(tmp_path_factory.mktemp("home"))
-
-
 @pytest.fixture(scope="module", params=CASES)
-def written(request, tmp_path_factory, home):
+def written(request, tmp_path_factory, user_home):
     """(design, sheets folder, sheet set) of one case, written by `popup sheet`."""
     folder = tmp_path_factory.mktemp(request.param)
     if request.param == "demo_card":
         # The card `make demo` builds and lays out (tools/run_demo.py): on A3, as the demo does.
-        design = build_demo_card(str(folder), home)
+        design = build_demo_card(str(folder), user_home)
         extra = ["--paper", "A3"]
     else:
         design = os.path.join(DATA_DIR, "mechanisms", f"{request.param}.json")
         extra = []
     out = folder / "sheets"
-    proc = popup("sheet", design, "--out", str(out), *extra, home=home)
+    proc = popup("sheet", design, "--out", str(out), *extra, home=user_home)
     assert proc.returncode == 0, proc.stdout + proc.stderr
     with open(out / "sheets.json") as f:
         return design, out, json.load(f)
@@ -91,9 +86,9 @@ def mentions(message, word):
     return re.search(rf"(?<![\w]){re.escape(word)}(?![\w])", message) is not None
 
 
-def test_the_written_sheets_verify(written, home):
+def test_the_written_sheets_verify(written, user_home):
     design, out, sheet_set = written
-    code, report = verify(design, out, home)
+    code, report = verify(design, out, user_home)
     assert code == 0, json.dumps(report["diagnostics"], indent=1)
     assert report["ok"] is True
     assert (
@@ -103,7 +98,7 @@ def test_the_written_sheets_verify(written, home):
 
 
 @pytest.mark.parametrize("name", list(EXPECTED))
-def test_an_edit_is_found_and_named(written, home, tmp_path, name, request):
+def test_an_edit_is_found_and_named(written, user_home, tmp_path, name, request):
     design, out, sheet_set = written
     cases, reason = CORE_DEFECTS.get(name, ((), ""))
     if request.node.callspec.params["written"] in cases:
@@ -115,7 +110,7 @@ def test_an_edit_is_found_and_named(written, home, tmp_path, name, request):
     except sheet_mutations.Unavailable as reason:
         assert os.path.basename(str(design)) != "card.FCStd", "the demo card must have it"
         pytest.skip(f"{name}: {reason}")
-    code, report = verify(design, tmp_path, home)
+    code, report = verify(design, tmp_path, user_home)
     errors = [d for d in report["diagnostics"] if d["severity"] == "error"]
     shown = json.dumps(report["diagnostics"], indent=1)
     assert code == 1 and report["ok"] is False, f"{mutation}: verify passed\n{shown}"
