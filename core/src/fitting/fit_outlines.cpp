@@ -1,6 +1,7 @@
 #include "popup/fitting/fit_outlines.hpp"
 
 #include "../geometry/clipper_paths.hpp"
+#include "../model/millimetres.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -205,6 +206,19 @@ std::map<std::string, double> carried_folds(const Scaffold& s, int patch, const 
     return carries ? out : std::map<std::string, double>{};
 }
 
+/// Total length of `patch`'s folds and joints with each other patch, by that patch's name.
+std::map<std::string, double> crease_lengths(const Scaffold& s, int patch)
+{
+    std::map<std::string, double> out;
+    for (const Hinge& h : s.hinges) {
+        if (h.patch_a != patch && h.patch_b != patch)
+            continue;
+        if (const Patch* p = s.find_patch(h.patch_a == patch ? h.patch_b : h.patch_a))
+            out[p->name] += (h.to - h.from).norm();
+    }
+    return out;
+}
+
 /// Applies one part's silhouette to `s`; the profile it kept (an empty part when the silhouette
 /// covers the whole part: `s` unchanged), or why not.
 Result<FittedProfile> outline_part(Scaffold& s, const ModelMesh& model, const FittedMechanism& m,
@@ -263,6 +277,22 @@ Result<FittedProfile> outline_part(Scaffold& s, const ModelMesh& model, const Fi
                    "it carries another mechanism, and the outline would shorten its fold with " +
                        name + " to " + std::to_string(length) + " of " + std::to_string(whole) +
                        " mm");
+            return r;
+        }
+    }
+    // Every crease the outline shortens keeps at least the shortest one a glue tab fits on (or
+    // its whole length when it was shorter): the sheets glue a part where it meets another piece,
+    // and a body part that touches its crease at a point cannot be glued (docs/DESIGN.md).
+    const double glued = shortest_tabbed_crease(SheetOptions{});
+    const std::map<std::string, double> after = crease_lengths(s, part.patch);
+    for (const auto& [name, whole] : crease_lengths(before, part.patch)) {
+        const double length = after.count(name) ? after.at(name) : 0.0;
+        if (length < std::min(whole, glued) - tol) {
+            s = std::move(before);
+            r.fail(DiagnosticCode::bad_profile, "the outline would shorten its fold with " + name +
+                                                    " to " + millimetres(length) +
+                                                    ", less than the " + millimetres(glued) +
+                                                    " a glue tab needs");
             return r;
         }
     }

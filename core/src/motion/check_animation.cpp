@@ -132,6 +132,25 @@ Result<Animation> check_animation(Animation animation)
         }
     }
 
+    // The joints' extent over every frame, as check_model bounds a model's: a root jumping to
+    // 1e30 would shrink the character on the card to a point (parents precede their children).
+    Eigen::AlignedBox3d joints;
+    for (int f = 0; f < frames; ++f) {
+        std::vector<Eigen::Isometry3d> global(n);
+        for (int b = 0; b < n; ++b) {
+            const int p = animation.bones[b].parent;
+            global[b] = p < 0 ? animation.local[f][b] : global[p] * animation.local[f][b];
+            joints.extend(global[b].translation());
+        }
+    }
+    const double extent = joints.diagonal().norm();
+    if (!(extent <= 1e6) || (extent > 0.0 && extent < 1e-6)) {
+        std::ostringstream why;
+        why << "its joints span a bounding-box diagonal of " << extent
+            << " units over its frames, must be in 1e-6..1e6";
+        return refuse(DiagnosticCode::bad_animation, why.str(), "local");
+    }
+
     if (animation.bind_inverse.empty())
         animation.bind_inverse.assign(n, Eigen::Isometry3d::Identity());
     if (int(animation.bind_inverse.size()) != n)

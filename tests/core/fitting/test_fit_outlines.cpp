@@ -175,6 +175,42 @@ TEST(FitOutlines, AnOutlineThatLosesAFoldIsDroppedAndReported)
     EXPECT_TRUE(check_validity(out.scaffold).valid());
 }
 
+TEST(FitOutlines, AnOutlineKeepsEveryFoldLongEnoughToGlue)
+{
+    // A T-shaped side section: a stem `foot` mm wide under a full-width block. The stem is all
+    // that meets the side's foot fold, so the outline shortens that fold to `foot` mm: an 8 mm
+    // foot is under the shortest crease a glue tab fits on (the sheets' rule), a 20 mm one is not.
+    const double glued = shortest_tabbed_crease(SheetOptions{});
+    ASSERT_GT(glued, 8.0);
+    ASSERT_LT(glued, 20.0);
+    for (const double foot : {8.0, 20.0}) {
+        const double a = 0.5 * (kWidth - foot), b = 0.5 * (kWidth + foot);
+        std::vector<Vec2> s{{a, 0},       {b, 0},  {b, 20}, {kWidth, 20}, {kWidth, kHeight},
+                            {0, kHeight}, {0, 20}, {a, 20}};
+        Design d = box_design();
+        const OutlineOutcome out =
+            fit_outlines(placed_section(s, d.host), d.scaffold, d.mechanisms);
+        std::vector<std::string> sides;
+        for (const FittedProfile& p : out.profiles)
+            if (p.part == "L" || p.part == "R")
+                sides.push_back(p.part);
+        if (foot < glued) {
+            EXPECT_TRUE(sides.empty());
+            int named = 0;
+            for (const FitRepair& r : out.dropped)
+                named += r.reason.find("to 8 mm, less than the") != std::string::npos;
+            EXPECT_EQ(named, 2) << (out.dropped.empty() ? "" : out.dropped.front().reason);
+            EXPECT_NEAR(patch_named(out.scaffold, "B1.L").area(), kWidth * kHeight, 1e-9);
+        } else {
+            EXPECT_EQ(sides, (std::vector<std::string>{"L", "R"}));
+            // The side is the T: stem plus block.
+            const double area = foot * 20 + kWidth * (kHeight - 20);
+            EXPECT_NEAR(patch_named(out.scaffold, "B1.L").area(), area, 1e-3);
+        }
+        EXPECT_TRUE(check_validity(out.scaffold).valid());
+    }
+}
+
 TEST(FitOutlines, FitDesignProfilesTheArchedBlockDeterministically)
 {
     // The arched section of the test above, 40 mm deep, fitted by the whole pipeline.

@@ -139,6 +139,20 @@ TEST(MotionAnimation, CheckNamesEachBadAnimation)
     scaled.local[2][0].linear() *= 2.0;
     EXPECT_EQ(code_of(check_animation(scaled)), DiagnosticCode::bad_animation);
 
+    // A root that jumps 1e30 units in one frame: the joints' extent is absurd (1e-6..1e6).
+    Animation jump = arm(5);
+    jump.local[2][0].translation().x() = 1e30;
+    const auto rj = check_animation(jump);
+    EXPECT_EQ(code_of(rj), DiagnosticCode::bad_animation);
+    EXPECT_NE(rj.diagnostics[0].message.find("1e+30"), std::string::npos)
+        << rj.diagnostics[0].message;
+    EXPECT_NE(rj.diagnostics[0].message.find("1e-6..1e6"), std::string::npos);
+    Animation tiny = arm(5);
+    for (auto& frame : tiny.local)
+        for (auto& t : frame)
+            t.translation() *= 1e-9;
+    EXPECT_EQ(code_of(check_animation(tiny)), DiagnosticCode::bad_animation);
+
     Animation none;
     none.source = "empty";
     EXPECT_EQ(code_of(check_animation(none)), DiagnosticCode::bad_animation);
