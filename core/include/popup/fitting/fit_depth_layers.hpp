@@ -1,0 +1,46 @@
+#pragma once
+#include <map>
+#include <string>
+#include <vector>
+
+#include "popup/fitting/fit_design.hpp"
+#include "popup/model/base_patch_pair.hpp"
+
+namespace popup {
+
+/// What the depth-layer stage may build and how it judges a layer.
+struct DepthLayerFitOptions {
+    double min_part_mm = 0.0;  ///< narrowest glued part: runs, rises, widths and depths (mm)
+    int metric_samples = 4000; ///< model samples for the mean distance (fit_metrics)
+    std::uint64_t seed = 1;    ///< seeds those samples (the same for every comparison)
+};
+
+/// What the depth-layer stage did.
+struct DepthLayerOutcome {
+    Scaffold scaffold;                       ///< the design with the kept layers built and cut
+    std::vector<FittedMechanism> mechanisms; ///< the nested mechanisms kept, in build order
+    std::vector<FittedProfile> profiles;     ///< their viewer-facing parts' outlines
+    std::vector<FittedDepthLayer> layers;    ///< every layer proud of or behind its face
+    std::vector<FitRepair> repairs;          ///< one "layer kept" / "layer dropped" per layer
+    double mean_before_mm = 0.0;             ///< model-to-pop-up mean distance without layers
+    double mean_after_mm = 0.0;              ///< with the kept layers
+};
+
+/// Thesis §5.1.3, depth layers: the front (L, seen from the viewer's side) and top (TG and TB)
+/// faces of every box fold in `mechanisms` are clustered by depth (depth_layers); every layer
+/// standing proud of the box's face becomes a nested mechanism on the box, its viewer-facing
+/// parts cut to the layer's silhouette: a front layer a step fold on "<box>.side_ground" (riser
+/// at the layer's depth, rising from the page to the layer's top), a top layer a box fold on
+/// "<box>.top" (its top at the layer's height). Layers are tried nearest first, box by box; one
+/// is kept only while the design (`scaffold`, valid at 180°, with its profiles applied) stays
+/// valid under the full check_validity and fit_metrics' model-to-pop-up mean distance drops.
+/// `pairs` are the base patch pairs the built mechanisms offer (RepairOutcome::pairs).
+/// `model` is in model units, `model_to_card` places it.
+DepthLayerOutcome fit_depth_layers(const ModelMesh& model, const Eigen::Matrix4d& model_to_card,
+                                   const Scaffold& scaffold,
+                                   const std::vector<FittedMechanism>& mechanisms,
+                                   const std::map<std::string, BasePatchPair>& pairs,
+                                   const DepthLayerFitOptions& options,
+                                   const CancelFlag* cancel = nullptr);
+
+} // namespace popup
