@@ -232,6 +232,27 @@ Result<std::optional<FittedProfile>> cut_part(Scaffold& s, const std::string& na
     return r;
 }
 
+/// The first mechanism of `fitted` or `added` standing on `pair` whose span along its hinge
+/// overlaps [from, to], or empty.
+std::string occupant(const std::vector<FittedMechanism>& fitted,
+                     const std::vector<FittedMechanism>& added, const std::string& pair,
+                     double from, double to)
+{
+    for (const auto* list : {&fitted, &added})
+        for (const FittedMechanism& m : *list) {
+            if (m.host != pair)
+                continue;
+            const auto& q = m.parameters;
+            const double a0 = q.count("offset") ? q.at("offset") : 0.0;
+            const double extent = q.count("width")   ? q.at("width")
+                                  : q.count("spine") ? q.at("spine") * std::cos(q.at("spine_angle"))
+                                                     : 0.0;
+            if (a0 < to && from < a0 + extent)
+                return m.name;
+        }
+    return {};
+}
+
 /// The parts of the new mechanism `name` whose plane is parallel to `face` (the patch clustered).
 std::vector<std::string> facing_parts(const Scaffold& s, const std::string& name, const Patch& face,
                                       bool wall)
@@ -334,6 +355,15 @@ DepthLayerOutcome fit_depth_layers(const ModelMesh& model, const Eigen::Matrix4d
                     continue;
                 }
                 report.area = f->area;
+                // What already stands on the pair there models that part of the model (a
+                // fitted primitive, or an earlier layer): a layer there would duplicate it.
+                const std::string occupied =
+                    occupant(mechanisms, out.mechanisms, face.pair, f->lo.x(), f->hi.x());
+                if (!occupied.empty()) {
+                    drop(face.pair + " already carries " + occupied + " along " + mm(f->lo.x()) +
+                         " to " + mm(f->hi.x()) + " mm of its hinge");
+                    continue;
+                }
                 const double width = f->hi.x() - f->lo.x();
                 const double rise = f->hi.y();
                 std::ostringstream small;
