@@ -60,6 +60,12 @@ def add_parser(sub, max_mechanisms):
         "narrowest glue tab needs; 0 allows any, and the sheets may then refuse a tab)",
     )
     fit.add_argument(
+        "--no-depth-layers",
+        action="store_true",
+        help="keep box folds' fronts, backs and tops flat: no nested mechanisms for the parts "
+        "of the model standing proud of them (thesis §5.1.3)",
+    )
+    fit.add_argument(
         "--paper",
         help=f"paper of the sheets, A4, A3, Letter, Tabloid or WxH mm; the card is the largest "
         f"that fits on it (default: the PopUp preference, else {DEFAULT_PAPER})",
@@ -112,6 +118,7 @@ def _options(args, cli, fit_run):
         )
         if args.min_part is not None:
             options.min_part_mm = args.min_part
+        options.depth_layers = not args.no_depth_layers
     except ValueError as e:  # the core's own range checks of the same values
         raise cli.InputError(cli._one_line(e))
     return options, paper
