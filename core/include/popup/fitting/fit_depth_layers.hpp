@@ -20,22 +20,23 @@ struct DepthLayerOutcome {
     Scaffold scaffold;                       ///< the design with the kept layers built and cut
     std::vector<FittedMechanism> mechanisms; ///< the nested mechanisms kept, in build order
     std::vector<FittedProfile> profiles;     ///< their viewer-facing parts' outlines
-    std::vector<FittedDepthLayer> layers;    ///< every layer proud of or behind its face
+    std::vector<FittedDepthLayer> layers;    ///< every layer standing proud of its face
     std::vector<FitRepair> repairs;          ///< one "layer kept" / "layer dropped" per layer
     double mean_before_mm = 0.0;             ///< model-to-pop-up mean distance without layers
     double mean_after_mm = 0.0;              ///< with the kept layers
 };
 
-/// Thesis §5.1.3, depth layers: the front (L, seen from the viewer's side) and top (TG and TB)
-/// faces of every box fold in `mechanisms` are clustered by depth (depth_layers); every layer
-/// standing proud of the box's face becomes a nested mechanism on the box, its viewer-facing
-/// parts cut to the layer's silhouette: a front layer a step fold on "<box>.side_ground" (riser
-/// at the layer's depth, rising from the page to the layer's top), a top layer a box fold on
-/// "<box>.top" (its top at the layer's height). Layers are tried nearest first, box by box; one
-/// is kept only while the design (`scaffold`, valid at 180°, with its profiles applied) stays
-/// valid under the full check_validity and fit_metrics' model-to-pop-up mean distance drops.
-/// `pairs` are the base patch pairs the built mechanisms offer (RepairOutcome::pairs).
-/// `model` is in model units, `model_to_card` places it.
+/// Thesis §5.1.3, depth layers: the front (L, on the viewer's side), back (R) and top (TG and
+/// TB) faces of every box fold in `mechanisms` are clustered by depth (depth_layers); every layer
+/// standing proud of the box's face becomes a nested mechanism on the box, its part parallel to
+/// the face cut to the layer's silhouette: a front or back layer a step fold on
+/// "<box>.side_ground" / "<box>.side_backdrop" (run along the page = the layer's depth, rise up
+/// the wall = its top), a top layer a box fold on "<box>.top" (its top at the layer's height).
+/// Layers are tried nearest first, box by box; one is kept only while the design (`scaffold`,
+/// valid at 180°, with its profiles applied) stays valid under the full check_validity and
+/// fit_metrics' model-to-pop-up mean distance drops (docs/DESIGN.md, "Depth layers built as
+/// nested mechanisms"). `pairs` are the base patch pairs the built mechanisms offer
+/// (RepairOutcome::pairs). `model` is in model units, `model_to_card` places it.
 DepthLayerOutcome fit_depth_layers(const ModelMesh& model, const Eigen::Matrix4d& model_to_card,
                                    const Scaffold& scaffold,
                                    const std::vector<FittedMechanism>& mechanisms,

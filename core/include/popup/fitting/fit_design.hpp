@@ -39,7 +39,7 @@ struct FitOptions {
     std::uint64_t seed = 1;
     /// Principal patches take the model's silhouette as a Profile (§5.1.3, fit_outlines.hpp).
     bool outlines = true;
-    /// Box folds' front and top faces split into depth layers, each nearer layer a nested
+    /// Box folds' front, back and top faces split into depth layers, each nearer layer a nested
     /// mechanism kept when the design stays valid and the model-to-pop-up mean distance drops
     /// (§5.1.3, fit_depth_layers.hpp). Needs `outlines`.
     bool depth_layers = true;
