@@ -232,6 +232,26 @@ Result<std::optional<FittedProfile>> cut_part(Scaffold& s, const std::string& na
     return r;
 }
 
+/// The triangles of `model` whose centroid lies over the pair's room: [0, length] along its
+/// hinge, [lo, hi] along `across` (the vertices are kept whole; unused ones do no harm).
+ModelMesh in_front_of(const ModelMesh& model, const BasePatchPair& pair, const Vec3& across,
+                      double lo, double hi)
+{
+    ModelMesh out;
+    out.source = model.source;
+    out.vertices = model.vertices;
+    for (const auto& t : model.triangles) {
+        const Vec3 c = (model.vertices[size_t(t[0])] + model.vertices[size_t(t[1])] +
+                        model.vertices[size_t(t[2])]) /
+                           3.0 -
+                       pair.origin;
+        const double a = c.dot(pair.axis), b = c.dot(across);
+        if (a >= 0 && a <= pair.length && b >= lo && b <= hi)
+            out.triangles.push_back(t);
+    }
+    return out;
+}
+
 /// The first mechanism of `fitted` or `added` standing on `pair` whose span along its hinge
 /// overlaps [from, to], or empty.
 std::string occupant(const std::vector<FittedMechanism>& fitted,
@@ -309,18 +329,6 @@ DepthLayerOutcome fit_depth_layers(const ModelMesh& model, const Eigen::Matrix4d
             const BasePatchPair& pair = pair_it->second;
             const Patch face_patch = *patch; // out.scaffold changes as layers are kept
             const int patch_id = face_patch.id;
-            const Result<ProfileFrame> frame = profile_frame(out.scaffold, patch_id);
-            const Result<std::vector<DepthLayer>> layers =
-                depth_layers(in_card, out.scaffold, patch_id);
-            if (!frame.ok || !layers.ok)
-                continue; // no face of the model faces it: nothing to layer
-            // The face's own layer is the one nearest its plane; a layer counts as standing
-            // proud when its faces all lie in front of that one's.
-            const std::vector<DepthLayer>& all = layers.value;
-            size_t own = 0;
-            for (size_t k = 1; k < all.size(); ++k)
-                if (std::abs(all[k].depth) < std::abs(all[own].depth))
-                    own = k;
             // Across the pair's hinge in the world: up the box's wall (L is a side pair's
             // backdrop, R its ground), or the top's ground side. A wall layer is a step on the
             // side pair; a top layer a box on the top pair.
@@ -332,6 +340,22 @@ DepthLayerOutcome fit_depth_layers(const ModelMesh& model, const Eigen::Matrix4d
             const double page_room = wall_is_backdrop ? pair.ground_depth : pair.backdrop_depth;
             const double lo = wall ? 0.0 : -pair.backdrop_depth;
             const double hi = wall ? wall_height : pair.ground_depth;
+            // Only the model in front of the pair's room is clustered: another part of the
+            // model at a similar depth elsewhere must not pull a layer's depth.
+            const Result<ProfileFrame> frame = profile_frame(out.scaffold, patch_id);
+            DepthLayerOptions dlo;
+            dlo.min_gap = 0.02 * in_card.diagonal();
+            const Result<std::vector<DepthLayer>> layers = depth_layers(
+                in_front_of(in_card, pair, across, lo, hi), out.scaffold, patch_id, dlo);
+            if (!frame.ok || !layers.ok)
+                continue; // no face of the model faces it there: nothing to layer
+            // The face's own layer is the one nearest its plane; a layer counts as standing
+            // proud when its faces all lie in front of that one's.
+            const std::vector<DepthLayer>& all = layers.value;
+            size_t own = 0;
+            for (size_t k = 1; k < all.size(); ++k)
+                if (std::abs(all[k].depth) < std::abs(all[own].depth))
+                    own = k;
             for (size_t k = 0; k < all.size(); ++k) {
                 if (k == own || all[k].depth_near <= all[own].depth_far)
                     continue; // the face itself, or behind it: nothing stands there

@@ -177,3 +177,52 @@ TEST(FitDepthLayers, PlainCuboidHasNoDepthLayer)
 }
 
 } // namespace
+
+namespace {
+
+TEST(FitDepthLayers, WhatThePrimitivesAlreadyModelIsNotLayeredAgain)
+{
+    // With room for more primitives, RANSAC finds bonnet, bed and beacon itself (steps on the
+    // cab's sides, a box on its top); their layers stand where those are and are dropped.
+    FitOptions o = truck_options();
+    o.max_mechanisms = 8;
+    const auto fit = fit_design(stepped_truck(), o);
+    ASSERT_TRUE(fit.ok && fit.value.valid);
+    const FitResult& r = fit.value;
+    EXPECT_EQ(r.mechanisms.size(), 4u) << describe(r);
+    for (const FittedMechanism& m : r.mechanisms)
+        EXPECT_EQ(m.primitive.find("depth layer"), std::string::npos) << m.name;
+    ASSERT_EQ(r.depth_layers.size(), 3u) << describe(r);
+    for (const FittedDepthLayer& l : r.depth_layers) {
+        EXPECT_FALSE(l.kept);
+        EXPECT_NE(l.reason.find("already carries"), std::string::npos) << l.reason;
+    }
+}
+
+TEST(FitDepthLayers, ALayerThinnerThanTheNarrowestGluedPartIsDroppedAndSaysSo)
+{
+    // A plate 4 proud of the cab's front (and one on its back, to keep the cab centred): about
+    // 6 mm on the card, below min_part_mm (11.1 mm).
+    ModelMesh m = join({box_mesh({-20, 0, 0}, {20, 60, 40}), box_mesh({20, 20, 0}, {24, 40, 25}),
+                        box_mesh({-24, 20, 0}, {-20, 40, 25})});
+    const auto fit = fit_design(m, truck_options());
+    ASSERT_TRUE(fit.ok && fit.value.valid);
+    const FitResult& r = fit.value;
+    const double s = scale_of(r);
+    ASSERT_LT(4 * s, FitOptions().min_part_mm);
+    EXPECT_EQ(r.mechanisms.size(), 1u) << describe(r);
+    ASSERT_EQ(r.depth_layers.size(), 2u) << describe(r);
+    for (const FittedDepthLayer& l : r.depth_layers) {
+        EXPECT_FALSE(l.kept);
+        EXPECT_NEAR(l.depth, 4 * s, 0.02 * 48 * s);
+        EXPECT_NE(l.reason.find("below min_part_mm"), std::string::npos) << l.reason;
+    }
+    // With no narrowest part, the same plaques are kept.
+    FitOptions any = truck_options();
+    any.min_part_mm = 0;
+    const auto thin = fit_design(m, any);
+    ASSERT_TRUE(thin.ok && thin.value.valid);
+    EXPECT_EQ(thin.value.mechanisms.size(), 3u) << describe(thin.value);
+}
+
+} // namespace
