@@ -148,16 +148,21 @@ std::string first_error(const Diagnostics& d, const std::string& otherwise)
     return otherwise;
 }
 
-/// Mean distance from the model's surface to the pop-up at 180° (fit_metrics), mm.
-std::optional<double> mean_distance(const ModelMesh& model, const Eigen::Matrix4d& model_to_card,
-                                    const Scaffold& s, const DepthLayerFitOptions& o)
+FitMetricsOptions metric_options(const DepthLayerFitOptions& o)
 {
     FitMetricsOptions fo;
     fo.samples = o.metric_samples;
     fo.seed = o.seed;
     fo.hausdorff_error = 0.1; // only the sampled mean is used
     fo.volume_cells = 2;
-    const Result<FitMetrics> m = fit_metrics(model, model_to_card, s, {}, fo);
+    return fo;
+}
+
+/// Mean distance from the model's surface to the pop-up at 180° (fit_metrics), mm.
+std::optional<double> mean_distance(const ModelMesh& model, const Eigen::Matrix4d& model_to_card,
+                                    const Scaffold& s, const DepthLayerFitOptions& o)
+{
+    const Result<FitMetrics> m = fit_metrics(model, model_to_card, s, {}, metric_options(o));
     if (!m.ok)
         return std::nullopt;
     return m.value.model_to_popup_mm.mean;
@@ -295,24 +300,45 @@ std::vector<std::string> facing_parts(const Scaffold& s, const std::string& name
 
 } // namespace
 
-DepthLayerOutcome fit_depth_layers(const ModelMesh& model, const Eigen::Matrix4d& model_to_card,
-                                   const Scaffold& scaffold,
-                                   const std::vector<FittedMechanism>& mechanisms,
-                                   const std::map<std::string, BasePatchPair>& pairs,
-                                   const DepthLayerFitOptions& options, const CancelFlag* cancel)
+Result<DepthLayerOutcome>
+fit_depth_layers(const ModelMesh& model, const Eigen::Matrix4d& model_to_card,
+                 const Scaffold& scaffold, const std::vector<FittedMechanism>& mechanisms,
+                 const std::map<std::string, BasePatchPair>& pairs,
+                 const DepthLayerFitOptions& options, const CancelFlag* cancel)
 {
-    DepthLayerOutcome out;
+    Result<DepthLayerOutcome> result;
+    auto bad = [&](const std::string& option, double value, const std::string& range) {
+        std::ostringstream m;
+        m << "depth layers: " << option << " = " << value << ", must be " << range;
+        result.fail(DiagnosticCode::bad_option, m.str(), about_parameter(option));
+    };
+    if (!(options.min_part_mm >= 0 && std::isfinite(options.min_part_mm)))
+        bad("min_part_mm", options.min_part_mm, "a length >= 0 mm");
+    if (!(options.metric_samples >= 100 && options.metric_samples <= 10000000))
+        bad("metric_samples", options.metric_samples, "100 to 10000000");
+    if (!std::isfinite(options.range_margin))
+        bad("range_margin", options.range_margin, "a finite length in mm (<= 0 for the default)");
+    if (!result.ok)
+        return result;
+    DepthLayerOutcome& out = result.value;
     out.scaffold = scaffold;
     const ModelMesh in_card = placed(model, model_to_card);
-    const std::optional<double> first = mean_distance(model, model_to_card, scaffold, options);
-    if (!first)
-        return out; // nothing to compare with: no layer can show it helps
+    FitMetricsOptions fo = metric_options(options);
+    const Result<FitMetrics> measured = fit_metrics(model, model_to_card, scaffold, {}, fo);
+    if (!measured.ok) { // nothing to compare with: no layer can show it helps
+        for (const Diagnostic& d : measured.diagnostics)
+            result.diagnostics.push_back(Diagnostic::warning(
+                d.code, "depth layers not tried: " + d.message, about_patches(d.patches)));
+        return result;
+    }
+    const std::optional<double> first = measured.value.model_to_popup_mm.mean;
     out.mean_before_mm = out.mean_after_mm = *first;
     std::set<std::string> taken;
     for (const FittedMechanism& m : mechanisms)
         taken.insert(m.name);
     const double min_part = options.min_part_mm;
-    const double margin = 1e-6 * std::max(1.0, in_card.diagonal());
+    const double margin =
+        options.range_margin > 0 ? options.range_margin : 1e-6 * std::max(1.0, in_card.diagonal());
     ValidityOptions vo;
     vo.cancel = cancel;
     for (const FittedMechanism& box : mechanisms) {
@@ -507,7 +533,7 @@ DepthLayerOutcome fit_depth_layers(const ModelMesh& model, const Eigen::Matrix4d
             }
         }
     }
-    return out;
+    return result;
 }
 
 } // namespace popup

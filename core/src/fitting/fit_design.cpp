@@ -261,8 +261,16 @@ Result<FitResult> fit_design(const ModelMesh& model, const FitOptions& options,
             DepthLayerFitOptions lo;
             lo.min_part_mm = options.min_part_mm;
             lo.seed = options.seed;
-            DepthLayerOutcome layered = fit_depth_layers(model, r.model_to_card, r.scaffold,
-                                                         r.mechanisms, outcome.pairs, lo, cancel);
+            lo.range_margin = 1e-6 * std::max(options.card_width, options.card_depth);
+            Result<DepthLayerOutcome> tried = fit_depth_layers(
+                model, r.model_to_card, r.scaffold, r.mechanisms, outcome.pairs, lo, cancel);
+            if (!tried.ok) { // its options come from checked FitOptions: not expected
+                result.fail_with(tried.diagnostics);
+                return result;
+            }
+            for (const Diagnostic& d : tried.diagnostics)
+                r.diagnostics.push_back(d);
+            DepthLayerOutcome& layered = tried.value;
             r.scaffold = std::move(layered.scaffold);
             for (FittedMechanism& m : layered.mechanisms)
                 r.mechanisms.push_back(std::move(m));

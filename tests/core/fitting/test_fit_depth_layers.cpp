@@ -8,6 +8,7 @@
 #include <map>
 
 #include "fitting/synthetic_models.hpp"
+#include "popup/fitting/fit_depth_layers.hpp"
 #include "popup/fitting/fit_design.hpp"
 #include "popup/fitting/fit_metrics.hpp"
 #include "popup/simulation/check_validity.hpp"
@@ -223,6 +224,28 @@ TEST(FitDepthLayers, ALayerThinnerThanTheNarrowestGluedPartIsDroppedAndSaysSo)
     const auto thin = fit_design(m, any);
     ASSERT_TRUE(thin.ok && thin.value.valid);
     EXPECT_EQ(thin.value.mechanisms.size(), 3u) << describe(thin.value);
+}
+
+} // namespace
+
+namespace {
+
+TEST(FitDepthLayers, BadOptionsAreNamedWithTheirRange)
+{
+    DepthLayerFitOptions o;
+    o.min_part_mm = -1;
+    o.metric_samples = 5;
+    const auto r =
+        fit_depth_layers(cuboid_model(), Eigen::Matrix4d::Identity(), Scaffold(), {}, {}, o);
+    ASSERT_FALSE(r.ok);
+    ASSERT_EQ(r.diagnostics.size(), 2u);
+    EXPECT_EQ(r.diagnostics[0].code, DiagnosticCode::bad_option);
+    EXPECT_NE(r.diagnostics[0].message.find("min_part_mm = -1, must be a length >= 0 mm"),
+              std::string::npos)
+        << r.diagnostics[0].message;
+    EXPECT_NE(r.diagnostics[1].message.find("metric_samples = 5, must be 100 to 10000000"),
+              std::string::npos)
+        << r.diagnostics[1].message;
 }
 
 } // namespace

@@ -13,6 +13,9 @@ struct DepthLayerFitOptions {
     double min_part_mm = 0.0;  ///< narrowest glued part: runs, rises, widths and depths (mm)
     int metric_samples = 4000; ///< model samples for the mean distance (fit_metrics)
     std::uint64_t seed = 1;    ///< seeds those samples (the same for every comparison)
+    /// Parameters stay this far inside their generator's ranges (mm), as keep_inside_ranges
+    /// keeps the fitted plans; <= 0: a millionth of the model's diagonal on the card.
+    double range_margin = 0.0;
 };
 
 /// What the depth-layer stage did.
@@ -36,12 +39,14 @@ struct DepthLayerOutcome {
 /// valid at 180°, with its profiles applied) stays valid under the full check_validity and
 /// fit_metrics' model-to-pop-up mean distance drops (docs/DESIGN.md, "Depth layers built as
 /// nested mechanisms"). `pairs` are the base patch pairs the built mechanisms offer
-/// (RepairOutcome::pairs). `model` is in model units, `model_to_card` places it.
-DepthLayerOutcome fit_depth_layers(const ModelMesh& model, const Eigen::Matrix4d& model_to_card,
-                                   const Scaffold& scaffold,
-                                   const std::vector<FittedMechanism>& mechanisms,
-                                   const std::map<std::string, BasePatchPair>& pairs,
-                                   const DepthLayerFitOptions& options,
-                                   const CancelFlag* cancel = nullptr);
+/// (RepairOutcome::pairs). `model` is in model units, `model_to_card` places it. Bad options are
+/// bad_option errors naming the option and its range; when the design cannot be measured
+/// (fit_metrics refuses it) the design comes back unchanged with fit_metrics' findings as
+/// warnings.
+Result<DepthLayerOutcome>
+fit_depth_layers(const ModelMesh& model, const Eigen::Matrix4d& model_to_card,
+                 const Scaffold& scaffold, const std::vector<FittedMechanism>& mechanisms,
+                 const std::map<std::string, BasePatchPair>& pairs,
+                 const DepthLayerFitOptions& options, const CancelFlag* cancel = nullptr);
 
 } // namespace popup
