@@ -168,6 +168,10 @@ def _write_stl(path):
         f.write("endsolid stepped_truck\n")
 
 
+def _mean(report):
+    return report["metrics"]["hausdorff_mm"]["model_to_popup"]["mean"]
+
+
 def test_popup_fit_reports_the_kept_layers(tmp_path):
     model = tmp_path / "stepped_truck.stl"
     _write_stl(model)
@@ -199,5 +203,4 @@ def test_popup_fit_reports_the_kept_layers(tmp_path):
     with open(os.path.join(flat, "report.json")) as f:
         without = json.load(f)
     assert without["number_of_mechanisms"] == 1 and without["depth_layers"] == []
-    mean = lambda r: r["metrics"]["hausdorff_mm"]["model_to_popup"]["mean"]  # noqa: E731
-    assert mean(report) < mean(without)
+    assert _mean(report) < _mean(without)
