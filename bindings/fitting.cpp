@@ -62,7 +62,8 @@ void bind_fitting(py::module_& m)
         .def_readwrite("threshold", &FitOptions::threshold)
         .def_readwrite("samples", &FitOptions::samples)
         .def_readwrite("seed", &FitOptions::seed)
-        .def_readwrite("outlines", &FitOptions::outlines);
+        .def_readwrite("outlines", &FitOptions::outlines)
+        .def_readwrite("depth_layers", &FitOptions::depth_layers);
 
     py::class_<FittedPrimitive>(m, "FittedPrimitive")
         .def_readonly("kind", &FittedPrimitive::kind)
@@ -103,6 +104,19 @@ void bind_fitting(py::module_& m)
         .def_readonly("area", &FittedProfile::area)
         .def_readonly("area_before", &FittedProfile::area_before);
 
+    py::class_<FittedDepthLayer>(m, "FittedDepthLayer",
+                                 "A depth layer of a box fold's front or top (thesis §5.1.3) and "
+                                 "whether it was built as a nested mechanism")
+        .def_readonly("box", &FittedDepthLayer::box)
+        .def_readonly("face", &FittedDepthLayer::face)
+        .def_readonly("depth", &FittedDepthLayer::depth)
+        .def_readonly("area", &FittedDepthLayer::area)
+        .def_readonly("kept", &FittedDepthLayer::kept)
+        .def_readonly("mechanism", &FittedDepthLayer::mechanism)
+        .def_readonly("reason", &FittedDepthLayer::reason)
+        .def_readonly("mean_before_mm", &FittedDepthLayer::mean_before_mm)
+        .def_readonly("mean_after_mm", &FittedDepthLayer::mean_after_mm);
+
     py::class_<FitResult>(m, "FitResult")
         .def_readonly("card", &FitResult::card)
         .def_property_readonly("model_to_card",
@@ -112,6 +126,7 @@ void bind_fitting(py::module_& m)
         .def_readonly("repairs", &FitResult::repairs)
         .def_readonly("scaffold", &FitResult::scaffold)
         .def_readonly("profiles", &FitResult::profiles)
+        .def_readonly("depth_layers", &FitResult::depth_layers)
         .def_readonly("valid", &FitResult::valid)
         .def_readonly("coverage", &FitResult::coverage)
         .def_readonly("coverage_error", &FitResult::coverage_error)

@@ -56,6 +56,12 @@ def add_parser(sub, max_mechanisms):
         help="shortest glued crease a mechanism may have, mm (default: what the sheets' "
         "narrowest glue tab needs; 0 allows any, and the sheets may then refuse a tab)",
     )
+    fit.add_argument(
+        "--no-depth-layers",
+        action="store_true",
+        help="keep box folds' fronts, backs and tops flat: no nested mechanisms for the parts "
+        "of the model standing proud of them (thesis §5.1.3)",
+    )
     steps.add_paper_flag(fit)
     fit.add_argument(
         "--up",
@@ -89,6 +95,7 @@ def _options(args, cli, fit_run):
         )
         if args.min_part is not None:
             options.min_part_mm = args.min_part
+        options.depth_layers = not args.no_depth_layers
     return options, paper
 
 

@@ -71,6 +71,22 @@ def profile_entry(profile):
     }
 
 
+def depth_layer_entry(layer):
+    """{box, face, depth_mm, area_mm2, kept, mechanism, reason, mean_before_mm, mean_after_mm}
+    of a FittedDepthLayer (the means are 0 when the layer was dropped before measuring)."""
+    return {
+        "box": layer.box,
+        "face": layer.face,
+        "depth_mm": float(layer.depth),
+        "area_mm2": float(layer.area),
+        "kept": bool(layer.kept),
+        "mechanism": layer.mechanism,
+        "reason": layer.reason,
+        "mean_before_mm": float(layer.mean_before_mm),
+        "mean_after_mm": float(layer.mean_after_mm),
+    }
+
+
 def build_report(
     *,
     model_file,
@@ -134,6 +150,11 @@ def build_report(
         "primitives": [primitive_entry(p) for p in result.primitives] if result is not None else [],
         "profiles": (
             [profile_entry(p) for p in getattr(result, "profiles", ())]
+            if result is not None
+            else []
+        ),
+        "depth_layers": (
+            [depth_layer_entry(x) for x in getattr(result, "depth_layers", ())]
             if result is not None
             else []
         ),

@@ -142,6 +142,9 @@ def options_dict(options):
         "seed",
         "up",
         "facing",
+        "min_part_mm",
+        "outlines",
+        "depth_layers",
     )
     values = {}
     for name in names:

@@ -16,6 +16,7 @@ struct Built {
     Scaffold scaffold;
     std::vector<MechanismParts> parts; ///< per plan; empty name when not built
     std::vector<std::string> refused;  ///< per plan: why the generator refused it, or empty
+    std::map<std::string, BasePatchPair> pairs; ///< offered by the card and the built plans
 };
 
 Built build(const CardParams& card, const std::vector<MechanismPlan>& plans,
@@ -91,6 +92,7 @@ Built build(const CardParams& card, const std::vector<MechanismPlan>& plans,
             pairs[offered.name] = offered;
         b.parts[i] = added.value;
     }
+    b.pairs = pairs;
     return b;
 }
 
@@ -192,6 +194,7 @@ RepairOutcome build_until_valid(const CardParams& card, const std::vector<Mechan
         drop(size_t(culprit), "the validity check failed: " + why);
     }
     out.scaffold = built.scaffold;
+    out.pairs = built.pairs;
     out.kept.assign(plans.size(), false);
     bool any = false;
     for (size_t i = 0; i < plans.size(); ++i) {

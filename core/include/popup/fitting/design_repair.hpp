@@ -1,4 +1,6 @@
 #pragma once
+#include <map>
+#include <string>
 #include <vector>
 
 #include "popup/fitting/fit_design.hpp"
@@ -15,6 +17,9 @@ struct RepairOutcome {
     Diagnostics warnings;           ///< one mechanism_dropped warning per plan left out
     ValidityReport report;          ///< the last full check (default when nothing was checked)
     bool valid = false;             ///< something was kept and the last full check passed
+    /// The base patch pairs of `scaffold` by name: the central fold and every pair the kept
+    /// mechanisms offer (what a mechanism added later stands on).
+    std::map<std::string, BasePatchPair> pairs;
 };
 
 /// Builds the card and the plans in host order (each on the pair its host offered), then

@@ -39,6 +39,10 @@ struct FitOptions {
     std::uint64_t seed = 1;
     /// Principal patches take the model's silhouette as a Profile (§5.1.3, fit_outlines.hpp).
     bool outlines = true;
+    /// Box folds' front, back and top faces split into depth layers, each nearer layer a nested
+    /// mechanism kept when the design stays valid and the model-to-pop-up mean distance drops
+    /// (§5.1.3, fit_depth_layers.hpp). Needs `outlines`.
+    bool depth_layers = true;
 };
 
 /// One fitted primitive, in the card's frame at the design state (mm), for previews.
@@ -77,6 +81,19 @@ struct FittedProfile {
     double area_before = 0.0;      ///< mm², of the part as generated
 };
 
+/// One depth layer of a box fold's front or top (§5.1.3) and what became of it.
+struct FittedDepthLayer {
+    std::string box;             ///< the box fold whose face it is in front of (B1...)
+    std::string face;            ///< "front" (the box's L) or "top" (TG and TB)
+    double depth = 0.0;          ///< mm in front of (above) that face: the area-weighted mean
+    double area = 0.0;           ///< mm², of its silhouette on the box's face, clipped to the host
+    bool kept = false;           ///< built as `mechanism`
+    std::string mechanism;       ///< the nested mechanism (S2, B3...), or empty when never built
+    std::string reason;          ///< why it was kept or dropped
+    double mean_before_mm = 0.0; ///< model-to-pop-up mean distance before trying it (0: not
+    double mean_after_mm = 0.0;  ///< measured) and with it
+};
+
 struct FitResult {
     CardParams card;
     Eigen::Matrix4d model_to_card = Eigen::Matrix4d::Identity(); ///< model units to card mm
@@ -85,6 +102,7 @@ struct FitResult {
     std::vector<FitRepair> repairs;
     Scaffold scaffold; ///< card plus mechanisms at the design state (180°), profiled
     std::vector<FittedProfile> profiles; ///< outlines of the principal parts (options.outlines)
+    std::vector<FittedDepthLayer> depth_layers; ///< options.depth_layers: every layer tried
     bool valid = false;    ///< the simulator's full validity check passed on `scaffold`
     double coverage = 0.0; ///< fraction of the pseudo-vertices within threshold of the pop-up
     std::vector<std::pair<std::string, double>> timings_s; ///< stage -> seconds, in order
