@@ -220,24 +220,14 @@ def test_blender_figure_reads_with_its_recorded_hand_paths(extension):
 # ------------------------------------------------------------------ the pipeline (§4)
 
 
-# Known failures of design_motion as merged on 2026-11-23 (strict: they fail the suite once fixed,
+# Known failure of design_motion as merged on 2026-11-23 (strict: it fails the suite once fixed,
 # so the mark comes off). STRAIGHT: a straight path keeps only its two end points under the
 # flatness-only adaptive sampling (τangle), so E_m cannot tell a floating layer (whose platform
 # point also slides out along x in projection) from the mechanism that moves like the path.
 STRAIGHT = "straight paths are sampled at their 2 end points only (docs/MOTION_RESULTS.md)"
-KNOWN = {
-    "rig_vertical": "its 2-sample straight path is mapped to a rotation arm (" + STRAIGHT + ")",
-    "rig_diagonal": "the fitted diagonal fails the full simulator's check: made stationary",
-}
 
 
-@pytest.mark.parametrize(
-    "name",
-    [
-        pytest.param(n, marks=pytest.mark.xfail(strict=True, reason=KNOWN[n])) if n in KNOWN else n
-        for n in RIGS
-    ],
-)
+@pytest.mark.parametrize("name", list(RIGS))
 def test_synthetic_rig_recovers_its_mechanism(name):
     m = meta(name)
     ((bone, known),) = m["known"].items()

@@ -10,6 +10,7 @@ namespace popup::motion {
 namespace {
 
 constexpr double inf = std::numeric_limits<double>::infinity();
+constexpr int polish_rounds = 3;
 
 double clamp(double v, double lo, double hi)
 {
@@ -124,6 +125,23 @@ MotionMechanism polish(MotionMechanism m, const std::function<double(const Motio
     return simplex[best];
 }
 
+// Moves m along the fold (its offset, p[0]) so that its closed-form vertices at θ = 0 lie within
+// [0, W] along the fold, when they can (a mechanism longer than the card stays as it is).
+void fit_along_fold_when_closed(MotionMechanism& m, double W)
+{
+    double lo = inf, hi = -inf;
+    for (const Vec3& q : mechanism_vertices(m, 0.0)) {
+        lo = std::min(lo, q.y());
+        hi = std::max(hi, q.y());
+    }
+    if (!(hi - lo <= W))
+        return;
+    if (lo < 0)
+        m.p[0] += -lo;
+    else if (hi > W)
+        m.p[0] -= hi - W;
+}
+
 } // namespace
 
 std::vector<Vec2> achieved_path(const MotionMechanism& m, const std::vector<double>& s)
@@ -162,7 +180,11 @@ std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& t,
             c.error_mm = inf;
             return c;
         }
-        c.mechanism = polish(m, cost, evaluations);
+        // Nelder–Mead restarted from its own best with a fresh simplex: a collapsed simplex
+        // stalls short of the minimum on the nested mechanisms' 8 parameters.
+        c.mechanism = m;
+        for (int round = 0; round < polish_rounds; ++round)
+            c.mechanism = polish(c.mechanism, cost, evaluations);
         c.error_mm = motion_error(c.mechanism, t);
         return c;
     };
@@ -247,6 +269,10 @@ std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& t,
                0.2 * spine,
                a,
                b};
+        // Closed, the standing spine lies down along the fold past O (towards −y) and the step
+        // rides on it: slide the whole mechanism along the fold until its closed parts are on
+        // the card, or the start is refused before the polish can move it.
+        fit_along_fold_when_closed(m, W);
         out[int(MotionKind::diagonal)] = finish(m, 800);
     }
     {
@@ -270,7 +296,7 @@ std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& t,
 }
 
 MotionKind best_mapping(const std::array<Candidate, motion_kind_count>& c, const ChainTarget& t,
-                        double still_mm)
+                        double still_mm, double diagonal)
 {
     Vec2 mean = Vec2::Zero();
     for (const Vec2& a : t.target)
@@ -284,6 +310,14 @@ MotionKind best_mapping(const std::array<Candidate, motion_kind_count>& c, const
     int best = int(MotionKind::stationary);
     for (int k = 0; k < motion_kind_count; ++k)
         if (c[k].error_mm < c[best].error_mm)
+            best = k;
+    // Paths two mechanisms both make (within mapping_tie_fraction) go to the one with
+    // fewer parameters: a diagonal whose step sits still on its wings also rises along the fold
+    // exactly, but a vertical path is the v-box's (Table 6.1).
+    const double tie = c[best].error_mm + mapping_tie_fraction * diagonal;
+    for (int k = 0; k < motion_kind_count; ++k)
+        if (c[k].error_mm <= tie &&
+            parameter_count(MotionKind(k)) < parameter_count(MotionKind(best)))
             best = k;
     return MotionKind(best);
 }
