@@ -265,7 +265,15 @@ def test_synthetic_rig_recovers_its_mechanism(name):
         assert np.asarray(arm.achieved[-1]) == pytest.approx(ident["open"], abs=ONE_PERCENT)
 
 
-@pytest.mark.xfail(strict=True, reason="the vertical and diagonal cases above")
+@pytest.mark.xfail(
+    strict=True,
+    reason="the four known mechanisms collide under the search's collision volumes (rotation "
+    "and horizontal 12.7 mm: the arm's tip dips to y = 162.4 mm, inside the extruding patch's "
+    "band up to 164 mm, in the 0-60° boxes; vertical and horizontal 3.6 mm: the chord padding "
+    "near 180° eats their 3 mm gap) though the simulator accepts them together, so the search "
+    "moves the horizontal and maps the vertical and diagonal chains to rotation arms "
+    "(docs/DESIGN.md, Synthetic rigs)",
+)
 def test_four_mechanisms_on_one_rig_are_all_recovered():
     m = meta("rig_four")
     result = design("rig_four")
@@ -361,3 +369,22 @@ def test_trajectory_json_example_reads_with_its_points():
             point[: len(effector["points"][frame])] = effector["points"][frame]
             got = np.asarray(pose[names.index(effector["name"])])[:3, 3]
             assert got == pytest.approx(point, abs=1e-9), (effector["name"], frame)
+
+
+def test_arm_rotation_is_held_to_the_rotation_arms_floor():
+    """arm_rotation's arc (centre (-40, 110), r = 40, 0° → 90°) leaves the fold along it, but
+    every point a rotation arm carries has x = k sin δ (docs/MATH.md, What a rotation arm can
+    follow): the least-squares k over the chain's own samples leaves an x residual that no
+    rotation arm can go under. The pipeline's arm must respect that floor and stay near it (the
+    y law costs the rest: an unbounded fit of the closed form ends at 7.01 mm, 1.10 × the floor
+    of these samples); the issue's 0.03 goal is below the floor (0.113 of the diagonal)."""
+    result = design("arm_rotation")
+    (chain,) = result.chains
+    assert chain.mapping == "rotation" and chain.status == "animated", chain.reason
+    delta = 0.5 * math.pi * np.asarray(chain.s)
+    x = np.asarray(chain.target)[:, 0]
+    k = np.dot(np.sin(delta), x) / np.dot(np.sin(delta), np.sin(delta))
+    floor = math.sqrt(np.mean((k * np.sin(delta) - x) ** 2))
+    assert floor / result.targets.diagonal_mm > 0.03  # the goal is out of the arm's reach
+    assert chain.error_mm >= floor - 1e-9
+    assert chain.error_mm <= 1.2 * floor

@@ -136,5 +136,32 @@ TEST(MechanismFit, APathTwoMechanismsMakeEquallyGoesToTheSimplerOne)
     EXPECT_EQ(best_mapping(c, t, 2.0, 200.0), MotionKind::diagonal);
 }
 
+TEST(MechanismFit, AStillChainWhoseLayerDoesNotFitGetsOnlyAMechanismThatHoldsItStill)
+{
+    // A still point 110 mm across the fold, 15 mm from the card's top edge (rig_four's body):
+    // its floating layer's end panels (support up to 0.4 of the depth) stick out of the closed
+    // card along the fold, so it has no stationary candidate; a moving one fitted to the point
+    // would reach 110 mm across the page. It maps to the layer all the same (left off).
+    ChainTarget t;
+    t.weight = 1;
+    for (int k = 0; k <= 8; ++k) {
+        t.s.push_back(k / 8.0);
+        t.target.push_back(Vec2(-110, 195));
+    }
+    const auto candidates = fit_candidates(t, a4(), 25);
+    ASSERT_FALSE(std::isfinite(candidates[int(MotionKind::stationary)].error_mm));
+    ASSERT_TRUE(std::isfinite(candidates[int(MotionKind::rotation)].error_mm));
+    EXPECT_EQ(best_mapping(candidates, t, 2.0, 200.0), MotionKind::stationary);
+    // Hand-made: a moving candidate that holds the point within the still bound (1 < 2 mm) is
+    // taken when the layer does not fit; one 3 mm off is not.
+    std::array<Candidate, motion_kind_count> c;
+    for (Candidate& x : c)
+        x.error_mm = std::numeric_limits<double>::infinity();
+    c[int(MotionKind::vertical)].error_mm = 1.0;
+    EXPECT_EQ(best_mapping(c, t, 2.0, 200.0), MotionKind::vertical);
+    c[int(MotionKind::vertical)].error_mm = 3.0;
+    EXPECT_EQ(best_mapping(c, t, 2.0, 200.0), MotionKind::stationary);
+}
+
 } // namespace
 } // namespace popup::motion
