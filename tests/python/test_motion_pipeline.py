@@ -271,7 +271,7 @@ def test_synthetic_rig_recovers_its_mechanism(name):
     "and horizontal 12.7 mm: the arm's tip dips to y = 162.4 mm, inside the extruding patch's "
     "band up to 164 mm, in the 0-60° boxes; vertical and horizontal 3.6 mm: the chord padding "
     "near 180° eats their 3 mm gap) though the simulator accepts them together, so the search "
-    "moves the horizontal and maps the vertical and diagonal chains to rotation arms "
+    "moves them off their paths or maps the vertical and diagonal chains to rotation arms "
     "(docs/DESIGN.md, Synthetic rigs)",
 )
 def test_four_mechanisms_on_one_rig_are_all_recovered():
