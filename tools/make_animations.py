@@ -307,7 +307,9 @@ MECHANISMS = {
                 "spine": 55.0,
                 "spine_angle": math.radians(90.0),
             },
-            "step_fold": {"offset": 6.0, "width": 12.0, "run_ground": 24.0, "run_backdrop": 6.0},
+            # Every glued crease at least the sheets' shortest tab (11.1 mm): the design the
+            # pipeline may return (popupcore's motion mechanisms refuse shorter ones).
+            "step_fold": {"offset": 6.0, "width": 12.0, "run_ground": 30.0, "run_backdrop": 12.0},
         },
     },
 }

@@ -220,24 +220,14 @@ def test_blender_figure_reads_with_its_recorded_hand_paths(extension):
 # ------------------------------------------------------------------ the pipeline (§4)
 
 
-# Known failures of design_motion as merged on 2026-11-23 (strict: they fail the suite once fixed,
+# Known failure of design_motion as merged on 2026-11-23 (strict: it fails the suite once fixed,
 # so the mark comes off). STRAIGHT: a straight path keeps only its two end points under the
 # flatness-only adaptive sampling (τangle), so E_m cannot tell a floating layer (whose platform
 # point also slides out along x in projection) from the mechanism that moves like the path.
 STRAIGHT = "straight paths are sampled at their 2 end points only (docs/MOTION_RESULTS.md)"
-KNOWN = {
-    "rig_vertical": "its 2-sample straight path is mapped to a rotation arm (" + STRAIGHT + ")",
-    "rig_diagonal": "the fitted diagonal fails the full simulator's check: made stationary",
-}
 
 
-@pytest.mark.parametrize(
-    "name",
-    [
-        pytest.param(n, marks=pytest.mark.xfail(strict=True, reason=KNOWN[n])) if n in KNOWN else n
-        for n in RIGS
-    ],
-)
+@pytest.mark.parametrize("name", list(RIGS))
 def test_synthetic_rig_recovers_its_mechanism(name):
     m = meta(name)
     ((bone, known),) = m["known"].items()
@@ -275,7 +265,15 @@ def test_synthetic_rig_recovers_its_mechanism(name):
         assert np.asarray(arm.achieved[-1]) == pytest.approx(ident["open"], abs=ONE_PERCENT)
 
 
-@pytest.mark.xfail(strict=True, reason="the vertical and diagonal cases above")
+@pytest.mark.xfail(
+    strict=True,
+    reason="the four known mechanisms collide under the search's collision volumes (rotation "
+    "and horizontal 12.7 mm: the arm's tip dips to y = 162.4 mm, inside the extruding patch's "
+    "band up to 164 mm, in the 0-60° boxes; vertical and horizontal 3.6 mm: the chord padding "
+    "near 180° eats their 3 mm gap) though the simulator accepts them together, so the search "
+    "moves them off their paths or maps the vertical and diagonal chains to rotation arms "
+    "(docs/DESIGN.md, Synthetic rigs)",
+)
 def test_four_mechanisms_on_one_rig_are_all_recovered():
     m = meta("rig_four")
     result = design("rig_four")
@@ -371,3 +369,22 @@ def test_trajectory_json_example_reads_with_its_points():
             point[: len(effector["points"][frame])] = effector["points"][frame]
             got = np.asarray(pose[names.index(effector["name"])])[:3, 3]
             assert got == pytest.approx(point, abs=1e-9), (effector["name"], frame)
+
+
+def test_arm_rotation_is_held_to_the_rotation_arms_floor():
+    """arm_rotation's arc (centre (-40, 110), r = 40, 0° → 90°) leaves the fold along it, but
+    every point a rotation arm carries has x = k sin δ (docs/MATH.md, What a rotation arm can
+    follow): the least-squares k over the chain's own samples leaves an x residual that no
+    rotation arm can go under. The pipeline's arm must respect that floor and stay near it (the
+    y law costs the rest: an unbounded fit of the closed form ends at 7.01 mm, 1.10 × the floor
+    of these samples); the issue's 0.03 goal is below the floor (0.113 of the diagonal)."""
+    result = design("arm_rotation")
+    (chain,) = result.chains
+    assert chain.mapping == "rotation" and chain.status == "animated", chain.reason
+    delta = 0.5 * math.pi * np.asarray(chain.s)
+    x = np.asarray(chain.target)[:, 0]
+    k = np.dot(np.sin(delta), x) / np.dot(np.sin(delta), np.sin(delta))
+    floor = math.sqrt(np.mean((k * np.sin(delta) - x) ** 2))
+    assert floor / result.targets.diagonal_mm > 0.03  # the goal is out of the arm's reach
+    assert chain.error_mm >= floor - 1e-9
+    assert chain.error_mm <= 1.2 * floor

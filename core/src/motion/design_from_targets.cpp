@@ -77,6 +77,53 @@ void demote(const AnnealProblem& p, AnnealState& state, int i, const std::string
     state.slots.erase(state.slots.begin() + i);
 }
 
+// True when every chain has the same depth D (eq 6.7): one chain, or a character without depth
+// (a planar skeleton). D then says nothing about which part is nearer, and E_d = |D − H| would
+// only push the mechanisms with a height (v-box, diagonal, floating layer) away from the flat
+// ones whatever the path (docs/DESIGN.md, Depth term without depth).
+bool depths_all_equal(const std::vector<ChainTarget>& chains)
+{
+    for (const ChainTarget& c : chains)
+        if (std::abs(c.depth - chains.front().depth) > 1e-9)
+            return false;
+    return true;
+}
+
+// The search returns where its random walk was cheapest, which can leave a chain on worse
+// parameters than its own fitted candidate (a short search at a high temperature wanders off a
+// path it matched exactly), or on another mechanism that makes its path equally well (a
+// diagonal whose step sits still on its wings also rises along the fold). Each single-chain
+// slot takes the candidate of its mapping back when that lowers eq 6.5, or, for another kind,
+// costs no more than best_mapping's tie (E_m within 1e-4 of the diagonal), and adds no
+// collision depth: the result never collides more, and costs at most that tie more.
+void restore_own_fits(const AnnealProblem& p, const std::vector<MotionKind>& mapped,
+                      AnnealState& state)
+{
+    double depth = state_collision(p, state);
+    for (Slot& s : state.slots) {
+        if (s.chains.size() != 1)
+            continue;
+        const int j = s.chains.front();
+        const Candidate& own = p.candidates[j][int(mapped[j])];
+        if (!std::isfinite(own.error_mm))
+            continue;
+        Slot trial = s;
+        trial.mechanism = own.mechanism;
+        const double tie = s.mechanism.kind == mapped[j]
+                               ? 0.0
+                               : p.chains[j].weight * p.motion_weight * mapping_tie_fraction;
+        if (!(slot_cost(p, trial) < slot_cost(p, s) + tie))
+            continue;
+        const Slot kept = s;
+        s = trial;
+        const double trial_depth = state_collision(p, state);
+        if (trial_depth <= depth + 1e-12)
+            depth = trial_depth;
+        else
+            s = kept;
+    }
+}
+
 } // namespace
 
 double layer_height_max(const MotionOptions& o)
@@ -152,11 +199,13 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
         c.depth = targets.paths[j].depth;
         p.chains.push_back(c);
         p.candidates.push_back(fit_candidates(c, r.card, p.h_max));
-        mapped.push_back(best_mapping(p.candidates.back(), c, 0.01 * p.diagonal));
+        mapped.push_back(best_mapping(p.candidates.back(), c, 0.01 * p.diagonal, p.diagonal));
         if (progress)
             progress->store(0.2 * double(j + 1) / targets.chains.size());
     }
     prepare_alike(p);
+    if (depths_all_equal(p.chains))
+        p.depth_weight = 0.0; // D is undefined (0.5 for all): E_d would only charge height
     r.timings_s.push_back({"mapping", seconds_since(t)});
 
     std::map<int, std::string> reasons; // chain -> why stationary
@@ -210,6 +259,7 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
     AnnealState state = results[best].best;
     for (const AnnealResult& a : results)
         r.iterations += a.iterations;
+    restore_own_fits(p, mapped, state);
     r.timings_s.push_back({"annealing", seconds_since(t)});
 
     // Conflicts the search resolved by moving a chain off its own mechanism onto one that

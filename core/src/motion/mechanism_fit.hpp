@@ -36,9 +36,16 @@ struct Candidate {
 std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& t,
                                                         const CardParams& card, double h_max);
 
-/// The candidate with the lowest eq 6.6 error (Table 6.1's mapping by error, thesis §6.2);
-/// a chain whose path stays within `still_mm` of its mean maps to the floating layer.
+/// Two candidates whose eq 6.6 errors differ by less than this fraction of the character's
+/// diagonal make the path equally well: the mapping takes the one with fewer parameters.
+constexpr double mapping_tie_fraction = 1e-4;
+
+/// The candidate with the lowest eq 6.6 error (Table 6.1's mapping by error, thesis §6.2), the
+/// one with fewer parameters among ties (mapping_tie_fraction of `diagonal`, mm); a chain whose
+/// path stays within `still_mm` of its mean maps to the floating layer; when that does not fit,
+/// to the best moving candidate if it is within `still_mm` of the path, else still to the layer
+/// (its error infinite: the chain is left off the card's mechanisms).
 MotionKind best_mapping(const std::array<Candidate, motion_kind_count>& candidates,
-                        const ChainTarget& t, double still_mm);
+                        const ChainTarget& t, double still_mm, double diagonal);
 
 } // namespace popup::motion
