@@ -193,6 +193,8 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
         if (progress)
             progress->store(0.2 * double(j + 1) / targets.chains.size());
     }
+    for (MotionKind kind : mapped)
+        p.still.push_back(kind == MotionKind::stationary);
     prepare_alike(p);
     r.timings_s.push_back({"mapping", seconds_since(t)});
 
@@ -269,17 +271,59 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
     for (const AnnealResult& a : results)
         r.iterations += a.iterations;
     r.timings_s.push_back({"annealing", seconds_since(t)});
-    // Greedy finish: a chain the search left printed or on a floating layer takes back its own
-    // mapping's mechanism (then, for a still chain, its floating layer) wherever that takes no
-    // room from the others and lowers eq 6.5.
-    for (int i = 0; i < int(state.slots.size()); ++i) {
-        Slot& s = state.slots[i];
-        if (s.chains.size() != 1 || (!s.printed && s.mechanism.kind != MotionKind::stationary))
-            continue;
-        const int j = s.chains.front();
-        for (const MotionKind kind : {mapped[j], MotionKind::stationary}) {
-            const Candidate& c = p.candidates[j][int(kind)];
-            if (!std::isfinite(c.error_mm) || (!s.printed && kind == s.mechanism.kind))
+    // Greedy finish (compound moves the search rarely makes in one step): each moving chain,
+    // heaviest first, that the search left printed, on a floating layer or off its own mapping
+    // takes back its own mapping's mechanism when that hits no moving mechanism (the still
+    // parts' floating layers it would hit are printed instead) and eq 6.5 drops; then each
+    // printed still part takes its floating layer where that is free and cheaper.
+    {
+        std::vector<int> order;
+        for (int j = 0; j < int(p.chains.size()); ++j)
+            if (!p.still[j])
+                order.push_back(j);
+        std::stable_sort(order.begin(), order.end(),
+                         [&](int a, int b) { return p.chains[a].weight > p.chains[b].weight; });
+        auto still_slot = [&](const Slot& s) {
+            for (int j : s.chains)
+                if (!p.still[j])
+                    return false;
+            return true;
+        };
+        for (int j : order) {
+            int i = -1;
+            for (int k = 0; k < int(state.slots.size()); ++k)
+                if (state.slots[k].chains == std::vector<int>{j})
+                    i = k;
+            const Candidate& own = p.candidates[j][int(mapped[j])];
+            if (i < 0 || !std::isfinite(own.error_mm) ||
+                (!state.slots[i].printed && state.slots[i].mechanism.kind == mapped[j]))
+                continue;
+            AnnealState trial = state;
+            trial.slots[i].printed = false;
+            trial.slots[i].mechanism = own.mechanism;
+            const CollisionVolume v = slot_volume(p, trial.slots[i]);
+            bool free = true;
+            for (int k = 0; k < int(trial.slots.size()) && free; ++k) {
+                if (k == i || collision_depth(v, slot_volume(p, trial.slots[k])) <= 0)
+                    continue;
+                if (still_slot(trial.slots[k]))
+                    trial.slots[k].printed = true;
+                else
+                    free = false;
+            }
+            if (free && state_cost(p, trial) < state_cost(p, state))
+                state = trial;
+        }
+        for (int i = 0; i < int(state.slots.size()); ++i) {
+            Slot& s = state.slots[i];
+            if (!s.printed || !still_slot(s))
+                continue;
+            int heaviest = s.chains.front();
+            for (int j : s.chains)
+                if (p.chains[j].weight > p.chains[heaviest].weight)
+                    heaviest = j;
+            const Candidate& c = p.candidates[heaviest][int(MotionKind::stationary)];
+            if (!std::isfinite(c.error_mm))
                 continue;
             Slot trial = s;
             trial.printed = false;
@@ -290,10 +334,8 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
             bool free = true;
             for (int k = 0; k < int(state.slots.size()) && free; ++k)
                 free = k == i || collision_depth(v, slot_volume(p, state.slots[k])) <= 0;
-            if (free) {
+            if (free)
                 s = trial;
-                break;
-            }
         }
     }
     // Parts the search printed on the page leave the mechanisms (the report's stationary parts

@@ -210,7 +210,7 @@ private:
             rest.chains.erase(std::find(rest.chains.begin(), rest.chains.end(), light));
             alone.chains = {light};
             int best = int(MotionKind::stationary);
-            for (int k = 0; k < motion_kind_count; ++k)
+            for (int k = 0; k < motion_kind_count && !still(light); ++k)
                 if (p_.candidates[light][k].error_mm < p_.candidates[light][best].error_mm)
                     best = k;
             alone.mechanism = p_.candidates[light][best].mechanism;
@@ -226,6 +226,7 @@ private:
         std::vector<int> kinds;
         for (int k = 0; k < motion_kind_count; ++k)
             if ((s.printed || k != int(s.mechanism.kind)) &&
+                (!still(chain) || k == int(MotionKind::stationary)) &&
                 std::isfinite(p_.candidates[chain][k].error_mm))
                 kinds.push_back(k);
         if (!s.printed)
@@ -241,6 +242,8 @@ private:
         q.added = {r};
         return true;
     }
+
+    bool still(int j) const { return !p_.still.empty() && p_.still[j]; }
 
     bool alike(const Slot& a, const Slot& b) const
     {
@@ -510,7 +513,8 @@ void prepare_alike(AnnealProblem& p)
                 (motion_distance(p.chains[j], p.chains[k]) <= p.alike_fraction * p.diagonal &&
                  !p.chains[j].target.empty() && !p.chains[k].target.empty() &&
                  (p.chains[j].target.back() - p.chains[k].target.back()).norm() <=
-                     p.beside_fraction * p.diagonal);
+                     p.beside_fraction * p.diagonal &&
+                 (p.still.empty() || p.still[j] == p.still[k]));
 }
 
 double slot_cost(const AnnealProblem& p, const Slot& slot)

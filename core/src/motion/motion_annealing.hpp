@@ -40,6 +40,10 @@ struct AnnealProblem {
     /// ... when their parts also lie this close at the open state (a fraction of the diagonal):
     /// one patch carries both, each part at its own place on it.
     double beside_fraction = 0.1;
+    /// still[j]: chain j does not move (mapped to the floating layer, Table 6.1): it takes its
+    /// floating layer or the page only, never a moving mechanism (a flat one would dodge E_d and
+    /// take room from the moving chains), and shares a patch with still chains only. Empty: none.
+    std::vector<bool> still;
     /// alike[j][k]: chains j and k move alike (filled by prepare_alike).
     std::vector<std::vector<bool>> alike;
 };
