@@ -298,7 +298,6 @@ def test_the_design_never_collides(name, seed):
     assert result.valid
 
 
-@pytest.mark.xfail(strict=True, reason=STRAIGHT + ": one arm goes stationary, not merged")
 def test_two_crossing_arms_that_move_alike_are_merged():
     result = design("crossing_alike")
     arms = [chain_for(result, bone) for bone in ("LeftArmFore", "RightArmFore")]
@@ -316,13 +315,6 @@ def test_two_crossing_arms_that_move_alike_are_merged():
         assert travel[1] == pytest.approx(40.0, abs=4 * ONE_PERCENT)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="known since glued creases must be >= 11.1 mm (the sheets' narrowest tab): the body "
-    "and its end site take the two moving mechanisms, the left arm's search prefers a floating "
-    "layer (eq 6.5) and the right arm collides with it, so both arms end stationary (each with "
-    "its reason)",
-)
 def test_two_conflicting_arms_leave_one_stationary_and_say_why():
     result = design("conflicting_arms")
     arms = [chain_for(result, bone) for bone in ("LeftArmFore", "RightArmFore")]

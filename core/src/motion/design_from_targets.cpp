@@ -101,7 +101,7 @@ void restore_own_fits(const AnnealProblem& p, const std::vector<MotionKind>& map
 {
     double depth = state_collision(p, state);
     for (Slot& s : state.slots) {
-        if (s.chains.size() != 1)
+        if (s.chains.size() != 1 || s.printed) // a printed part: the greedy finish below
             continue;
         const int j = s.chains.front();
         const Candidate& own = p.candidates[j][int(mapped[j])];
@@ -122,6 +122,43 @@ void restore_own_fits(const AnnealProblem& p, const std::vector<MotionKind>& map
         else
             s = kept;
     }
+}
+
+// What making slot i give way costs the motion error (Σ v_j ΔE_m / diagonal): a floating layer
+// becomes a printed part (the same projected path: nothing lost), a moving mechanism becomes its
+// heaviest chain's floating layer.
+double demotion_cost(const AnnealProblem& p, const Slot& s)
+{
+    double before = 0, after = 0;
+    Slot demoted = s;
+    if (s.mechanism.kind == MotionKind::stationary) {
+        demoted.printed = true;
+    } else {
+        int heaviest = s.chains.front();
+        for (int j : s.chains)
+            if (p.chains[j].weight > p.chains[heaviest].weight)
+                heaviest = j;
+        const Candidate& c = p.candidates[heaviest][int(MotionKind::stationary)];
+        if (std::isfinite(c.error_mm))
+            demoted.mechanism = c.mechanism;
+        else
+            demoted.printed = true;
+    }
+    for (int j : s.chains) {
+        before += p.chains[j].weight * carried_error(s, p.chains[j]);
+        after += p.chains[j].weight * carried_error(demoted, p.chains[j]);
+    }
+    return (after - before) / p.diagonal;
+}
+
+// The slot of the pair (a, b) that gives way: the one whose demotion costs the motion error
+// least (a floating layer before a moving mechanism), the lighter on a tie.
+int loser_of(const AnnealProblem& p, const AnnealState& state, int a, int b)
+{
+    const double ca = demotion_cost(p, state.slots[a]), cb = demotion_cost(p, state.slots[b]);
+    if (std::abs(ca - cb) > 1e-9)
+        return ca < cb ? a : b;
+    return weight_of(p, state.slots[a]) <= weight_of(p, state.slots[b]) ? a : b;
 }
 
 } // namespace
@@ -203,6 +240,8 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
         if (progress)
             progress->store(0.2 * double(j + 1) / targets.chains.size());
     }
+    for (MotionKind kind : mapped)
+        p.still.push_back(kind == MotionKind::stationary);
     prepare_alike(p);
     if (depths_all_equal(p.chains))
         p.depth_weight = 0.0; // D is undefined (0.5 for all): E_d would only charge height
@@ -217,6 +256,27 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
             continue;
         }
         start.slots.push_back({c.mechanism, {int(j)}});
+    }
+    // Layout of the start (thesis §6.4): the moving chains' mechanisms first, then a still
+    // chain's floating layer only where it takes no room from them; else its part starts printed
+    // on the page (the search may still lift it).
+    std::stable_sort(start.slots.begin(), start.slots.end(), [](const Slot& a, const Slot& b) {
+        return (a.mechanism.kind != MotionKind::stationary) >
+               (b.mechanism.kind != MotionKind::stationary);
+    });
+    {
+        std::vector<CollisionVolume> placed;
+        for (Slot& slot : start.slots) {
+            const CollisionVolume v = slot_volume(p, slot);
+            if (slot.mechanism.kind == MotionKind::stationary)
+                for (const CollisionVolume& other : placed)
+                    if (collision_depth(v, other) > 0) {
+                        slot.printed = true;
+                        break;
+                    }
+            if (!slot.printed)
+                placed.push_back(v);
+        }
     }
 
     // Simulated annealing: independent search chains on their own threads, best kept.
@@ -261,6 +321,87 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
         r.iterations += a.iterations;
     restore_own_fits(p, mapped, state);
     r.timings_s.push_back({"annealing", seconds_since(t)});
+    // Greedy finish (compound moves the search rarely makes in one step): each moving chain,
+    // heaviest first, that the search left printed, on a floating layer or off its own mapping
+    // takes back its own mapping's mechanism when that hits no moving mechanism (the still
+    // parts' floating layers it would hit are printed instead) and eq 6.5 drops; then each
+    // printed still part takes its floating layer where that is free and cheaper.
+    {
+        std::vector<int> order;
+        for (int j = 0; j < int(p.chains.size()); ++j)
+            if (!p.still[j])
+                order.push_back(j);
+        std::stable_sort(order.begin(), order.end(),
+                         [&](int a, int b) { return p.chains[a].weight > p.chains[b].weight; });
+        auto still_slot = [&](const Slot& s) {
+            for (int j : s.chains)
+                if (!p.still[j])
+                    return false;
+            return true;
+        };
+        for (int j : order) {
+            int i = -1;
+            for (int k = 0; k < int(state.slots.size()); ++k)
+                if (state.slots[k].chains == std::vector<int>{j})
+                    i = k;
+            const Candidate& own = p.candidates[j][int(mapped[j])];
+            if (i < 0 || !std::isfinite(own.error_mm) ||
+                (!state.slots[i].printed && state.slots[i].mechanism.kind == mapped[j]))
+                continue;
+            AnnealState trial = state;
+            trial.slots[i].printed = false;
+            trial.slots[i].mechanism = own.mechanism;
+            const CollisionVolume v = slot_volume(p, trial.slots[i]);
+            bool free = true;
+            for (int k = 0; k < int(trial.slots.size()) && free; ++k) {
+                if (k == i || collision_depth(v, slot_volume(p, trial.slots[k])) <= 0)
+                    continue;
+                if (still_slot(trial.slots[k]))
+                    trial.slots[k].printed = true;
+                else
+                    free = false;
+            }
+            if (free && state_cost(p, trial) < state_cost(p, state))
+                state = trial;
+        }
+        for (int i = 0; i < int(state.slots.size()); ++i) {
+            Slot& s = state.slots[i];
+            if (!s.printed || !still_slot(s))
+                continue;
+            int heaviest = s.chains.front();
+            for (int j : s.chains)
+                if (p.chains[j].weight > p.chains[heaviest].weight)
+                    heaviest = j;
+            const Candidate& c = p.candidates[heaviest][int(MotionKind::stationary)];
+            if (!std::isfinite(c.error_mm))
+                continue;
+            Slot trial = s;
+            trial.printed = false;
+            trial.mechanism = c.mechanism;
+            if (slot_cost(p, trial) >= slot_cost(p, s))
+                continue;
+            const CollisionVolume v = slot_volume(p, trial);
+            bool free = true;
+            for (int k = 0; k < int(state.slots.size()) && free; ++k)
+                free = k == i || collision_depth(v, slot_volume(p, state.slots[k])) <= 0;
+            if (free)
+                s = trial;
+        }
+    }
+    // Parts the search printed on the page leave the mechanisms (the report's stationary parts
+    // without a floating layer).
+    for (int i = int(state.slots.size()) - 1; i >= 0; --i) {
+        if (!state.slots[i].printed)
+            continue;
+        for (int j : state.slots[i].chains)
+            reasons[j] =
+                mapped[j] == MotionKind::stationary
+                    ? "it does not move: printed on the page, where it takes no room from the "
+                      "moving mechanisms (a floating layer would cost more, eq 6.5, or collide)"
+                    : "the search printed it on the page: every mechanism that moves it collides "
+                      "with the others or costs more (eq 6.5)";
+        state.slots.erase(state.slots.begin() + i);
+    }
 
     // Conflicts the search resolved by moving a chain off its own mechanism onto one that
     // misses its path by more than remap_bound (of the diagonal) beyond its own: the chain is
@@ -290,8 +431,8 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
         why << "its own " << to_string(mapped[j]) << " mechanism (" << own.error_mm
             << " mm from its path) collides with the one carrying "
             << chain_names(p, state.slots[other]) << " (volumes overlap by " << worst->depth
-            << " mm) and they move too differently to share a patch (paths "
-            << path_distance(p.chains[j], p.chains[state.slots[other].chains.front()])
+            << " mm) and they move too differently to share a patch (motions "
+            << motion_distance(p.chains[j], p.chains[state.slots[other].chains.front()])
             << " mm apart, RMS); the search's " << to_string(s.mechanism.kind)
             << " instead misses it by " << error << " mm, more than " << remap_bound
             << " of the character's diagonal worse";
@@ -308,16 +449,15 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
         const SlotCollision worst = *std::max_element(
             hits.begin(), hits.end(),
             [](const SlotCollision& x, const SlotCollision& y) { return x.depth < y.depth; });
-        const bool a_lighter =
-            weight_of(p, state.slots[worst.a]) <= weight_of(p, state.slots[worst.b]);
-        const int loser = a_lighter ? worst.a : worst.b, other = a_lighter ? worst.b : worst.a;
+        const int loser = loser_of(p, state, worst.a, worst.b);
+        const int other = loser == worst.a ? worst.b : worst.a;
         std::ostringstream why;
         why << "its " << to_string(state.slots[loser].mechanism.kind)
             << " mechanism collides with the one carrying " << chain_names(p, state.slots[other])
             << " (volumes overlap by " << worst.depth
-            << " mm) and they move too differently to share a patch (paths "
-            << path_distance(p.chains[state.slots[loser].chains.front()],
-                             p.chains[state.slots[other].chains.front()])
+            << " mm) and they move too differently to share a patch (motions "
+            << motion_distance(p.chains[state.slots[loser].chains.front()],
+                               p.chains[state.slots[other].chains.front()])
             << " mm apart, RMS)";
         demote(p, state, loser, why.str(), reasons);
     }
@@ -395,14 +535,8 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
             for (int i = 0; i < int(state.slots.size()); ++i)
                 involved.insert(i);
         int loser = *involved.begin();
-        for (int i : involved) {
-            const bool moving = state.slots[i].mechanism.kind != MotionKind::stationary;
-            const bool loser_moving = state.slots[loser].mechanism.kind != MotionKind::stationary;
-            if ((moving && !loser_moving) ||
-                (moving == loser_moving &&
-                 weight_of(p, state.slots[i]) < weight_of(p, state.slots[loser])))
-                loser = i;
-        }
+        for (int i : involved)
+            loser = loser_of(p, state, loser, i);
         std::string verdict = !report.intersection_free ? "patches cross in the simulator"
                               : !report.foldable        ? "the card does not fold"
                               : !report.stable          ? "a part moves freely"
@@ -414,6 +548,44 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
     }
     r.timings_s.push_back({"build", seconds_since(t) - validity_s});
     r.timings_s.push_back({"validity", validity_s});
+
+    // A moving chain left still by the search: when its own mechanism collides with the final
+    // design, the report names the mechanism it would hit (the search's own choice otherwise).
+    auto conflict = [&](int j, int own_slot) -> std::string {
+        if (mapped[j] == MotionKind::stationary)
+            return {};
+        const Candidate& own = p.candidates[j][int(mapped[j])];
+        if (!std::isfinite(own.error_mm))
+            return {};
+        Slot mine;
+        mine.mechanism = own.mechanism;
+        mine.chains = {j};
+        const CollisionVolume v = slot_volume(p, mine);
+        int other = -1;
+        double deepest = 0;
+        for (int k = 0; k < int(state.slots.size()); ++k) {
+            if (k == own_slot)
+                continue;
+            const double d = collision_depth(v, slot_volume(p, state.slots[k]));
+            if (d > deepest) {
+                deepest = d;
+                other = k;
+            }
+        }
+        if (other < 0)
+            return {};
+        std::ostringstream why;
+        why << "its own " << to_string(mapped[j]) << " mechanism (" << own.error_mm
+            << " mm from its path) collides with the one carrying "
+            << chain_names(p, state.slots[other]) << " (volumes overlap by " << deepest
+            << " mm) and they move too differently to share a patch (motions "
+            << motion_distance(p.chains[j], p.chains[state.slots[other].chains.front()])
+            << " mm apart, RMS)";
+        return why.str();
+    };
+    auto generic = [&](int j) {
+        return !reasons.count(j) || reasons[j].rfind("the search", 0) == 0;
+    };
 
     // Report (eq 6.6 per chain, the vertex-weighted total, mapping and status).
     r.cost = state_cost(p, state);
@@ -434,20 +606,25 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
             cr.mapping = to_string(s.mechanism.kind);
             if (i < int(slot_mechanisms.size()))
                 cr.mechanisms = slot_mechanisms[i];
-            cr.achieved = achieved_path(s.mechanism, c.s);
-            cr.error_mm = motion_error(s.mechanism, c);
+            cr.achieved = carried_path(s, c);
+            cr.error_mm = carried_error(s, c);
             if (s.chains.size() > 1) {
                 cr.status = "merged";
                 std::string others;
                 for (int k : s.chains)
                     if (k != j)
                         others += (others.empty() ? "" : ", ") + p.chains[k].name;
-                cr.reason = "shares its " + cr.mapping + " mechanism with " + others +
-                            " (they move alike: paths within " +
-                            std::to_string(p.alike_fraction * p.diagonal) + " mm RMS)";
+                std::ostringstream why;
+                why << "shares its " << cr.mapping << " mechanism with " << others
+                    << " (they move alike: their motions, less their open-state places, within "
+                    << p.alike_fraction * p.diagonal << " mm RMS; each part keeps its place on the "
+                    << "patch)";
+                cr.reason = why.str();
             } else if (s.mechanism.kind == MotionKind::stationary) {
                 cr.status = "stationary";
-                cr.reason = reasons.count(j) ? reasons[j]
+                const std::string hit = generic(j) ? conflict(j, i) : std::string();
+                cr.reason = !hit.empty()       ? hit + "; a floating layer carries it"
+                            : reasons.count(j) ? reasons[j]
                             : mapped[j] == MotionKind::stationary
                                 ? "it does not move (a floating layer carries it)"
                                 : "the search found the floating layer cheaper than moving it";
@@ -458,14 +635,15 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
             // Printed on the page: it moves with the ground page's point under it.
             cr.mapping = "stationary";
             cr.status = "stationary";
-            cr.reason = reasons.count(j) ? reasons[j] : "no mechanism carries it";
-            for (double si : c.s)
-                cr.achieved.push_back(
-                    Vec2(c.target.back().x() * std::sin(M_PI * si / 2), c.target.back().y()));
-            double sum = 0;
-            for (std::size_t k = 0; k < c.s.size(); ++k)
-                sum += (cr.achieved[k] - c.target[k]).squaredNorm();
-            cr.error_mm = std::sqrt(sum / c.s.size());
+            const std::string hit = generic(j) ? conflict(j, -1) : std::string();
+            cr.reason = !hit.empty()       ? hit + "; its part is printed on the page"
+                        : reasons.count(j) ? reasons[j]
+                                           : "no mechanism carries it";
+            Slot printed;
+            printed.printed = true;
+            printed.chains = {j};
+            cr.achieved = carried_path(printed, c);
+            cr.error_mm = carried_error(printed, c);
         }
         cr.error = cr.error_mm / p.diagonal;
         r.weighted_error += c.weight * cr.error;

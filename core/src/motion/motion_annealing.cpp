@@ -108,7 +108,7 @@ private:
         depths_.assign(n, std::vector<double>(n, 0.0));
         for (std::size_t i = 0; i < n; ++i) {
             costs_[i] = slot_cost(p_, state_.slots[i]);
-            volumes_[i] = collision_volume(state_.slots[i].mechanism, p_.volumes);
+            volumes_[i] = slot_volume(p_, state_.slots[i]);
         }
         cost_ = depth_ = 0;
         for (std::size_t i = 0; i < n; ++i) {
@@ -145,6 +145,8 @@ private:
             const bool translate = u >= 0.6;
             const int i = pick(n);
             Slot s = state_.slots[i];
+            if (s.printed)
+                return false; // nothing to change: the part lies on the page
             std::vector<int> params;
             for (int k = 0; k < parameter_count(s.mechanism.kind); ++k)
                 if ((parameter_info(s.mechanism.kind, k).role == ParameterRole::position) ==
@@ -169,7 +171,8 @@ private:
             std::vector<std::pair<int, int>> pairs, colliding;
             for (int i = 0; i < n; ++i)
                 for (int j = i + 1; j < n; ++j)
-                    if (alike(state_.slots[i], state_.slots[j])) {
+                    if (!state_.slots[i].printed && !state_.slots[j].printed &&
+                        alike(state_.slots[i], state_.slots[j])) {
                         pairs.push_back({i, j});
                         if (depths_[i][j] > 0)
                             colliding.push_back({i, j});
@@ -207,29 +210,40 @@ private:
             rest.chains.erase(std::find(rest.chains.begin(), rest.chains.end(), light));
             alone.chains = {light};
             int best = int(MotionKind::stationary);
-            for (int k = 0; k < motion_kind_count; ++k)
+            for (int k = 0; k < motion_kind_count && !still(light); ++k)
                 if (p_.candidates[light][k].error_mm < p_.candidates[light][best].error_mm)
                     best = k;
             alone.mechanism = p_.candidates[light][best].mechanism;
-            if (!infeasibility(alone.mechanism, p_.card).empty())
+            alone.printed = !std::isfinite(p_.candidates[light][best].error_mm);
+            if (!alone.printed && !infeasibility(alone.mechanism, p_.card).empty())
                 return false;
             q.removed = {i};
             q.added = {rest, alone};
             return true;
         }
+        // Printing it on the page (index motion_kind_count) is one more choice.
         const int chain = s.chains.front();
         std::vector<int> kinds;
         for (int k = 0; k < motion_kind_count; ++k)
-            if (k != int(s.mechanism.kind) && std::isfinite(p_.candidates[chain][k].error_mm))
+            if ((s.printed || k != int(s.mechanism.kind)) &&
+                (!still(chain) || k == int(MotionKind::stationary)) &&
+                std::isfinite(p_.candidates[chain][k].error_mm))
                 kinds.push_back(k);
+        if (!s.printed)
+            kinds.push_back(motion_kind_count);
         if (kinds.empty())
             return false;
         Slot r = s;
-        r.mechanism = p_.candidates[chain][kinds[pick(int(kinds.size()))]].mechanism;
+        const int kind = kinds[pick(int(kinds.size()))];
+        r.printed = kind == motion_kind_count;
+        if (!r.printed)
+            r.mechanism = p_.candidates[chain][kind].mechanism;
         q.removed = {i};
         q.added = {r};
         return true;
     }
+
+    bool still(int j) const { return !p_.still.empty() && p_.still[j]; }
 
     bool alike(const Slot& a, const Slot& b) const
     {
@@ -256,7 +270,7 @@ private:
             const double c = state_cost(p_, next), d = state_collision(p_, next);
             for (const Slot& s : q.added) {
                 added_costs_.push_back(slot_cost(p_, s));
-                added_volumes_.push_back(collision_volume(s.mechanism, p_.volumes));
+                added_volumes_.push_back(slot_volume(p_, s));
             }
             dcost = c - cost_;
             ddepth = d - depth_;
@@ -266,7 +280,7 @@ private:
         ddepth = 0;
         for (const Slot& s : q.added) {
             added_costs_.push_back(slot_cost(p_, s));
-            added_volumes_.push_back(collision_volume(s.mechanism, p_.volumes));
+            added_volumes_.push_back(slot_volume(p_, s));
             dcost += added_costs_.back();
         }
         const int n = int(state_.slots.size());
@@ -385,7 +399,10 @@ private:
 
 } // namespace
 
-double path_distance(const ChainTarget& a, const ChainTarget& b)
+namespace {
+
+double rms_between(const ChainTarget& a, const ChainTarget& b, const Vec2& shift_a,
+                   const Vec2& shift_b)
 {
     auto at = [](const ChainTarget& t, double s) {
         const auto it = std::lower_bound(t.s.begin(), t.s.end(), s);
@@ -405,8 +422,84 @@ double path_distance(const ChainTarget& a, const ChainTarget& b)
         return 0.0;
     double sum = 0;
     for (double si : s)
-        sum += (at(a, si) - at(b, si)).squaredNorm();
+        sum += (at(a, si) - shift_a - at(b, si) + shift_b).squaredNorm();
     return std::sqrt(sum / s.size());
+}
+
+} // namespace
+
+double path_distance(const ChainTarget& a, const ChainTarget& b)
+{
+    return rms_between(a, b, Vec2::Zero(), Vec2::Zero());
+}
+
+double motion_distance(const ChainTarget& a, const ChainTarget& b)
+{
+    if (a.target.empty() || b.target.empty())
+        return 0.0;
+    return rms_between(a, b, a.target.back(), b.target.back());
+}
+
+std::vector<Vec2> printed_path(const ChainTarget& t)
+{
+    std::vector<Vec2> out;
+    if (t.target.empty())
+        return out;
+    const Vec2 open = t.target.back();
+    for (double si : t.s)
+        out.push_back(Vec2(open.x() * std::sin(M_PI * si / 2), open.y()));
+    return out;
+}
+
+std::vector<Vec2> carried_path(const Slot& slot, const ChainTarget& t)
+{
+    if (slot.printed)
+        return printed_path(t);
+    std::vector<Vec2> out = achieved_path(slot.mechanism, t.s);
+    if (slot.chains.size() > 1 && slot.mechanism.kind != MotionKind::rotation &&
+        !t.target.empty()) {
+        const Vec3 open = mechanism_point(slot.mechanism, M_PI);
+        const Vec2 offset = t.target.back() - Vec2(open.x(), open.y());
+        for (Vec2& q : out)
+            q += offset;
+    }
+    return out;
+}
+
+double carried_error(const Slot& slot, const ChainTarget& t)
+{
+    const std::vector<Vec2> path = carried_path(slot, t);
+    if (path.empty())
+        return 0.0;
+    double sum = 0;
+    for (std::size_t k = 0; k < path.size(); ++k)
+        sum += (path[k] - t.target[k]).squaredNorm();
+    return std::sqrt(sum / double(path.size()));
+}
+
+CollisionVolume slot_volume(const AnnealProblem& p, const Slot& slot)
+{
+    if (slot.printed)
+        return {};
+    CollisionVolume v = collision_volume(slot.mechanism, p.volumes);
+    if (slot.chains.size() < 2 || slot.mechanism.kind == MotionKind::rotation)
+        return v;
+    const Vec3 open = mechanism_point(slot.mechanism, M_PI);
+    for (OrientedBox& b : v.bands) {
+        Eigen::AlignedBox3d box(b.centre - b.half, b.centre + b.half);
+        const Eigen::AlignedBox3d own = box;
+        for (int j : slot.chains) {
+            const ChainTarget& t = p.chains[j];
+            if (t.target.empty())
+                continue;
+            const Vec3 offset(t.target.back().x() - open.x(), t.target.back().y() - open.y(), 0);
+            box.extend(own.min() + offset);
+            box.extend(own.max() + offset);
+        }
+        b.centre = box.center();
+        b.half = box.sizes() / 2;
+    }
+    return v;
 }
 
 void prepare_alike(AnnealProblem& p)
@@ -416,7 +509,12 @@ void prepare_alike(AnnealProblem& p)
     for (std::size_t j = 0; j < n; ++j)
         for (std::size_t k = 0; k < n; ++k)
             p.alike[j][k] =
-                j == k || path_distance(p.chains[j], p.chains[k]) <= p.alike_fraction * p.diagonal;
+                j == k ||
+                (motion_distance(p.chains[j], p.chains[k]) <= p.alike_fraction * p.diagonal &&
+                 !p.chains[j].target.empty() && !p.chains[k].target.empty() &&
+                 (p.chains[j].target.back() - p.chains[k].target.back()).norm() <=
+                     p.beside_fraction * p.diagonal &&
+                 (p.still.empty() || p.still[j] == p.still[k]));
 }
 
 double slot_cost(const AnnealProblem& p, const Slot& slot)
@@ -425,12 +523,14 @@ double slot_cost(const AnnealProblem& p, const Slot& slot)
     // rotation arm and the extruding patch lie flat: the thesis stands them on a floating layer
     // at the chain's depth, so their disparity is not charged (docs/DESIGN.md).
     const MotionKind kind = slot.mechanism.kind;
-    const bool flat = kind == MotionKind::rotation || kind == MotionKind::horizontal;
-    const double H = std::clamp(mechanism_height(slot.mechanism) / p.h_max, 0.0, 1.0);
+    const bool flat =
+        !slot.printed && (kind == MotionKind::rotation || kind == MotionKind::horizontal);
+    const double H =
+        slot.printed ? 0.0 : std::clamp(mechanism_height(slot.mechanism) / p.h_max, 0.0, 1.0);
     double e = 0;
     for (int j : slot.chains) {
         const ChainTarget& t = p.chains[j];
-        e += t.weight * (p.motion_weight * motion_error(slot.mechanism, t) / p.diagonal +
+        e += t.weight * (p.motion_weight * carried_error(slot, t) / p.diagonal +
                          (flat ? 0.0 : p.depth_weight * std::abs(t.depth - H)));
     }
     return e;
@@ -448,7 +548,7 @@ std::vector<SlotCollision> state_collisions(const AnnealProblem& p, const Anneal
 {
     std::vector<CollisionVolume> v;
     for (const Slot& slot : s.slots)
-        v.push_back(collision_volume(slot.mechanism, p.volumes));
+        v.push_back(slot_volume(p, slot));
     std::vector<SlotCollision> out;
     for (int i = 0; i < int(v.size()); ++i)
         for (int j = i + 1; j < int(v.size()); ++j) {
