@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "popup/fitting/alignment.hpp"
+#include "popup/fitting/bulk_prism.hpp"
 #include "popup/fitting/design_repair.hpp"
 #include "popup/fitting/fit_outlines.hpp"
 #include "popup/fitting/mechanism_mapping.hpp"
@@ -199,32 +200,55 @@ Result<FitResult> fit_design(const ModelMesh& model, const FitOptions& options,
     r.symmetry_error = a.symmetry_error;
     const SurfaceSamples& samples = best.samples;
     const RansacOptions& ro = best.ro;
-    const RansacResult& fit = best.fit;
+    RansacResult fit = best.fit;
     r.ransac_draws = fit.draws;
     timer.lap("fit_primitives");
     stop_if_cancelled(cancel, "fit_design: fitting primitives");
 
-    // Table 5.1 mapping by coverage error, then the §4.2.2 refit.
-    Mapping mapping = map_mechanisms(fit);
-    for (int k : mapping.unmapped) {
-        const std::string name = "primitive " + std::to_string(k + 1);
-        r.repairs.push_back({name, "dropped", "no mechanism of Table 5.1 fits its host"});
+    // Table 5.1 mapping by coverage error, the §4.2.2 refit, then validity: build, check
+    // everything, drop what the simulator refuses, check again.
+    std::vector<MechanismPlan> plans;
+    int plans_made = 0;
+    auto plan_and_build = [&](const RansacResult& prisms) {
+        Mapping mapping = map_mechanisms(prisms);
+        for (int k : mapping.unmapped) {
+            const std::string name = "primitive " + std::to_string(k + 1);
+            r.repairs.push_back({name, "dropped", "no mechanism of Table 5.1 fits its host"});
+        }
+        plans = mapping.plans;
+        for (const auto& [name, why] : refit_for_foldability(plans, options.min_part_mm))
+            r.repairs.push_back({name, "trimmed", why});
+        // Strictly inside the generators' ranges, by a millionth of the card (docs/DESIGN.md).
+        keep_inside_ranges(plans, options.card_width, options.card_depth,
+                           1e-6 * std::max(options.card_width, options.card_depth));
+        if (plans_made++ == 0) // the bulk box's mapping counts as validation time
+            timer.lap("map");
+        stop_if_cancelled(cancel, "fit_design: mapping");
+        RepairOutcome outcome = build_until_valid(r.card, plans, cancel);
+        for (const FitRepair& repair : outcome.repairs)
+            r.repairs.push_back(repair);
+        for (const Diagnostic& d : outcome.warnings)
+            r.diagnostics.push_back(d);
+        return outcome;
+    };
+    RepairOutcome outcome = plan_and_build(fit);
+    if (!outcome.valid) {
+        // Nothing the search found survives (a round model has no face a prism rests on): the
+        // model's bulk as one box fold, the box its samples lie closest to (bulk_prism.hpp).
+        const std::string why = fit.prisms.empty() ? "no primitive was found on the model's surface"
+                                                   : "every fitted primitive was dropped";
+        RansacResult bulk;
+        bulk.hosts = {fit.hosts.front()};
+        bulk.prisms = {bulk_prism(samples, fit.hosts.front(), options.min_part_mm)};
+        bulk.owner.assign(samples.points.size(), -1);
+        bulk.on_base.assign(samples.points.size(), false);
+        bulk.on_principal.assign(samples.points.size(), false);
+        bulk.draws = fit.draws;
+        fit = std::move(bulk);
+        r.repairs.push_back(
+            {"primitive 1", "replaced", why + "; the model's bulk is fitted as one box instead"});
+        outcome = plan_and_build(fit);
     }
-    std::vector<MechanismPlan> plans = mapping.plans;
-    for (const auto& [name, why] : refit_for_foldability(plans, options.min_part_mm))
-        r.repairs.push_back({name, "trimmed", why});
-    // Strictly inside the generators' ranges, by a millionth of the card (docs/DESIGN.md).
-    keep_inside_ranges(plans, options.card_width, options.card_depth,
-                       1e-6 * std::max(options.card_width, options.card_depth));
-    timer.lap("map");
-    stop_if_cancelled(cancel, "fit_design: mapping");
-
-    // Validity: build, check everything, drop what the simulator refuses, check again.
-    RepairOutcome outcome = build_until_valid(r.card, plans, cancel);
-    for (const FitRepair& repair : outcome.repairs)
-        r.repairs.push_back(repair);
-    for (const Diagnostic& d : outcome.warnings)
-        r.diagnostics.push_back(d);
     const ValidityReport& report = outcome.report;
     timer.lap("validate");
 
