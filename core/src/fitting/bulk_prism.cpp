@@ -77,20 +77,15 @@ Box feasible(Box b, const PrismHost& card, double min_part)
 
 } // namespace
 
-double mean_distance_to_box(const SurfaceSamples& samples, const PrismHost& card, const Prism& box)
+BulkBox bulk_box(const SurfaceSamples& samples, const PrismHost& card, double min_part)
 {
-    const Box b{box.a0, box.a1, std::max(box.s1, -box.s0), box.height};
-    return mean_distance(b, points_on(samples, card, samples.points.size()));
-}
-
-Prism bulk_prism(const SurfaceSamples& samples, const PrismHost& card, double min_part)
-{
-    Prism m;
+    BulkBox out;
+    Prism& m = out.prism;
     m.kind = Prism::Kind::rectangular;
     m.host = 0;
     const std::vector<Point> points = points_on(samples, card, 3000);
     if (points.empty())
-        return m;
+        return out;
     std::vector<double> along, across, up;
     for (const Point& p : points) {
         along.push_back(p.a);
@@ -132,7 +127,10 @@ Prism bulk_prism(const SurfaceSamples& samples, const PrismHost& card, double mi
     m.s0 = -best.d;
     m.s1 = best.d;
     m.height = best.h;
-    return m;
+    out.mean_distance = best_cost;
+    for (const Point& p : points)
+        out.page_distance += std::abs(p.t) / double(points.size());
+    return out;
 }
 
 } // namespace popup

@@ -85,6 +85,31 @@ double coverage_of(const Scaffold& scaffold, const SurfaceSamples& samples, doub
     return samples.points.empty() ? 0.0 : double(near) / double(samples.points.size());
 }
 
+/// Mean distance from (at most 3000 of) the samples to the scaffold's patches.
+double mean_distance_to(const Scaffold& scaffold, const SurfaceSamples& samples)
+{
+    std::vector<Patch> patches = scaffold.patches;
+    std::vector<std::vector<Vec2>> outlines;
+    for (Patch& p : patches) {
+        p.derive_frame();
+        std::vector<Vec2> o;
+        for (const Vec3& v : p.outer)
+            o.push_back(p.to_local(v));
+        outlines.push_back(o);
+    }
+    const size_t step = std::max<size_t>(1, samples.points.size() / 3000);
+    double sum = 0;
+    size_t n = 0;
+    for (size_t i = 0; i < samples.points.size(); i += step, ++n) {
+        double nearest = 1e300;
+        for (size_t k = 0; k < patches.size(); ++k)
+            nearest =
+                std::min(nearest, distance_to_patch(patches[k], outlines[k], samples.points[i]));
+        sum += nearest;
+    }
+    return n ? sum / double(n) : 0.0;
+}
+
 } // namespace
 
 Diagnostics check_fit_options(const FitOptions& o)
@@ -231,22 +256,45 @@ Result<FitResult> fit_design(const ModelMesh& model, const FitOptions& options,
             r.diagnostics.push_back(d);
         return outcome;
     };
+    const size_t repairs_before = r.repairs.size(), warnings_before = r.diagnostics.size();
     RepairOutcome outcome = plan_and_build(fit);
-    if (!outcome.valid) {
-        // Nothing the search found survives (a round model has no face a prism rests on): the
-        // model's bulk as one box fold, the box its samples lie closest to (bulk_prism.hpp).
-        const std::string why = fit.prisms.empty() ? "no primitive was found on the model's surface"
-                                                   : "every fitted primitive was dropped";
-        RansacResult bulk;
-        bulk.hosts = {fit.hosts.front()};
-        bulk.prisms = {bulk_prism(samples, fit.hosts.front(), options.min_part_mm)};
-        bulk.owner.assign(samples.points.size(), -1);
-        bulk.on_base.assign(samples.points.size(), false);
-        bulk.on_principal.assign(samples.points.size(), false);
-        bulk.draws = fit.draws;
-        fit = std::move(bulk);
-        r.repairs.push_back(
-            {"primitive 1", "replaced", why + "; the model's bulk is fitted as one box instead"});
+    // The model's bulk as one box fold (bulk_prism.hpp) when it stands up from the page (the
+    // samples lie half as far from it as from the page alone): instead of nothing when nothing
+    // the search found survives (a round model has no face a prism rests on), and instead of a
+    // valid design the samples lie twice as far from on average (docs/DESIGN.md).
+    const BulkBox bulk = bulk_box(samples, fit.hosts.front(), options.min_part_mm);
+    std::string why;
+    if (bulk.mean_distance <= 0.5 * bulk.page_distance) {
+        if (!outcome.valid) {
+            why = fit.prisms.empty() ? "no primitive was found on the model's surface"
+                                     : "no fitted primitive gave a valid design";
+        } else {
+            const double fitted = mean_distance_to(outcome.scaffold, samples);
+            if (bulk.mean_distance < 0.5 * fitted) {
+                std::ostringstream m;
+                m.precision(3);
+                m << "the model lies " << fitted << " mm from the fitted design on average, "
+                  << bulk.mean_distance << " mm from the box of its bulk";
+                why = m.str();
+            }
+        }
+    }
+    if (!why.empty()) {
+        // The first design's repairs were of mechanisms that are gone: only the reason stays.
+        r.repairs.resize(repairs_before);
+        r.diagnostics.resize(warnings_before);
+        RansacResult replaced;
+        replaced.hosts = {fit.hosts.front()};
+        replaced.prisms = {bulk.prism};
+        replaced.owner.assign(samples.points.size(), -1);
+        replaced.on_base.assign(samples.points.size(), false);
+        replaced.on_principal.assign(samples.points.size(), false);
+        replaced.draws = fit.draws;
+        const size_t found = fit.prisms.size();
+        fit = std::move(replaced);
+        r.repairs.push_back({"primitives", "replaced",
+                             std::to_string(found) + " fitted; " + why +
+                                 ": the model's bulk is one box fold instead"});
         outcome = plan_and_build(fit);
     }
     const ValidityReport& report = outcome.report;
