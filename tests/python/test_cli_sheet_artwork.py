@@ -49,12 +49,11 @@ def print_layer(svg_path):
 
 def pdf_images_and_marks(pdf_path):
     reader = PdfReader(pdf_path)
-    images = 0
+    images = marks = 0
     for page in reader.pages:
         xobjects = page["/Resources"].get("/XObject", {})
         images += sum(x.get_object()["/Subtype"] == "/Image" for x in xobjects.values())
-    with open(pdf_path, "rb") as f:
-        marks = len(re.findall(MARK, f.read()))
+        marks += len(re.findall(MARK, page.get_contents().get_data()))
     return images, marks, len(reader.pages)
 
 
