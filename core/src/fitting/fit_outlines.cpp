@@ -288,7 +288,7 @@ std::map<std::string, double> carried_folds(const Scaffold& s, int patch, const 
 /// Applies one part's silhouette to `s`; the profile it kept (an empty part when the silhouette
 /// covers the whole part: `s` unchanged), or why not.
 Result<FittedProfile> outline_part(Scaffold& s, const ModelMesh& model, const FittedMechanism& m,
-                                   const Part& part, bool pose_at_90)
+                                   const Part& part, bool pose_at_90, bool keep_tab_room)
 {
     Result<FittedProfile> r;
     const Result<ProfileFrame> frame = profile_frame(s, part.patch);
@@ -349,34 +349,37 @@ Result<FittedProfile> outline_part(Scaffold& s, const ModelMesh& model, const Fi
             return r;
         }
     }
-    // Every glued joint of the part long enough for a glue tab keeps room for one on each of
-    // its pieces: an outline that meets its page in a sliver (a figure's feet, a wheel) leaves
-    // a joint the sheets cannot glue. The crease is the sheets' default, as
-    // FitOptions.min_part_mm's (docs/DESIGN.md).
-    const double crease = shortest_tabbed_crease(SheetOptions{});
-    const std::map<std::string, double> joints_after = joint_lengths(s, part.patch);
-    for (const auto& [name, whole] : joints_before) {
-        const double length = joints_after.count(name) ? joints_after.at(name) : 0.0;
-        if (whole >= crease && length < crease) {
-            s = std::move(before);
-            r.fail(DiagnosticCode::bad_profile,
-                   "the outline would leave a piece of its glued joint with " + name + " " +
-                       std::to_string(length) + " mm long, shorter than the narrowest glue tab's " +
-                       std::to_string(crease) + " mm");
-            return r;
+    if (keep_tab_room) {
+        // Every glued joint of the part long enough for a glue tab keeps room for one on each of
+        // its pieces: an outline that meets its page in a sliver (a figure's feet, a wheel) leaves
+        // a joint the sheets cannot glue. The crease is the sheets' default, as
+        // FitOptions.min_part_mm's (docs/DESIGN.md).
+        const double crease = shortest_tabbed_crease(SheetOptions{});
+        const std::map<std::string, double> joints_after = joint_lengths(s, part.patch);
+        for (const auto& [name, whole] : joints_before) {
+            const double length = joints_after.count(name) ? joints_after.at(name) : 0.0;
+            if (whole >= crease && length < crease) {
+                s = std::move(before);
+                r.fail(DiagnosticCode::bad_profile,
+                       "the outline would leave a piece of its glued joint with " + name + " " +
+                           std::to_string(length) +
+                           " mm long, shorter than the narrowest glue tab's " +
+                           std::to_string(crease) + " mm");
+                return r;
+            }
         }
+        // ... and keeps room inward for the default tab, whole, to land on it (narrowed tabs need
+        // room too).
+        const double tab_depth = SheetOptions{}.tab_width;
+        for (const std::string& name : joints_without_room(s, part.patch, tab_depth))
+            if (!no_room_before.count(name)) {
+                s = std::move(before);
+                r.fail(DiagnosticCode::bad_profile,
+                       "the outline would leave no room for a " + std::to_string(tab_depth) +
+                           " mm glue tab along its joint with " + name);
+                return r;
+            }
     }
-    // ... and keeps room inward for the default tab, whole, to land on it (narrowed tabs need room
-    // too).
-    const double tab_depth = SheetOptions{}.tab_width;
-    for (const std::string& name : joints_without_room(s, part.patch, tab_depth))
-        if (!no_room_before.count(name)) {
-            s = std::move(before);
-            r.fail(DiagnosticCode::bad_profile, "the outline would leave no room for a " +
-                                                    std::to_string(tab_depth) +
-                                                    " mm glue tab along its joint with " + name);
-            return r;
-        }
     // A silhouette covering the whole part changes nothing: no profile, so the part still
     // follows later edits of its mechanism's dimensions (a stored outline would clip them).
     if (std::abs(applied.value.area_after - applied.value.area_before) <=
@@ -428,7 +431,7 @@ namespace {
 /// at a time, keeping what the simulator accepts.
 void outline_mechanism(OutlineOutcome& out, const ModelMesh& model_in_card,
                        const FittedMechanism& m, const std::vector<std::string>& prefixes,
-                       bool pose_at_90, const CancelFlag* cancel)
+                       bool pose_at_90, bool keep_tab_room, const CancelFlag* cancel)
 {
     ValidityOptions vo;
     vo.cancel = cancel;
@@ -441,7 +444,8 @@ void outline_mechanism(OutlineOutcome& out, const ModelMesh& model_in_card,
     std::vector<FittedProfile> kept;
     bool all_applied = true;
     for (const Part& part : parts) {
-        Result<FittedProfile> fp = outline_part(together, model_in_card, m, part, pose_at_90);
+        Result<FittedProfile> fp =
+            outline_part(together, model_in_card, m, part, pose_at_90, keep_tab_room);
         if (!fp.ok) {
             all_applied = false;
             break;
@@ -458,7 +462,8 @@ void outline_mechanism(OutlineOutcome& out, const ModelMesh& model_in_card,
     // One at a time: keep what the simulator accepts.
     for (const Part& part : parts) {
         Scaffold trial = out.scaffold;
-        Result<FittedProfile> fp = outline_part(trial, model_in_card, m, part, pose_at_90);
+        Result<FittedProfile> fp =
+            outline_part(trial, model_in_card, m, part, pose_at_90, keep_tab_room);
         if (!fp.ok) {
             out.dropped.push_back(
                 {m.name, "profile dropped",
@@ -489,7 +494,7 @@ OutlineOutcome fit_outlines(const ModelMesh& model_in_card, const Scaffold& scaf
     out.scaffold = scaffold;
     for (const FittedMechanism& m : mechanisms)
         outline_mechanism(out, model_in_card, m, principal_parts(m.type),
-                          lies_flat(out.scaffold, m), cancel);
+                          lies_flat(out.scaffold, m), true, cancel);
     return out;
 }
 
@@ -499,7 +504,9 @@ OutlineOutcome fit_outlines_of(const ModelMesh& model_in_card, const Scaffold& s
 {
     OutlineOutcome out;
     out.scaffold = scaffold;
-    outline_mechanism(out, model_in_card, mechanism, parts, false, cancel);
+    // The motion design's outlines keep their body parts' bands as they were (issue 13): the
+    // glue-tab room rule is the shape fit's (docs/DESIGN.md, "The shape fit's misses").
+    outline_mechanism(out, model_in_card, mechanism, parts, false, false, cancel);
     return out;
 }
 
