@@ -197,6 +197,7 @@ def _card_design(path, card, several, with_model=False):
     """The assembled scaffold of a PopUpCard and its mechanisms; a part that does not build makes
     the input unusable (the message is the feature's error)."""
     from popupwb.card_scaffold import for_card, stray_features
+    from popupwb.features.cutting_sheet import card_prints_artwork
     from popupwb.patch_titles import titles_of_card
 
     built = for_card(card)
@@ -212,7 +213,7 @@ def _card_design(path, card, several, with_model=False):
         {"object": card.Name, "label": card.Label},
         _cutting_sides(card),
         titles_of_card(card, built),
-        _source_model(path, card) if with_model else None,
+        _source_model(path, card) if with_model and card_prints_artwork(card) else None,
     )
 
 
@@ -518,15 +519,16 @@ def cmd_sheet(args):
 
 def _artwork(args, design, sheet_set):
     """The model's appearance on each laid-out patch, for a card designed from a model (its
-    SourceModel); None otherwise. The print layer of the PDF and SVG carries it."""
+    SourceModel) whose CuttingSheets print it (PrintArtwork, cutting_sheet.card_prints_artwork);
+    None otherwise. The print layer of the PDF and SVG carries it, with registration marks."""
     if design.model is None:
         return None
-    from popupwb.sheets.print_artwork import render_sheet_artwork
+    from popupwb.sheets.print_artwork import source_model_artwork
 
     try:
-        return render_sheet_artwork(design.model, design.scaffold, sheet_set)
-    except ValueError as e:  # DesignError: the model cannot be rendered
-        raise InputError(f"{args.design}: artwork of the source model: {_one_line(e)}")
+        return source_model_artwork(design.model, design.scaffold, sheet_set, args.design)
+    except ValueError as e:
+        raise InputError(_one_line(e))
 
 
 VERIFY_ANGLES = 13  # fold angles verify_sheets samples by default

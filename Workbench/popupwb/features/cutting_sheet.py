@@ -414,7 +414,7 @@ def sheet_artwork(obj, sheet_set):
     source model. ValueError naming obj when the layout is out of date or the model cannot be
     rendered."""
     from popupwb.fitting.model_source import card_model
-    from popupwb.sheets.print_artwork import render_sheet_artwork
+    from popupwb.sheets.print_artwork import source_model_artwork
 
     card = obj.Card
     built = card_scaffold.for_card(card)
@@ -430,16 +430,27 @@ def sheet_artwork(obj, sheet_set):
         raise ValueError(f"{obj.Label}: {card.Label}.SourceModel: {error}") from None
     if model is None:
         return None
-    try:
-        return progress.run(
-            f"{obj.Label}: printing {card.Label}'s model on the patches",
-            render_sheet_artwork,
-            model,
-            built.scaffold,
-            sheet_set,
-        )
-    except ValueError as error:  # DesignError: the model cannot be rendered
-        raise ValueError(f"{obj.Label}: artwork of {card.Label}'s source model: {error}") from None
+    return source_model_artwork(
+        model,
+        built.scaffold,
+        sheet_set,
+        f"{obj.Label}: {card.Label}",
+        run=lambda function, *args: progress.run(
+            f"{obj.Label}: printing {card.Label}'s model on the patches", function, *args
+        ),
+    )
+
+
+def card_prints_artwork(card):
+    """Whether `card`'s sheets print its source model: False when every CuttingSheet laying it
+    out has PrintArtwork off, True otherwise (a card without one prints, as the property's
+    default does). `popup sheet` asks this of the document, the GUI export each sheet's own."""
+    sheets = [
+        o
+        for o in card.Document.Objects
+        if is_cutting_sheet(o) and o.Card is not None and o.Card.Name == card.Name
+    ]
+    return not sheets or any(bool(getattr(o, "PrintArtwork", True)) for o in sheets)
 
 
 def not_valid_of(obj):

@@ -150,6 +150,19 @@ def render_sheet_artwork(mesh, scaffold, sheet_set, **options):
     return artwork
 
 
+def source_model_artwork(mesh, scaffold, sheet_set, owner, run=None):
+    """render_sheet_artwork of a card's source model, as the GUI export and `popup sheet` both
+    print it; `run(function, *args)` runs the rendering (progress.run in the GUI: progress and
+    cancel), else it runs here. ValueError "<owner>: artwork of the source model: <why>" when
+    the model cannot be rendered."""
+    run = run or (lambda function, *args: function(*args))
+    try:
+        return run(render_sheet_artwork, mesh, scaffold, sheet_set)
+    except ValueError as error:  # DesignError: the model cannot be rendered
+        why = " ".join(str(error).split())
+        raise ValueError(f"{owner}: artwork of the source model: {why}") from None
+
+
 def pil_image(rgba):
     """The image as a PIL RGBA image (reportlab draws it, keeping the alpha as a soft mask)."""
     from PIL import Image

@@ -8,10 +8,12 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <set>
 
 #include "popup/fitting/silhouette.hpp"
 #include "popup/model/apply_profile.hpp"
 #include "popup/model/profile.hpp"
+#include "popup/sheets/sheet_layout.hpp"
 #include "popup/simulation/check_validity.hpp"
 #include "popup/simulation/simulate_fold.hpp"
 
@@ -184,6 +186,84 @@ std::optional<Profile> significant_cut(const Patch& patch, const ProfileFrame& f
     return out;
 }
 
+/// Length of the shortest piece of each glued joint of `patch` (an outline may split one into
+/// several, each carrying a tab of its own on the sheets), by the other patch's name.
+std::map<std::string, double> joint_lengths(const Scaffold& s, int patch)
+{
+    std::map<std::string, double> out;
+    for (const Hinge& h : s.hinges) {
+        if ((h.patch_a != patch && h.patch_b != patch) || h.kind != JointKind::tab)
+            continue;
+        const Patch* p = s.find_patch(h.patch_a == patch ? h.patch_b : h.patch_a);
+        if (!p)
+            continue;
+        const double length = (h.to - h.from).norm();
+        out[p->name] = out.count(p->name) ? std::min(out[p->name], length) : length;
+    }
+    return out;
+}
+
+bool inside_loop(const std::vector<Vec2>& loop, const Vec2& q)
+{
+    bool inside = false;
+    for (size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++) {
+        const Vec2 &a = loop[j], &b = loop[i];
+        if ((a.y() > q.y()) != (b.y() > q.y()) &&
+            q.x() < a.x() + (q.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y()))
+            inside = !inside;
+    }
+    return inside;
+}
+
+/// Glued joints of `patch` (by the other patch's name) along which the patch does not reach
+/// `depth` inward over the joint's whole length: no tab that deep can be glued onto it there.
+std::set<std::string> joints_without_room(const Scaffold& s, int patch_id, double depth)
+{
+    std::set<std::string> out;
+    Patch patch = *s.find_patch(patch_id);
+    patch.derive_frame();
+    std::vector<Vec2> outer;
+    for (const Vec3& v : patch.outer)
+        outer.push_back(patch.to_local(v));
+    std::vector<std::vector<Vec2>> holes;
+    for (const Loop3& h : patch.holes) {
+        holes.emplace_back();
+        for (const Vec3& v : h)
+            holes.back().push_back(patch.to_local(v));
+    }
+    auto in_patch = [&](const Vec3& x) {
+        const Vec2 q = patch.to_local(x);
+        if (!inside_loop(outer, q))
+            return false;
+        for (const auto& h : holes)
+            if (inside_loop(h, q))
+                return false;
+        return true;
+    };
+    for (const Hinge& h : s.hinges) {
+        if ((h.patch_a != patch_id && h.patch_b != patch_id) || h.kind != JointKind::tab)
+            continue;
+        const Patch* other = s.find_patch(h.patch_a == patch_id ? h.patch_b : h.patch_a);
+        const Vec3 along = h.to - h.from;
+        if (!other || along.norm() < 1e-9)
+            continue;
+        Vec3 inward = patch.normal.cross(along).normalized();
+        const Vec3 mid = 0.5 * (h.from + h.to);
+        if (!in_patch(mid + 1e-3 * depth * inward))
+            inward = -inward;
+        // Every half millimetre along the joint, its ends left out (the corners of the patch).
+        const int steps = std::max(2, int(std::ceil(along.norm() / 0.5)));
+        for (int k = 1; k < steps; ++k) {
+            const double u = double(k) / steps;
+            if (!in_patch(h.from + u * along + 0.999 * depth * inward)) {
+                out.insert(other->name);
+                break;
+            }
+        }
+    }
+    return out;
+}
+
 /// Length of each fold and joint of `patch`, by the other patch's name, when the patch carries
 /// a mechanism built after its own (a hinge to a patch whose name does not start with `own`
 /// and whose id is larger); empty otherwise. Such a patch's folds must stay whole: the
@@ -204,19 +284,6 @@ std::map<std::string, double> carried_folds(const Scaffold& s, int patch, const 
         out[p->name] += (h.to - h.from).norm();
     }
     return carries ? out : std::map<std::string, double>{};
-}
-
-/// Total length of `patch`'s folds and joints with each other patch, by that patch's name.
-std::map<std::string, double> crease_lengths(const Scaffold& s, int patch)
-{
-    std::map<std::string, double> out;
-    for (const Hinge& h : s.hinges) {
-        if (h.patch_a != patch && h.patch_b != patch)
-            continue;
-        if (const Patch* p = s.find_patch(h.patch_a == patch ? h.patch_b : h.patch_a))
-            out[p->name] += (h.to - h.from).norm();
-    }
-    return out;
 }
 
 /// Applies one part's silhouette to `s`; the profile it kept (an empty part when the silhouette
@@ -260,6 +327,9 @@ Result<FittedProfile> outline_part(Scaffold& s, const ModelMesh& model, const Fi
     }
     const Profile& profile = *wanted;
     const std::map<std::string, double> carried = carried_folds(s, part.patch, m.name + ".");
+    const std::map<std::string, double> joints_before = joint_lengths(s, part.patch);
+    const std::set<std::string> no_room_before =
+        joints_without_room(s, part.patch, SheetOptions{}.tab_width);
     Scaffold before = s;
     const Result<ProfileApplied> applied = apply_profile(s, part.patch, profile);
     if (!applied.ok) {
@@ -280,21 +350,35 @@ Result<FittedProfile> outline_part(Scaffold& s, const ModelMesh& model, const Fi
             return r;
         }
     }
-    // Every crease the outline shortens keeps at least the shortest one a glue tab fits on (or
-    // its whole length when it was shorter): the sheets glue a part where it meets another piece,
-    // and a body part that touches its crease at a point cannot be glued (docs/DESIGN.md).
-    const double glued = shortest_tabbed_crease(SheetOptions{});
-    const std::map<std::string, double> after = crease_lengths(s, part.patch);
-    for (const auto& [name, whole] : crease_lengths(before, part.patch)) {
-        const double length = after.count(name) ? after.at(name) : 0.0;
-        if (length < std::min(whole, glued) - tol) {
-            s = std::move(before);
-            r.fail(DiagnosticCode::bad_profile, "the outline would shorten its fold with " + name +
-                                                    " to " + millimetres(length) +
-                                                    ", less than the " + millimetres(glued) +
-                                                    " a glue tab needs");
-            return r;
+    {
+        // Every glued joint of the part long enough for a glue tab keeps room for one on each of
+        // its pieces: an outline that meets its page in a sliver (a figure's feet, a wheel) leaves
+        // a joint the sheets cannot glue. The crease is the sheets' default, as
+        // FitOptions.min_part_mm's (docs/DESIGN.md).
+        const double crease = shortest_tabbed_crease(SheetOptions{});
+        const std::map<std::string, double> joints_after = joint_lengths(s, part.patch);
+        for (const auto& [name, whole] : joints_before) {
+            const double length = joints_after.count(name) ? joints_after.at(name) : 0.0;
+            if (whole >= crease && length < crease) {
+                s = std::move(before);
+                r.fail(DiagnosticCode::bad_profile,
+                       "the outline would leave a piece of its glued joint with " + name + " " +
+                           millimetres(length) + " long, shorter than the narrowest glue tab's " +
+                           millimetres(crease));
+                return r;
+            }
         }
+        // ... and keeps room inward for the default tab, whole, to land on it (narrowed tabs need
+        // room too).
+        const double tab_depth = SheetOptions{}.tab_width;
+        for (const std::string& name : joints_without_room(s, part.patch, tab_depth))
+            if (!no_room_before.count(name)) {
+                s = std::move(before);
+                r.fail(DiagnosticCode::bad_profile, "the outline would leave no room for a " +
+                                                        millimetres(tab_depth) +
+                                                        " glue tab along its joint with " + name);
+                return r;
+            }
     }
     // A silhouette covering the whole part changes nothing: no profile, so the part still
     // follows later edits of its mechanism's dimensions (a stored outline would clip them).

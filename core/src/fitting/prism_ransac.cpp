@@ -330,10 +330,26 @@ public:
             n += classify(m, sec, q, eps, flat) == Where::face;
         if (n * scale <= to_beat)
             return -1;
-        int inside = 0;
+        std::vector<const Local*> inside;
         for (const Local& q : guard)
-            if (classify(m, sec, q, eps, flat) == Where::inside && ++inside > 1)
-                return -1;
+            if (classify(m, sec, q, eps, flat) == Where::inside)
+                inside.push_back(&q);
+        if (inside.size() > 1 && m.kind == Prism::Kind::rectangular && flat) {
+            // A box fold stands on its page: under a model that floats on legs or wheels (a
+            // truck's chassis) it fills the room below the model's underside. What it encloses
+            // there is the legs' side, not the model's inside, as long as the underside lies in
+            // the box's lower half (docs/DESIGN.md, "Boxes under a raised model").
+            double floor = -1e300;
+            for (const Local* q : inside)
+                if (q->nt < -kNormalAgreement)
+                    floor = std::max(floor, q->t);
+            if (floor > 0 && floor <= 0.5 * m.height)
+                inside.erase(std::remove_if(inside.begin(), inside.end(),
+                                            [&](const Local* q) { return q->t <= floor + eps; }),
+                             inside.end());
+        }
+        if (inside.size() > 1)
+            return -1;
         return n * scale;
     }
 

@@ -198,7 +198,8 @@ TEST(FitOutlines, AnOutlineKeepsEveryFoldLongEnoughToGlue)
             EXPECT_TRUE(sides.empty());
             int named = 0;
             for (const FitRepair& r : out.dropped)
-                named += r.reason.find("to 8 mm, less than the") != std::string::npos;
+                named += r.reason.find("8 mm long, shorter than the narrowest glue tab") !=
+                         std::string::npos;
             EXPECT_EQ(named, 2) << (out.dropped.empty() ? "" : out.dropped.front().reason);
             EXPECT_NEAR(patch_named(out.scaffold, "B1.L").area(), kWidth * kHeight, 1e-9);
         } else {

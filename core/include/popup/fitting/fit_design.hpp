@@ -66,7 +66,7 @@ struct FittedMechanism {
 /// A mechanism the pipeline left out or changed, and why.
 struct FitRepair {
     std::string mechanism;
-    std::string action; ///< "dropped", "trimmed", "remapped"
+    std::string action; ///< "dropped", "trimmed", "remapped", "replaced" (by the bulk box)
     std::string reason;
 };
 

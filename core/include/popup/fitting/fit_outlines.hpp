@@ -30,14 +30,18 @@ struct OutlineOutcome {
 /// the ones that break validity (or that apply_profile refuses) are dropped and reported. A
 /// part whose silhouette covers it whole keeps no profile (a stored outline would clip later
 /// edits of its dimensions); a part carrying a later mechanism keeps one only when that
-/// mechanism's folds on it stay whole (the workbench cuts a part before it builds on it).
+/// mechanism's folds on it stay whole (the workbench cuts a part before it builds on it). A
+/// silhouette that would leave a piece of one of the part's glued joints shorter than the
+/// default sheets' shortest tabbed crease, or the part short of the default tab width inward
+/// along such a joint, is dropped too (the sheets could not glue it).
 OutlineOutcome fit_outlines(const ModelMesh& model_in_card, const Scaffold& scaffold,
                             const std::vector<FittedMechanism>& mechanisms,
                             const CancelFlag* cancel = nullptr);
 
 /// fit_outlines for one mechanism whose outlined parts are `parts` (part-name prefixes, as
 /// principal_parts gives them) instead of its type's principal parts, posed at the design state
-/// (180°). The motion design outlines each moving patch with its own body part this way.
+/// (180°). The motion design outlines each moving patch with its own body part this way; its
+/// outlines are not held to the glue-tab rule of fit_outlines.
 OutlineOutcome fit_outlines_of(const ModelMesh& model_in_card, const Scaffold& scaffold,
                                const FittedMechanism& mechanism,
                                const std::vector<std::string>& parts,
