@@ -40,8 +40,8 @@ OutlineOutcome fit_outlines(const ModelMesh& model_in_card, const Scaffold& scaf
 
 /// fit_outlines for one mechanism whose outlined parts are `parts` (part-name prefixes, as
 /// principal_parts gives them) instead of its type's principal parts, posed at the design state
-/// (180°). The motion design outlines each moving patch with its own body part this way; its
-/// outlines are not held to the glue-tab rule of fit_outlines.
+/// (180°). The motion design outlines each moving patch with its own body part this way,
+/// under the same glue-tab rule.
 OutlineOutcome fit_outlines_of(const ModelMesh& model_in_card, const Scaffold& scaffold,
                                const FittedMechanism& mechanism,
                                const std::vector<std::string>& parts,
