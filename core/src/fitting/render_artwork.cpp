@@ -84,8 +84,11 @@ void check_appearance(const ModelMesh& mesh, Diagnostics& out)
                                             about_parameter("colours")));
             break;
         }
+    // (NaN, NaN) is ModelMesh's mark for a vertex whose material has no texture (model_mesh.hpp):
+    // such corners are coloured from `colours` or the shaded base colour. Anything else not
+    // finite is an error.
     for (size_t i = 0; i < mesh.uvs.size(); ++i)
-        if (!mesh.uvs[i].allFinite()) {
+        if (!mesh.uvs[i].allFinite() && !mesh.uvs[i].array().isNaN().all()) {
             out.push_back(Diagnostic::error(DiagnosticCode::non_finite_model,
                                             model_name(mesh) + ": texture coordinate of vertex " +
                                                 std::to_string(i) + " is not finite",
@@ -306,7 +309,8 @@ Result<PatchArtwork> render_one(const ModelMesh& mesh, const Appearance& look, c
             for (double& x : w)
                 x /= sum;
             std::uint8_t* out = art.image.at(column, row);
-            if (look.texture) {
+            if (look.texture && mesh.uvs[tri[0]].allFinite() && mesh.uvs[tri[1]].allFinite() &&
+                mesh.uvs[tri[2]].allFinite()) {
                 const Vec2 uv =
                     w[0] * mesh.uvs[tri[0]] + w[1] * mesh.uvs[tri[1]] + w[2] * mesh.uvs[tri[2]];
                 const auto texel = sample(*look.texture, uv);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <string>
 
 #include <jpeglib.h>
@@ -351,6 +352,43 @@ TEST(RenderArtwork, BadOptionsAreNamed)
     const Result<PatchArtwork> r = render_artwork(cube, huge, o);
     EXPECT_FALSE(r.ok);
     EXPECT_TRUE(has(r.diagnostics, DiagnosticCode::bad_option, "400000 x 400000 pixels"));
+}
+
+TEST(RenderArtwork, CornersWithoutTextureTakeTheirVertexColour)
+{
+    // Two materials merged by load_model: the left 40 × 40 mm square is textured (the checker of
+    // the test above), the right one is red with no texture, so its corners carry (NaN, NaN)
+    // texture coordinates (model_mesh.hpp). The left keeps its texels, the right is red.
+    const std::vector<std::uint8_t> checker = {255, 0, 0,   255, 0,   255, 0,   255,
+                                               0,   0, 255, 255, 255, 255, 255, 255};
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    ModelMesh two;
+    two.source = "two materials";
+    two.vertices = {{0, 0, 0},  {40, 0, 0}, {40, 40, 0}, {0, 40, 0},
+                    {40, 0, 0}, {80, 0, 0}, {80, 40, 0}, {40, 40, 0}};
+    two.triangles = {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {4, 6, 7}};
+    two.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {nan, nan}, {nan, nan}, {nan, nan}, {nan, nan}};
+    const Vec3 white(1, 1, 1);
+    two.colours = {white, white, white, white, kRed, kRed, kRed, kRed};
+    two.texture = write_png("checker_two", 2, 2, checker);
+    const Patch patch = patch_with({{0, 0, 0}, {80, 0, 0}, {80, 40, 0}, {0, 40, 0}});
+    ArtworkOptions o;
+    o.pixels_per_mm = 0.25;
+    const Result<PatchArtwork> r = render_artwork(two, patch, o);
+    ASSERT_TRUE(r.ok) << r.diagnostics.front().message;
+    EXPECT_EQ(rgb_at(r.value, {10, 10, 0}), (Rgb{0, 0, 255}));
+    EXPECT_EQ(rgb_at(r.value, {30, 30, 0}), (Rgb{0, 255, 0}));
+    EXPECT_EQ(rgb_at(r.value, {50, 10, 0}), (Rgb{255, 0, 0}));
+    EXPECT_EQ(rgb_at(r.value, {70, 30, 0}), (Rgb{255, 0, 0}));
+    EXPECT_EQ(r.value.covered_pixels, 200);
+    // Only both coordinates NaN is the mark: one NaN, or an infinity, is a named error.
+    two.uvs[5] = Vec2(nan, 0.5);
+    EXPECT_TRUE(has(render_artwork(two, patch, o).diagnostics, DiagnosticCode::non_finite_model,
+                    "texture coordinate of vertex 5"));
+    two.uvs[5] = Vec2(std::numeric_limits<double>::infinity(), 0.5);
+    EXPECT_TRUE(has(render_artwork(two, patch, o).diagnostics, DiagnosticCode::non_finite_model,
+                    "texture coordinate of vertex 5"));
+    std::filesystem::remove(two.texture);
 }
 
 TEST(RenderArtwork, BadMeshesAndPatchesAreNamed)
