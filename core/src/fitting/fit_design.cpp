@@ -321,8 +321,8 @@ Result<FitResult> fit_design(const ModelMesh& model, const FitOptions& options,
     r.coverage_error = coverage_error(kept);
     // §5.1.3: principal patches take the model's outline, as long as the design stays valid.
     if (options.outlines && r.valid) {
-        OutlineOutcome outlined =
-            fit_outlines_for(model, r.model_to_card, r.scaffold, r.mechanisms, cancel);
+        OutlineOutcome outlined = fit_outlines_for(model, r.model_to_card, r.scaffold, r.mechanisms,
+                                                   cancel, options.min_part_mm);
         r.scaffold = std::move(outlined.scaffold);
         r.profiles = std::move(outlined.profiles);
         for (const FitRepair& repair : outlined.dropped)

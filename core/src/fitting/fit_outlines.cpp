@@ -289,7 +289,7 @@ std::map<std::string, double> carried_folds(const Scaffold& s, int patch, const 
 /// Applies one part's silhouette to `s`; the profile it kept (an empty part when the silhouette
 /// covers the whole part: `s` unchanged), or why not.
 Result<FittedProfile> outline_part(Scaffold& s, const ModelMesh& model, const FittedMechanism& m,
-                                   const Part& part, bool pose_at_90)
+                                   const Part& part, bool pose_at_90, double glued_joint)
 {
     Result<FittedProfile> r;
     const Result<ProfileFrame> frame = profile_frame(s, part.patch);
@@ -350,12 +350,12 @@ Result<FittedProfile> outline_part(Scaffold& s, const ModelMesh& model, const Fi
             return r;
         }
     }
-    {
+    if (glued_joint > 0) {
         // Every glued joint of the part long enough for a glue tab keeps room for one on each of
         // its pieces: an outline that meets its page in a sliver (a figure's feet, a wheel) leaves
-        // a joint the sheets cannot glue. The crease is the sheets' default, as
-        // FitOptions.min_part_mm's (docs/DESIGN.md).
-        const double crease = shortest_tabbed_crease(SheetOptions{});
+        // a joint the sheets cannot glue. The crease is FitOptions.min_part_mm, by default the
+        // sheets' shortest tabbed crease; 0 lets the maker glue by hand (docs/DESIGN.md).
+        const double crease = glued_joint;
         const std::map<std::string, double> joints_after = joint_lengths(s, part.patch);
         for (const auto& [name, whole] : joints_before) {
             const double length = joints_after.count(name) ? joints_after.at(name) : 0.0;
@@ -431,7 +431,7 @@ namespace {
 /// at a time, keeping what the simulator accepts.
 void outline_mechanism(OutlineOutcome& out, const ModelMesh& model_in_card,
                        const FittedMechanism& m, const std::vector<std::string>& prefixes,
-                       bool pose_at_90, const CancelFlag* cancel)
+                       bool pose_at_90, double glued_joint, const CancelFlag* cancel)
 {
     ValidityOptions vo;
     vo.cancel = cancel;
@@ -444,7 +444,8 @@ void outline_mechanism(OutlineOutcome& out, const ModelMesh& model_in_card,
     std::vector<FittedProfile> kept;
     bool all_applied = true;
     for (const Part& part : parts) {
-        Result<FittedProfile> fp = outline_part(together, model_in_card, m, part, pose_at_90);
+        Result<FittedProfile> fp =
+            outline_part(together, model_in_card, m, part, pose_at_90, glued_joint);
         if (!fp.ok) {
             all_applied = false;
             break;
@@ -461,7 +462,8 @@ void outline_mechanism(OutlineOutcome& out, const ModelMesh& model_in_card,
     // One at a time: keep what the simulator accepts.
     for (const Part& part : parts) {
         Scaffold trial = out.scaffold;
-        Result<FittedProfile> fp = outline_part(trial, model_in_card, m, part, pose_at_90);
+        Result<FittedProfile> fp =
+            outline_part(trial, model_in_card, m, part, pose_at_90, glued_joint);
         if (!fp.ok) {
             out.dropped.push_back(
                 {m.name, "profile dropped",
@@ -486,13 +488,13 @@ void outline_mechanism(OutlineOutcome& out, const ModelMesh& model_in_card,
 
 OutlineOutcome fit_outlines(const ModelMesh& model_in_card, const Scaffold& scaffold,
                             const std::vector<FittedMechanism>& mechanisms,
-                            const CancelFlag* cancel)
+                            const CancelFlag* cancel, double glued_joint_mm)
 {
     OutlineOutcome out;
     out.scaffold = scaffold;
     for (const FittedMechanism& m : mechanisms)
         outline_mechanism(out, model_in_card, m, principal_parts(m.type),
-                          lies_flat(out.scaffold, m), cancel);
+                          lies_flat(out.scaffold, m), glued_joint_mm, cancel);
     return out;
 }
 
@@ -502,16 +504,17 @@ OutlineOutcome fit_outlines_of(const ModelMesh& model_in_card, const Scaffold& s
 {
     OutlineOutcome out;
     out.scaffold = scaffold;
-    outline_mechanism(out, model_in_card, mechanism, parts, false, cancel);
+    outline_mechanism(out, model_in_card, mechanism, parts, false,
+                      shortest_tabbed_crease(SheetOptions{}), cancel);
     return out;
 }
 
 OutlineOutcome fit_outlines_for(const ModelMesh& model, const Eigen::Matrix4d& model_to_card,
                                 const Scaffold& scaffold,
                                 const std::vector<FittedMechanism>& mechanisms,
-                                const CancelFlag* cancel)
+                                const CancelFlag* cancel, double glued_joint_mm)
 {
-    return fit_outlines(placed(model, model_to_card), scaffold, mechanisms, cancel);
+    return fit_outlines(placed(model, model_to_card), scaffold, mechanisms, cancel, glued_joint_mm);
 }
 
 } // namespace popup

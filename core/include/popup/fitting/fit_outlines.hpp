@@ -31,12 +31,14 @@ struct OutlineOutcome {
 /// part whose silhouette covers it whole keeps no profile (a stored outline would clip later
 /// edits of its dimensions); a part carrying a later mechanism keeps one only when that
 /// mechanism's folds on it stay whole (the workbench cuts a part before it builds on it). A
-/// silhouette that would leave a piece of one of the part's glued joints shorter than the
-/// default sheets' shortest tabbed crease, or the part short of the default tab width inward
-/// along such a joint, is dropped too (the sheets could not glue it).
+/// silhouette that would leave a piece of one of the part's glued joints shorter than
+/// `glued_joint_mm` (by default the default sheets' shortest tabbed crease, as
+/// FitOptions::min_part_mm), or the part short of the default tab width inward along such a
+/// joint, is dropped too (the sheets could not glue it); 0 checks neither.
 OutlineOutcome fit_outlines(const ModelMesh& model_in_card, const Scaffold& scaffold,
                             const std::vector<FittedMechanism>& mechanisms,
-                            const CancelFlag* cancel = nullptr);
+                            const CancelFlag* cancel = nullptr,
+                            double glued_joint_mm = shortest_tabbed_crease(SheetOptions{}));
 
 /// fit_outlines for one mechanism whose outlined parts are `parts` (part-name prefixes, as
 /// principal_parts gives them) instead of its type's principal parts, posed at the design state
@@ -51,6 +53,7 @@ OutlineOutcome fit_outlines_of(const ModelMesh& model_in_card, const Scaffold& s
 OutlineOutcome fit_outlines_for(const ModelMesh& model, const Eigen::Matrix4d& model_to_card,
                                 const Scaffold& scaffold,
                                 const std::vector<FittedMechanism>& mechanisms,
-                                const CancelFlag* cancel = nullptr);
+                                const CancelFlag* cancel = nullptr,
+                                double glued_joint_mm = shortest_tabbed_crease(SheetOptions{}));
 
 } // namespace popup
