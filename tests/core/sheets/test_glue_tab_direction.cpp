@@ -187,11 +187,12 @@ TEST_P(SteppedBlock, SheetsVerifyAndRoundTripAtEveryAngle)
     for (const SheetPiece& piece : laid.value.pieces)
         for (size_t i = 0; i < piece.labels.size(); ++i)
             for (size_t j = i + 1; j < piece.labels.size(); ++j)
-                if (piece.labels[i].kind == "glue" && piece.labels[j].kind == "glue")
+                if (piece.labels[i].kind == "glue" && piece.labels[j].kind == "glue") {
                     EXPECT_GT((piece.labels[i].position - piece.labels[j].position).norm(),
                               0.5 * (piece.labels[i].height + piece.labels[j].height))
                         << piece.id << ": " << piece.labels[i].text << " and "
                         << piece.labels[j].text;
+                }
 
     VerifyOptions v;
     for (const SheetPiece& piece : laid.value.pieces)
