@@ -3,6 +3,7 @@
 // the design state (a box's front V at 180°), so the card is sampled on its way closed too.
 #include <vector>
 
+#include "local_piece.hpp"
 #include "popup/simulation/simulate_fold.hpp"
 
 namespace popup::sheets {
@@ -24,6 +25,16 @@ BendSamples sample_bends(const Scaffold& s, const std::vector<FoldState>& sweep)
 /// when the two stay flat in every sample (then the result is a valley).
 FoldDirection bend_direction(const Scaffold& s, const BendSamples& samples, int a,
                              const Vec3& normal_a, int b, const Vec3& on_hinge, bool& bent);
+
+/// Which way a glue tab's crease folds, seen from the printed side of the carrier patch: the tab
+/// turns off the carrier onto the target patch and lies there on the side of the joint where its
+/// glue area is. `glue_point` is a point of that area in the target piece's flat frame. A joint
+/// inside the target's paper leaves room on both sides of it, so the target's centre (which
+/// bend_direction looks at) cannot tell. `bent` is false when carrier and target stay in one
+/// plane throughout (then a valley).
+FoldDirection tab_direction(const Scaffold& s, const BendSamples& samples, const Hinge& h,
+                            const LocalPiece& carrier, int carrier_patch, const LocalPiece& target,
+                            int target_patch, const Vec2& glue_point, bool& bent);
 
 /// The direction a fold line of hinge h is drawn with on a's piece, seen from `printed_a` (a's
 /// printed side): how b bends away from a on the way closed or, for a fold that never bends, the

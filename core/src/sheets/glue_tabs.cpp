@@ -94,9 +94,6 @@ Fit fit_tab(const Scaffold& s, const Hinge& h, const LocalPiece& carrier, int ca
     const bool front =
         bend_direction(s, bends, target_patch, target.printed_normal(s, target_patch),
                        carrier_patch, h.from, bent) == FoldDirection::valley;
-    const FoldDirection crease =
-        bend_direction(s, bends, carrier_patch, carrier.printed_normal(s, carrier_patch),
-                       target_patch, h.from, bent);
     const double angle = options.tab_angle * M_PI / 180.0;
     const Vec2 a = carrier.flat_point(s, carrier_patch, h.from);
     const Vec2 b = carrier.flat_point(s, carrier_patch, h.to);
@@ -142,14 +139,18 @@ Fit fit_tab(const Scaffold& s, const Hinge& h, const LocalPiece& carrier, int ca
                 const Vec2 ia = a + inset * (b - a), ib = b - inset * (b - a);
                 const Vec2 ita = ta + inset * (tb - ta), itb = tb - inset * (tb - ta);
                 Fit fit{trapezoid(ia, ib, away, width, angle),
-                        trapezoid(ita, itb, side, width, angle), width, front, crease};
+                        trapezoid(ita, itb, side, width, angle), width, front};
                 if (overlap_area({fit.tab}, own) <= overlap_tolerance &&
                     area_outside(fit.area, paper, paper_holes) <= overlap_tolerance &&
                     overlap_area({fit.area}, taken) <= overlap_tolerance &&
                     std::none_of(standing.begin(), standing.end(), [&](const auto& line) {
                         return crosses(fit.area, line[0], line[1]);
-                    }))
+                    })) {
+                    // The crease folds the tab onto the side of the joint its area is on.
+                    fit.crease = tab_direction(s, bends, h, carrier, carrier_patch, target,
+                                               target_patch, mean(fit.area), bent);
                     return fit;
+                }
             }
     return {};
 }

@@ -68,6 +68,47 @@ double upright(double degrees)
     return angle;
 }
 
+// Where a glue area's code goes: its middle, unless another glue area of the piece (on the
+// paper's other face) covers that point; then the point along the area's mid-depth line nearest
+// the middle that stands clear of the others by half the text's width, so that no two codes
+// print on top of each other (the reader gives a code to the smallest area holding it).
+Vec2 glue_label_position(const LocalPiece& piece, size_t index, double width)
+{
+    const GlueArea& g = piece.glue[index];
+    auto clear_by = [&](const Vec2& q) {
+        double nearest = 1e300;
+        for (size_t k = 0; k < piece.glue.size(); ++k)
+            if (k != index) {
+                const Loop2& other = piece.glue[k].polygon;
+                if (point_in_polygon(other, q))
+                    return -1.0;
+                nearest = std::min(nearest, distance_to_boundary(other, q));
+            }
+        return nearest;
+    };
+    const Vec2 middle = mean(g.polygon);
+    if (clear_by(middle) >= 0.0)
+        return middle;
+    // The mid-depth line: halfway between the crease (edge 0-1) and the far edge (2-3).
+    const Vec2 from = 0.5 * (g.polygon[0] + g.polygon[3]), to = 0.5 * (g.polygon[1] + g.polygon[2]);
+    constexpr int samples = 64;
+    Vec2 best = middle;
+    double best_clear = -1.0, best_shift = 1e300;
+    for (int k = 0; k <= samples; ++k) {
+        const Vec2 q = from + (to - from) * (double(k) / samples);
+        const double c = std::min(clear_by(q), distance_to_boundary(g.polygon, q) + 0.5 * width);
+        const double shift = (q - middle).norm();
+        const bool enough = c >= 0.5 * width, best_enough = best_clear >= 0.5 * width;
+        if ((enough && (!best_enough || shift < best_shift)) ||
+            (!enough && !best_enough && c > best_clear)) {
+            best = q;
+            best_clear = c;
+            best_shift = shift;
+        }
+    }
+    return best_clear >= 0.0 ? best : middle;
+}
+
 void add_labels(LocalPiece& piece, const std::string& piece_id, bool fold_hints)
 {
     Vec2 best = mean(piece.flat.outlines.front());
@@ -94,11 +135,15 @@ void add_labels(LocalPiece& piece, const std::string& piece_id, bool fold_hints)
         piece.labels.push_back({t.code, "tab", mean(t.polygon),
                                 std::clamp(0.45 * t.width, 1.0, 5.0),
                                 reading_angle(t.polygon[0], t.polygon[1])});
-    for (const GlueArea& g : piece.glue) {
+    for (size_t k = 0; k < piece.glue.size(); ++k) {
+        const GlueArea& g = piece.glue[k];
         const double depth = distance_to_segment(g.polygon[2], g.polygon[0], g.polygon[1]);
         // A tab glued to the paper's other face: the mark is printed here, the glue goes there.
         const std::string text = g.front ? g.code : g.code + " (back)";
-        piece.labels.push_back({text, "glue", mean(g.polygon), std::clamp(0.3 * depth, 1.0, 5.0),
+        const double height = std::clamp(0.3 * depth, 1.0, 5.0);
+        // About 0.6 of its height per character.
+        const double width = 0.6 * height * double(text.size());
+        piece.labels.push_back({text, "glue", glue_label_position(piece, k, width), height,
                                 reading_angle(g.polygon[0], g.polygon[1])});
     }
     if (!fold_hints)

@@ -319,12 +319,35 @@ Result<std::vector<DrawnPiece>> read_drawn_pieces(const std::vector<SheetDrawing
             for (const DrawnText& t : d.labels)
                 if (t.text != piece.id && owner(t.position) == self)
                     texts.push_back(&t);
-            // A glue area's code is printed at its middle; areas on the paper's two faces may
-            // overlap, so each takes the nearest text inside it that no other took.
+            // A glue area's code is printed inside it; areas on the paper's two faces may
+            // overlap, and a code inside several is the smallest one's (a larger area's code
+            // is printed clear of the smaller areas on it). Each area takes the nearest of its
+            // codes to its middle; then, of the texts no area took, the nearest inside it.
+            std::vector<int> smallest(texts.size(), -1);
+            for (size_t i = 0; i < texts.size(); ++i)
+                for (size_t k = 0; k < piece.glue.size(); ++k)
+                    if (point_in_polygon(piece.glue[k].polygon, texts[i]->position) &&
+                        (smallest[i] < 0 ||
+                         std::abs(loop_area(piece.glue[k].polygon)) <
+                             std::abs(loop_area(piece.glue[size_t(smallest[i])].polygon))))
+                        smallest[i] = int(k);
             std::vector<bool> taken(texts.size(), false);
-            for (DrawnGlue& g : piece.glue) {
-                int nearest = -1;
+            std::vector<int> code_of(piece.glue.size(), -1);
+            for (size_t k = 0; k < piece.glue.size(); ++k)
                 for (size_t i = 0; i < texts.size(); ++i)
+                    if (smallest[i] == int(k) &&
+                        (code_of[k] < 0 ||
+                         (texts[i]->position - mean(piece.glue[k].polygon)).norm() <
+                             (texts[size_t(code_of[k])]->position - mean(piece.glue[k].polygon))
+                                 .norm()))
+                        code_of[k] = int(i);
+            for (int i : code_of)
+                if (i >= 0)
+                    taken[size_t(i)] = true;
+            for (size_t k = 0; k < piece.glue.size(); ++k) {
+                DrawnGlue& g = piece.glue[k];
+                int nearest = code_of[k];
+                for (size_t i = 0; i < texts.size() && code_of[k] < 0; ++i)
                     if (!taken[i] && point_in_polygon(g.polygon, texts[i]->position) &&
                         (nearest < 0 ||
                          (texts[i]->position - mean(g.polygon)).norm() <

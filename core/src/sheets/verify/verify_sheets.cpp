@@ -210,6 +210,22 @@ private:
                 return int(k);
         return -1;
     }
+    // Hinge h's line runs through the inside of `patch` (its paper lies on both sides of it).
+    bool joint_inside(int patch, const Hinge& h) const
+    {
+        const int k = piece_of(patch);
+        if (k < 0)
+            return false;
+        const LocalPiece& local = pieces_[size_t(k)].local;
+        const Vec2 a = local.flat_point(s_, patch, h.from), b = local.flat_point(s_, patch, h.to);
+        const Vec2 across = left_normal((b - a).normalized());
+        double lowest = 0.0, highest = 0.0;
+        for (const Vec2& p : local.outline(patch)) {
+            lowest = std::min(lowest, across.dot(p - a));
+            highest = std::max(highest, across.dot(p - a));
+        }
+        return lowest < -tol_ && highest > tol_;
+    }
     void join(std::map<int, Pose>& from_sheet, int moving, const PieceCheck& moving_piece,
               std::array<Vec2, 2> moving_edge, int fixed, const PieceCheck& fixed_piece,
               std::array<Vec2, 2> fixed_edge);
@@ -527,8 +543,21 @@ void Verifier::check_tabs()
             seen_from_tab.patch_a = patch;
             seen_from_tab.patch_b = partner;
             bool unspecified = false;
-            const FoldDirection expected = drawn_direction(
+            FoldDirection expected = drawn_direction(
                 s_, bends_, seen_from_tab, piece.local.printed_normal(s_, patch), unspecified);
+            if (areas != by_code.end() && areas->second.front().patch == partner) {
+                // The tab folds onto the side of the joint its glue area is drawn on (a joint
+                // inside the partner's paper has room on both sides).
+                const DrawnArea& area = areas->second.front();
+                const PieceCheck& under = pieces_[area.piece];
+                const Motion2& drawing = under.placed.motion;
+                const Vec2 glue_point =
+                    drawing.rotation.transpose() *
+                    (interior_point({area.glue->polygon, {}}) - drawing.translation);
+                bool bent = false;
+                expected = tab_direction(s_, bends_, h, piece.local, patch, under.local, partner,
+                                         glue_point, bent);
+            }
             if (d.folds[f].direction != expected)
                 error(DiagnosticCode::fold_direction_wrong,
                       piece.id + ": the tab crease on patch " + patch_name(s_, patch) + " (hinge " +
@@ -674,8 +703,14 @@ void Verifier::choose_registrations()
                         seen.patch_a = patch;
                         seen.patch_b = h.patch_a == patch ? h.patch_b : h.patch_a;
                         bool unspecified = false;
-                        partners[seen.patch_b] = drawn_direction(
-                            s_, bends_, seen, piece.local.printed_normal(s_, patch), unspecified);
+                        // A joint inside the partner's paper lets the tab lie on either side
+                        // of it, and fold either way: its crease tells nothing here.
+                        partners[seen.patch_b] =
+                            joint_inside(seen.patch_b, h)
+                                ? FoldDirection::unspecified
+                                : drawn_direction(s_, bends_, seen,
+                                                  piece.local.printed_normal(s_, patch),
+                                                  unspecified);
                     }
                 for (const DrawnText& t : d.texts)
                     if (inside_region(d.faces[size_t(tab_face)], t.position))
@@ -721,7 +756,9 @@ void Verifier::choose_registrations()
                     if (area == ways[j][choice[j]].areas.end())
                         continue;
                     const auto joint = tab.partners.find(area->second);
-                    count += joint == tab.partners.end() || joint->second != tab.drawn;
+                    count +=
+                        joint == tab.partners.end() ||
+                        (joint->second != FoldDirection::unspecified && joint->second != tab.drawn);
                 }
         }
         return count;
