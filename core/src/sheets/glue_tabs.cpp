@@ -156,7 +156,10 @@ Fit fit_tab(const Scaffold& s, const Hinge& h, const LocalPiece& carrier, int ca
 }
 
 // A joint along a crease that already has a tab on the same patch (a panel standing on the
-// central fold is joined to both pages along one edge): one tab holds both.
+// central fold is joined to both pages along one edge): one tab holds both. The joint may be
+// only part of that crease (an outline cut the other patch's edge short, e.g. a box's profiled
+// top half beside its whole centre wall): the tab glued along the whole crease holds it too.
+// verify_sheets accepts the same (joint within a tab's crease).
 bool already_tabbed(const Scaffold& s, const Hinge& h, const std::vector<LocalPiece>& pieces,
                     const std::map<int, int>& position)
 {
@@ -165,8 +168,7 @@ bool already_tabbed(const Scaffold& s, const Hinge& h, const std::vector<LocalPi
         const Vec2 a = piece.flat_point(s, patch, h.from), b = piece.flat_point(s, patch, h.to);
         auto same = [&](const Vec2& p, const Vec2& q) {
             const double tol = 1e-6 * std::max(s.size(), 1.0);
-            return std::min(std::max((p - a).norm(), (q - b).norm()),
-                            std::max((p - b).norm(), (q - a).norm())) <= tol;
+            return distance_to_segment(a, p, q) <= tol && distance_to_segment(b, p, q) <= tol;
         };
         for (const GlueTab& t : piece.tabs)
             if (t.patch == patch && same(t.polygon[0], t.polygon[1]))

@@ -8,7 +8,10 @@
 #include "popup/fitting/fit_design.hpp"
 #include "popup/fitting/fit_outlines.hpp"
 #include "popup/mechanisms/box_fold.hpp"
+#include "popup/model/apply_profile.hpp"
 #include "popup/model/card.hpp"
+#include "popup/sheets/sheet_layout.hpp"
+#include "popup/sheets/verify_sheets.hpp"
 #include "popup/simulation/check_validity.hpp"
 #include "synthetic_models.hpp"
 
@@ -254,4 +257,54 @@ TEST(FitOutlines, FitDesignProfilesTheArchedBlockDeterministically)
     for (const FittedProfile& p : a.value.profiles)
         EXPECT_NEAR(patch_named(plain.value.scaffold, p.mechanism + "." + p.part).area(),
                     p.area_before, 1e-6);
+}
+
+TEST(FitOutlines, ATopOutlineKeepingPartOfItsJointWithTheCentreWallStillGlues)
+{
+    // The top half on the backdrop side (TB) is joined to the centre wall (C) along the top's
+    // crease, where C is also joined to TG: one tab of C holds both joints. An outline that cuts
+    // TB's end of that crease away on a slant (the way a silhouette leaves it: here it leaves
+    // the crease at u = 15 mm, 24° off it, as a wavy silhouette did) keeps only part of the
+    // C–TB joint. The sheets must see that part as held by C's tab along the whole crease.
+    Design d = box_design();
+    const auto tabs_of = [](const SheetSet& set) {
+        size_t n = 0;
+        for (const SheetPiece& p : set.pieces)
+            n += p.tabs.size();
+        return n;
+    };
+    SheetOptions o;
+    o.nest.paper = paper_by_name("A3").value;
+    const Result<SheetSet> whole = layout_sheets(d.scaffold, o);
+    ASSERT_TRUE(whole.ok);
+    const int c = patch_named(d.scaffold, "B1.C").id, tb = patch_named(d.scaffold, "B1.TB").id;
+    const double slope = std::tan(24 * kPi / 180);
+    Profile notch;
+    notch.name = "notched top";
+    notch.outer = {{-40, -5}, {15, -5}, {15, 0}, {40, 25 * slope}, {40, 40}, {-40, 40}};
+    ASSERT_TRUE(apply_profile(d.scaffold, "B1", "TB", notch).ok);
+    // The joint keeps u from −30 to 15: 45 mm of the box's 60 mm width.
+    double joint = 0;
+    for (const Hinge& h : d.scaffold.hinges)
+        if ((h.patch_a == c && h.patch_b == tb) || (h.patch_a == tb && h.patch_b == c))
+            joint += (h.to - h.from).norm();
+    EXPECT_NEAR(joint, 0.5 * kWidth + 15, 1e-5);
+    EXPECT_TRUE(check_validity(d.scaffold).valid());
+
+    const Result<SheetSet> laid = layout_sheets(d.scaffold, o);
+    ASSERT_TRUE(laid.ok);
+    for (const Diagnostic& x : laid.value.diagnostics) {
+        EXPECT_NE(x.code, DiagnosticCode::no_room_for_tab) << x.message;
+        EXPECT_NE(x.code, DiagnosticCode::joint_without_tab) << x.message;
+        EXPECT_NE(x.severity, Severity::error) << x.message;
+    }
+    EXPECT_TRUE(laid.value.round_trip.ok);
+    // As many tabs as the uncut box: C's tab along the crease still holds TG and TB.
+    EXPECT_EQ(tabs_of(laid.value), tabs_of(whole.value));
+    // The sheets as a cutting file holds them verify on their own too.
+    const Result<RoundTrip> trip = verify_sheets(d.scaffold, draw_sheets(laid.value));
+    ASSERT_TRUE(trip.ok);
+    EXPECT_TRUE(trip.value.ok);
+    for (const Diagnostic& x : trip.diagnostics)
+        EXPECT_NE(x.severity, Severity::error) << x.message;
 }

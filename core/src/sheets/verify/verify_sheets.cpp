@@ -614,14 +614,17 @@ void Verifier::check_tabs()
             !pieces_[size_t(pb)].drawn)
             continue;
         // One tab holds every joint along its crease on its patch (a panel standing on the
-        // central fold is joined to both pages along one edge); so does one glue area.
+        // central fold is joined to both pages along one edge); so does one glue area. The
+        // crease may lie within the joint (a tab held back from its ends) or the joint within
+        // the crease (an outline cut the other patch's edge short; glue_tabs' already_tabbed).
         auto along = [&](int patch, const Vec2& from, const Vec2& to) {
             if (patch != h.patch_a && patch != h.patch_b)
                 return false;
             const PieceCheck& on = pieces_[size_t(piece_of(patch))];
             const std::array<Vec2, 2> line{on.placed.motion(on.local.flat_point(s_, patch, h.from)),
                                            on.placed.motion(on.local.flat_point(s_, patch, h.to))};
-            return segment_gap({from, to}, line[0], line[1]) <= tol_ + tie_;
+            return segment_gap({from, to}, line[0], line[1]) <= tol_ + tie_ ||
+                   segment_gap(line, from, to) <= tol_ + tie_;
         };
         const bool held =
             std::any_of(tabs_.begin(), tabs_.end(),
