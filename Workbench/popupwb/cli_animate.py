@@ -171,6 +171,9 @@ def run(args, cli):
     _write_pictures(args, result, animation, stages, files, say)
     report = _report(common, result, validity, stages, files)
     valid = report["valid"] and result.mechanisms
+    if report["valid"] and not result.mechanisms:  # a card with nothing on it is no pop-up
+        report["valid"] = False
+        say("no mechanism: every chain is printed on the page, nothing stands up")
     status = steps.sheets_of_valid_design(args, cli, paper, report, valid, files, stages, say)
     return steps.finish(args, cli, report, status, files, stages, say, _print_summary)
 

@@ -204,7 +204,7 @@ def finish(args, cli, report, status, files, stages, say, print_summary):
     report["sheets_ok"] = bool(report["valid"] and status == cli.EXIT_VALID)
     write_report(args.out, report, files, say)
     print_summary(report, files)
-    if report["valid"] and status != cli.EXIT_VALID:
+    if report["valid"] and status != cli.EXIT_VALID and "sheets" in files:
         print(
             "but its cutting sheets have errors (listed above; "
             f"{os.path.join(files['sheets'], 'report.json')})"

@@ -380,3 +380,23 @@ def test_arm_rotation_is_held_to_the_rotation_arms_floor():
     assert floor / result.targets.diagonal_mm > 0.03  # the goal is out of the arm's reach
     assert chain.error_mm >= floor - 1e-9
     assert chain.error_mm <= 1.2 * floor
+
+
+def test_a_character_that_only_stands_still_stands_on_a_floating_layer(tmp_path):
+    """Thesis §6.4: a part that does not move stands on a floating layer. Alone on the card it
+    costs what a part printed on the page costs (both follow its still path), and the tie goes
+    to the layer, so the card has something that pops up."""
+    path = tmp_path / "still.json"
+    still = [[30.0, 40.0, 0.0]] * 5
+    path.write_text(
+        json.dumps({"effectors": [{"name": "statue", "root": [0, 40, 0], "points": still}]})
+    )
+    animation = popupcore.load_trajectories(str(path))
+    o = popupcore.MotionOptions()
+    o.seed = 1
+    result = popupcore.design_motion(animation, o)
+    assert result.valid
+    (chain,) = result.chains
+    assert (chain.status, chain.mapping) == ("stationary", "stationary")
+    assert "floating layer carries it" in chain.reason
+    assert [m.type for m in result.mechanisms] == ["floating_layer"]

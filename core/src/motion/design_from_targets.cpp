@@ -378,7 +378,9 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
             Slot trial = s;
             trial.printed = false;
             trial.mechanism = c.mechanism;
-            if (slot_cost(p, trial) >= slot_cost(p, s))
+            // A floating layer that costs no more than the printed part is taken (thesis §6.4:
+            // still parts stand on floating layers); a tie is common, both following the path.
+            if (slot_cost(p, trial) > slot_cost(p, s) + 1e-12)
                 continue;
             const CollisionVolume v = slot_volume(p, trial);
             bool free = true;
