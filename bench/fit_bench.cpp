@@ -29,6 +29,8 @@ void BM_FitDesign(benchmark::State& state)
     double coverage = 0, mechanisms = 0, valid = 0;
     for (auto _ : state) {
         const auto r = fit_design(model, options);
+        for (const auto& [stage, seconds] : r.value.timings_s) // where the time goes
+            state.counters["s_" + stage] = seconds;
         coverage = r.value.coverage;
         mechanisms = double(r.value.mechanisms.size());
         valid = r.value.valid;

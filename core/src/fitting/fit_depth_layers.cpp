@@ -324,15 +324,24 @@ fit_depth_layers(const ModelMesh& model, const Eigen::Matrix4d& model_to_card,
     out.scaffold = scaffold;
     const ModelMesh in_card = placed(model, model_to_card);
     FitMetricsOptions fo = metric_options(options);
-    const Result<FitMetrics> measured = fit_metrics(model, model_to_card, scaffold, {}, fo);
-    if (!measured.ok) { // nothing to compare with: no layer can show it helps
-        for (const Diagnostic& d : measured.diagnostics)
-            result.diagnostics.push_back(Diagnostic::warning(
-                d.code, "depth layers not tried: " + d.message, about_patches(d.patches)));
-        return result;
-    }
-    const std::optional<double> first = measured.value.model_to_popup_mm.mean;
-    out.mean_before_mm = out.mean_after_mm = *first;
+    // The design's mean distance, measured once and only when a layer gets that far: most
+    // boxes have no layer standing proud, and the measure is the stage's dearest step.
+    enum class Baseline { unmeasured, measured, failed } baseline = Baseline::unmeasured;
+    auto measure_baseline = [&] {
+        if (baseline != Baseline::unmeasured)
+            return baseline == Baseline::measured;
+        const Result<FitMetrics> measured = fit_metrics(model, model_to_card, scaffold, {}, fo);
+        if (!measured.ok) { // nothing to compare with: no layer can show it helps
+            for (const Diagnostic& d : measured.diagnostics)
+                result.diagnostics.push_back(Diagnostic::warning(
+                    d.code, "depth layers not tried: " + d.message, about_patches(d.patches)));
+            baseline = Baseline::failed;
+            return false;
+        }
+        out.mean_before_mm = out.mean_after_mm = measured.value.model_to_popup_mm.mean;
+        baseline = Baseline::measured;
+        return true;
+    };
     std::set<std::string> taken;
     for (const FittedMechanism& m : mechanisms)
         taken.insert(m.name);
@@ -505,6 +514,10 @@ fit_depth_layers(const ModelMesh& model, const Eigen::Matrix4d& model_to_card,
                 if (!check.valid()) {
                     drop("the validity check failed with it: " +
                          first_error(check.diagnostics, "not valid"));
+                    continue;
+                }
+                if (!measure_baseline()) {
+                    drop("the design's distance to the model could not be measured");
                     continue;
                 }
                 const std::optional<double> after =
