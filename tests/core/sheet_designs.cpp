@@ -15,35 +15,11 @@
 
 namespace popup::fixtures {
 
-namespace {
-
-constexpr double degree = M_PI / 180.0;
-
-Scaffold card(double width, double depth)
-{
-    CardParams p;
-    p.width = width;
-    p.depth = depth;
-    return make_card(p).value;
-}
-
-// Generators report failures as diagnostics; a fixture that fails is a broken test setup.
 MechanismParts must(Result<MechanismParts> r, const std::string& what)
 {
     if (!r.ok)
         throw std::runtime_error(what + ": " + r.diagnostics.front().message);
     return r.value;
-}
-
-TentFoldParams tent(double offset, double width, double foot, double slope)
-{
-    TentFoldParams p;
-    p.offset = offset;
-    p.width = width;
-    p.foot = foot;
-    p.foot_backdrop = foot;
-    p.slope = slope;
-    return p;
 }
 
 StepFoldParams step(double offset, double width, double run_ground, double run_backdrop)
@@ -64,6 +40,29 @@ BoxFoldParams box(double offset, double width, double depth, double height)
     p.depth_ground = depth;
     p.depth_backdrop = depth;
     p.height = height;
+    return p;
+}
+
+namespace {
+
+constexpr double degree = M_PI / 180.0;
+
+Scaffold card(double width, double depth)
+{
+    CardParams p;
+    p.width = width;
+    p.depth = depth;
+    return make_card(p).value;
+}
+
+TentFoldParams tent(double offset, double width, double foot, double slope)
+{
+    TentFoldParams p;
+    p.offset = offset;
+    p.width = width;
+    p.foot = foot;
+    p.foot_backdrop = foot;
+    p.slope = slope;
     return p;
 }
 

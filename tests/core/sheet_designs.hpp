@@ -3,9 +3,20 @@
 #include <string>
 #include <vector>
 
+#include "popup/mechanisms/box_fold.hpp"
+#include "popup/mechanisms/step_fold.hpp"
 #include "popup/model/scaffold.hpp"
 
 namespace popup::fixtures {
+
+/// A generator's parts, or an exception naming `what` (a fixture that fails is a broken test).
+MechanismParts must(Result<MechanismParts> r, const std::string& what);
+
+/// A box fold's parameters, the same depth on both pages.
+BoxFoldParams box(double offset, double width, double depth, double height);
+
+/// A step fold's parameters.
+StepFoldParams step(double offset, double width, double run_ground, double run_backdrop);
 
 struct NamedDesign {
     std::string name;

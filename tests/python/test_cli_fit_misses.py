@@ -2,29 +2,19 @@
 truck on wheels with its given axes was one tent far from it. Models from tools/make_models.py;
 bounds from their construction and the issue, never from the fitter's output."""
 
-import importlib.util
 import json
 import os
 
 import numpy as np
 import pytest
 
-from test_cli import SOURCE_DIR, popup
+from cli_runner import load_tool, popup
+from test_cli_fit import UPRIGHT
 
-UPRIGHT = ("--up", "0,0,1", "--facing", "0,-1,0")  # make_models: z up, the front faces -y
 THESIS_BEST_MEAN = 0.0128  # issue 12's goal for blocky models, with at most 8 mechanisms
 
 
-def _make_models():
-    spec = importlib.util.spec_from_file_location(
-        "make_models", os.path.join(SOURCE_DIR, "tools", "make_models.py")
-    )
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-make_models = _make_models()
+make_models = load_tool("make_models")
 
 
 @pytest.fixture(scope="module")

@@ -2,7 +2,6 @@
 print layer of the SVG and PDF carries the model's images and the three registration marks,
 unless every CuttingSheet of the card has PrintArtwork off. Checked by re-reading the files."""
 
-import importlib.util
 import os
 import re
 import shutil
@@ -11,27 +10,18 @@ from xml.etree import ElementTree
 import pytest
 from pypdf import PdfReader
 
-from test_cli import SOURCE_DIR, popup
+from cli_runner import load_tool, popup
+from test_cli_fit import UPRIGHT
 
 SVG = "{http://www.w3.org/2000/svg}"
-UPRIGHT = ("--up", "0,0,1", "--facing", "0,-1,0")
 MARK = rb"([-0-9.]+) ([-0-9.]+) 5 5 re f"  # a 5 mm filled square (registration_marks.py)
-
-
-def _make_models():
-    spec = importlib.util.spec_from_file_location(
-        "make_models", os.path.join(SOURCE_DIR, "tools", "make_models.py")
-    )
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
 
 
 @pytest.fixture(scope="module")
 def fitted(tmp_path_factory):
     """design.FCStd of a cuboid fitted by `popup fit` (a card with a SourceModel)."""
     folder = tmp_path_factory.mktemp("fitted")
-    model = _make_models().write_model("cuboid", str(folder / "cuboid.stl"))
+    model = load_tool("make_models").write_model("cuboid", str(folder / "cuboid.stl"))
     proc = popup("fit", model, "--out", str(folder / "fit"), *UPRIGHT)
     assert proc.returncode == 0, proc.stdout + proc.stderr
     return str(folder / "fit" / "design.FCStd")

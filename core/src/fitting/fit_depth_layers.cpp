@@ -1,6 +1,7 @@
 #include "popup/fitting/fit_depth_layers.hpp"
 
 #include "../geometry/clipper_paths.hpp"
+#include "outline_support.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -17,18 +18,11 @@
 #include "popup/simulation/check_validity.hpp"
 
 namespace popup {
-namespace {
 
-ModelMesh placed(const ModelMesh& model, const Eigen::Matrix4d& m)
-{
-    ModelMesh out;
-    out.source = model.source;
-    out.triangles = model.triangles;
-    out.vertices.reserve(model.vertices.size());
-    for (const Vec3& x : model.vertices)
-        out.vertices.push_back(m.topLeftCorner<3, 3>() * x + m.topRightCorner<3, 1>());
-    return out;
-}
+using outline_support::first_error;
+using outline_support::placed;
+using outline_support::record_cut;
+namespace {
 
 const Patch* patch_named(const Scaffold& s, const std::string& name)
 {
@@ -140,14 +134,6 @@ Profile profile_on(const Footprint& f, const BasePatchPair& pair, const Vec3& ac
     return p;
 }
 
-std::string first_error(const Diagnostics& d, const std::string& otherwise)
-{
-    for (const Diagnostic& x : d)
-        if (x.severity == Severity::error)
-            return x.message;
-    return otherwise;
-}
-
 FitMetricsOptions metric_options(const DepthLayerFitOptions& o)
 {
     FitMetricsOptions fo;
@@ -223,16 +209,7 @@ Result<std::optional<FittedProfile>> cut_part(Scaffold& s, const std::string& na
         hi = hi.cwiseMax(q);
     }
     fp.reference = hi - lo;
-    for (const Vec3& x : cut.outer)
-        fp.outer.push_back(applied.value.frame.to_frame(x));
-    for (const Loop3& hole : cut.holes) {
-        Loop2 h;
-        for (const Vec3& x : hole)
-            h.push_back(applied.value.frame.to_frame(x));
-        fp.holes.push_back(h);
-    }
-    fp.area = applied.value.area_after;
-    fp.area_before = applied.value.area_before;
+    record_cut(fp, cut, applied.value);
     r.value = fp;
     return r;
 }

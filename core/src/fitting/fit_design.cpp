@@ -5,6 +5,7 @@
 #include <cmath>
 #include <set>
 #include <sstream>
+#include <utility>
 
 #include "popup/fitting/alignment.hpp"
 #include "popup/fitting/bulk_prism.hpp"
@@ -65,7 +66,9 @@ double distance_to_patch(const Patch& patch, const std::vector<Vec2>& outline, c
     return inside ? std::abs(off) : std::hypot(off, edge);
 }
 
-double coverage_of(const Scaffold& scaffold, const SurfaceSamples& samples, double eps)
+/// The scaffold's patches with their frames derived, and each outline in its patch's frame.
+std::pair<std::vector<Patch>, std::vector<std::vector<Vec2>>>
+framed_outlines(const Scaffold& scaffold)
 {
     std::vector<Patch> patches = scaffold.patches;
     std::vector<std::vector<Vec2>> outlines;
@@ -76,6 +79,12 @@ double coverage_of(const Scaffold& scaffold, const SurfaceSamples& samples, doub
             o.push_back(p.to_local(v));
         outlines.push_back(o);
     }
+    return {patches, outlines};
+}
+
+double coverage_of(const Scaffold& scaffold, const SurfaceSamples& samples, double eps)
+{
+    const auto [patches, outlines] = framed_outlines(scaffold);
     size_t near = 0;
     for (const Vec3& x : samples.points)
         for (size_t k = 0; k < patches.size(); ++k)
@@ -89,15 +98,7 @@ double coverage_of(const Scaffold& scaffold, const SurfaceSamples& samples, doub
 /// Mean distance from (at most 3000 of) the samples to the scaffold's patches.
 double mean_distance_to(const Scaffold& scaffold, const SurfaceSamples& samples)
 {
-    std::vector<Patch> patches = scaffold.patches;
-    std::vector<std::vector<Vec2>> outlines;
-    for (Patch& p : patches) {
-        p.derive_frame();
-        std::vector<Vec2> o;
-        for (const Vec3& v : p.outer)
-            o.push_back(p.to_local(v));
-        outlines.push_back(o);
-    }
+    const auto [patches, outlines] = framed_outlines(scaffold);
     const size_t step = std::max<size_t>(1, samples.points.size() / 3000);
     double sum = 0;
     size_t n = 0;

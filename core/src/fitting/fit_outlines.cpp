@@ -2,6 +2,7 @@
 
 #include "../geometry/clipper_paths.hpp"
 #include "../model/millimetres.hpp"
+#include "outline_support.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -18,6 +19,10 @@
 #include "popup/simulation/simulate_fold.hpp"
 
 namespace popup {
+
+using outline_support::first_error;
+using outline_support::placed;
+using outline_support::record_cut;
 namespace {
 
 /// `part` is `prefix`, or `prefix` followed by a number (stacked box end panels: FL1, FL2...).
@@ -27,17 +32,6 @@ bool is_part(const std::string& part, const std::string& prefix)
         return false;
     return std::all_of(part.begin() + long(prefix.size()), part.end(),
                        [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; });
-}
-
-ModelMesh placed(const ModelMesh& model, const Eigen::Matrix4d& m)
-{
-    ModelMesh out;
-    out.source = model.source;
-    out.triangles = model.triangles;
-    out.vertices.reserve(model.vertices.size());
-    for (const Vec3& x : model.vertices)
-        out.vertices.push_back(m.topLeftCorner<3, 3>() * x + m.topRightCorner<3, 1>());
-    return out;
 }
 
 /// One principal part: its patch id and its part name.
@@ -389,25 +383,8 @@ Result<FittedProfile> outline_part(Scaffold& s, const ModelMesh& model, const Fi
         return r;
     }
     const Patch& cut = *s.find_patch(part.patch);
-    for (const Vec3& x : cut.outer)
-        fp.outer.push_back(applied.value.frame.to_frame(x));
-    for (const Loop3& hole : cut.holes) {
-        Loop2 h;
-        for (const Vec3& x : hole)
-            h.push_back(applied.value.frame.to_frame(x));
-        fp.holes.push_back(h);
-    }
-    fp.area = applied.value.area_after;
-    fp.area_before = applied.value.area_before;
+    record_cut(fp, cut, applied.value);
     return r;
-}
-
-std::string first_error(const Diagnostics& d, const std::string& otherwise)
-{
-    for (const Diagnostic& x : d)
-        if (x.severity == Severity::error)
-            return x.message;
-    return otherwise;
 }
 
 } // namespace

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "../sheet_designs.hpp"
 #include "popup/mechanisms/box_fold.hpp"
 #include "popup/mechanisms/step_fold.hpp"
 #include "popup/model/card.hpp"
@@ -16,36 +17,11 @@
 #include "popup/sheets/verify_sheets.hpp"
 
 using namespace popup;
+using popup::fixtures::box;
+using popup::fixtures::must;
+using popup::fixtures::step;
 
 namespace {
-
-MechanismParts must(Result<MechanismParts> r, const std::string& what)
-{
-    if (!r.ok)
-        throw std::runtime_error(what + ": " + r.diagnostics.front().message);
-    return r.value;
-}
-
-BoxFoldParams box(double offset, double width, double depth, double height)
-{
-    BoxFoldParams p;
-    p.offset = offset;
-    p.width = width;
-    p.depth_ground = depth;
-    p.depth_backdrop = depth;
-    p.height = height;
-    return p;
-}
-
-StepFoldParams step(double offset, double width, double run_ground, double run_backdrop)
-{
-    StepFoldParams p;
-    p.offset = offset;
-    p.width = width;
-    p.run_ground = run_ground;
-    p.run_backdrop = run_backdrop;
-    return p;
-}
 
 // The fit's parameters, to the last bit (popup fit of a stepped block, 186 × 136.5 mm card:
 // /tmp/acc/stepped8/report.json): the sheets' directions used to hang on rounding noise. The
