@@ -1,6 +1,7 @@
 // load_animation: an animated character through assimp, read in a child process as load_model
 // reads a model (core/src/io/child_process.hpp).
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -14,6 +15,7 @@
 
 #include "../fitting/model_mesh_bytes.hpp"
 #include "../io/child_process.hpp"
+#include "bvh_root_channels.hpp"
 #include "popup/motion/animation.hpp"
 
 namespace popup {
@@ -470,6 +472,18 @@ Result<Animation> load_animation(const std::string& path, const LoadAnimationOpt
     if (!(options.timeout_s > 0.0))
         return refuse(DiagnosticCode::unreadable_model,
                       "timeout_s = " + std::to_string(options.timeout_s) + ", must be > 0");
+    std::string extension = fs::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    if (extension == ".bvh") {
+        const std::string root = motion::bvh_position_only_root(path);
+        if (!root.empty())
+            return refuse(DiagnosticCode::bad_animation,
+                          "its ROOT joint " + root +
+                              " has only the 3 position channels; assimp 5.2 reads such a root "
+                              "without its motion: export the root with 6 channels (Xposition "
+                              "Yposition Zposition Zrotation Xrotation Yrotation)");
+    }
     std::string bytes;
     const std::string failed = run_in_child(
         [&] {

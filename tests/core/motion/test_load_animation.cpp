@@ -297,6 +297,27 @@ TEST(MotionLoadAnimation, SingleFrameAndBadFilesAreNamedErrors)
               DiagnosticCode::unreadable_model);
 }
 
+TEST(MotionLoadAnimation, ARootWithOnlyPositionChannelsIsRefusedByName)
+{
+    // assimp 5.2 drops such a root's motion (measured: the root stays at the origin while its
+    // frames move it 10 and 20 along x), so the file is refused, naming the joint.
+    const std::string moved = "HIERARCHY\nROOT Pelvis\n{\n  OFFSET 0 0 0\n"
+                              "  CHANNELS 3 Xposition Yposition Zposition\n"
+                              "  JOINT Arm\n  {\n    OFFSET 0 10 0\n"
+                              "    CHANNELS 3 Zrotation Xrotation Yrotation\n"
+                              "    End Site\n    {\n      OFFSET 0 10 0\n    }\n  }\n}\n"
+                              "MOTION\nFrames: 3\nFrame Time: 0.1\n"
+                              "0 0 0 0 0 0\n10 0 0 30 0 0\n20 0 0 60 0 0\n";
+    const Result<Animation> r = load_animation(write("root3.BVH", moved));
+    ASSERT_FALSE(r.ok);
+    EXPECT_EQ(code_of(r), DiagnosticCode::bad_animation);
+    EXPECT_NE(r.diagnostics.front().message.find("ROOT joint Pelvis"), std::string::npos)
+        << r.diagnostics.front().message;
+    EXPECT_NE(r.diagnostics.front().message.find("6 channels"), std::string::npos);
+    // Only the root counts: the arm (6 channels at its root, rotations below) still loads.
+    EXPECT_TRUE(load_animation(write("arm6.bvh", arm_bvh(12))).ok);
+}
+
 TEST(MotionLoadAnimation, GltfRoundTripKeepsBonesWeightsAndMotion)
 {
     const auto scene = strip_scene(true);
