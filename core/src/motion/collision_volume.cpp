@@ -55,45 +55,167 @@ double overlap_depth(const OrientedBox& a, const OrientedBox& b)
     return depth;
 }
 
+namespace {
+
+// Axes fitted to a piece: its plane's normal, the fold's direction laid into that plane (most
+// pieces have edges along the fold), and their cross product. Identity for a degenerate piece.
+Mat3 piece_axes(const std::vector<Vec3>& v)
+{
+    Vec3 normal = Vec3::Zero();
+    for (std::size_t i = 2; i < v.size(); ++i) {
+        const Vec3 n = (v[1] - v[0]).cross(v[i] - v[0]);
+        if (n.squaredNorm() > normal.squaredNorm())
+            normal = n;
+    }
+    if (v.size() < 3 || normal.norm() < 1e-9)
+        return Mat3::Identity();
+    normal.normalize();
+    Vec3 along = Vec3::UnitY() - normal.y() * normal;
+    if (along.norm() < 1e-3)
+        along = (v[1] - v[0]) - (v[1] - v[0]).dot(normal) * normal;
+    along.normalize();
+    Mat3 axes;
+    axes.col(0) = normal;
+    axes.col(1) = along;
+    axes.col(2) = normal.cross(along);
+    return axes;
+}
+
+// The box with the given axes around piece i's vertices at samples [first, last], padded along
+// each axis by half the largest second difference of a vertex at samples [d_first, d_last] and
+// by the clearance.
+OrientedBox piece_box(const std::vector<std::vector<MechanismPart>>& at, std::size_t i, int first,
+                      int last, int d_first, int d_last, const Mat3& axes, double clearance)
+{
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (int j = first; j <= last; ++j)
+        for (const Vec3& x : at[j][i].vertices) {
+            const Vec3 local = axes.transpose() * x;
+            lo = lo.cwiseMin(local);
+            hi = hi.cwiseMax(local);
+        }
+    Vec3 pad = Vec3::Zero();
+    for (int j = d_first; j <= d_last; ++j) {
+        const auto &before = at[j - 1][i].vertices, &here = at[j][i].vertices,
+                   &after = at[j + 1][i].vertices;
+        if (before.size() != here.size() || after.size() != here.size())
+            continue; // the v-box's back corner has no root at some sample: no curve to bound
+        for (std::size_t k = 0; k < here.size(); ++k)
+            pad = pad.cwiseMax(
+                (axes.transpose() * (before[k] - 2 * here[k] + after[k])).cwiseAbs() / 2);
+    }
+    OrientedBox b;
+    b.axes = axes;
+    b.half = (hi - lo) / 2 + pad + Vec3::Constant(clearance);
+    b.centre = axes * ((lo + hi) / 2);
+    return b;
+}
+
+} // namespace
+
 CollisionVolume collision_volume(const MotionMechanism& m, const VolumeOptions& options)
 {
     CollisionVolume v;
-    const int n = std::max(1, options.bands), k = std::max(1, options.samples_per_band);
-    std::vector<Vec3> previous, now;
+    const int n = std::max(1, options.bands), k = std::max(2, options.samples_per_band);
+    const int last = n * k;
+    std::vector<std::vector<MechanismPart>> at(last + 1);
+    for (int j = 0; j <= last; ++j) {
+        // Closed, every x is 0 and the volume holds the limit of x / sin(θ/2) (at 1e-7 rad,
+        // within 1e-12 of it relatively).
+        const double theta = j == 0 ? 1e-7 : M_PI * j / last;
+        at[j] = mechanism_parts(m, theta);
+        const double across = 1.0 / std::sin(theta / 2);
+        for (MechanismPart& part : at[j])
+            for (Vec3& x : part.vertices)
+                x.x() *= across;
+    }
+    const std::size_t pieces = at[0].size();
+    for (const MechanismPart& part : at[0])
+        v.sides.push_back(part.side);
+    v.parts.reserve(n * pieces);
+    v.aligned.reserve(n * pieces);
     for (int band = 0; band < n; ++band) {
-        Eigen::AlignedBox3d box;
-        double chord = 0.0;
-        // A band starts at the angle where the one before ended: its vertices are `previous`.
-        const bool shared = band > 0;
-        if (!shared)
-            previous.clear();
-        for (int i = 0; i <= k; ++i) {
-            const double theta = M_PI * (band + double(i) / k) / n;
-            if (i == 0 && shared)
-                now.swap(previous);
-            else
-                now = mechanism_vertices(m, theta);
-            for (std::size_t j = 0; j < now.size(); ++j) {
-                box.extend(now[j]);
-                if (i > 0 && j < previous.size())
-                    chord = std::max(chord, (now[j] - previous[j]).norm());
-            }
-            previous.swap(now);
+        const int first = band * k, end = first + k;
+        // Second differences at every sample of the band that has neighbours on both sides:
+        // each interval of the band has one at each of its ends.
+        const int d_first = std::max(1, first), d_last = std::min(last - 1, end);
+        Eigen::AlignedBox3d hull;
+        for (std::size_t i = 0; i < pieces; ++i) {
+            const OrientedBox aligned =
+                piece_box(at, i, first, end, d_first, d_last, Mat3::Identity(), options.clearance);
+            v.aligned.push_back(aligned);
+            v.parts.push_back(piece_box(at, i, first, end, d_first, d_last,
+                                        piece_axes(at[first + k / 2][i].vertices),
+                                        options.clearance));
+            hull.extend(aligned.centre - aligned.half);
+            hull.extend(aligned.centre + aligned.half);
         }
         OrientedBox b;
-        b.centre = box.center();
-        b.half = box.sizes() / 2 + Vec3::Constant(0.6 * chord + options.clearance);
+        if (!hull.isEmpty()) {
+            b.centre = hull.center();
+            b.half = hull.sizes() / 2;
+        }
         v.bands.push_back(b);
     }
     return v;
+}
+
+void carry_along(CollisionVolume& volume, const std::vector<Vec3>& offsets)
+{
+    for (std::size_t i = 0; i < volume.sides.size(); ++i)
+        for (const Vec3& t : offsets)
+            if (volume.sides[i] * t.x() < 0)
+                volume.sides[i] = 0;
+    auto carry = [&](OrientedBox& b) {
+        Vec3 lo = -b.half, hi = b.half;
+        for (const Vec3& t : offsets) {
+            const Vec3 local = b.axes.transpose() * t;
+            lo = lo.cwiseMin(local - b.half);
+            hi = hi.cwiseMax(local + b.half);
+        }
+        b.centre += b.axes * ((lo + hi) / 2);
+        b.half = (hi - lo) / 2;
+    };
+    const std::size_t pieces = volume.sides.size();
+    for (std::size_t band = 0; band < volume.bands.size(); ++band) {
+        Eigen::AlignedBox3d hull;
+        for (std::size_t i = 0; i < pieces; ++i) {
+            carry(volume.parts[band * pieces + i]);
+            OrientedBox& b = volume.aligned[band * pieces + i];
+            carry(b);
+            hull.extend(b.centre - b.half);
+            hull.extend(b.centre + b.half);
+        }
+        if (!hull.isEmpty()) {
+            volume.bands[band].centre = hull.center();
+            volume.bands[band].half = hull.sizes() / 2;
+        }
+    }
 }
 
 double collision_depth(const CollisionVolume& a, const CollisionVolume& b)
 {
     double sum = 0.0;
     const std::size_t n = std::min(a.bands.size(), b.bands.size());
-    for (std::size_t k = 0; k < n; ++k)
-        sum += overlap_depth(a.bands[k], b.bands[k]);
+    const std::size_t na = a.sides.size(), nb = b.sides.size();
+    for (std::size_t k = 0; k < n; ++k) {
+        // The whole-band boxes hold every piece's box: apart, no two pieces meet.
+        if (overlap_depth(a.bands[k], b.bands[k]) <= 0)
+            continue;
+        double deepest = 0.0;
+        for (std::size_t i = 0; i < na; ++i)
+            for (std::size_t j = 0; j < nb; ++j) {
+                if (a.sides[i] * b.sides[j] < 0)
+                    continue;
+                // Both boxes of a piece hold it: the pieces share no room when either pair is
+                // apart, and the shallower overlap bounds how deep they can meet.
+                const double d = overlap_depth(a.aligned[k * na + i], b.aligned[k * nb + j]);
+                if (d > deepest)
+                    deepest = std::max(deepest, std::min(d, overlap_depth(a.parts[k * na + i],
+                                                                          b.parts[k * nb + j])));
+            }
+        sum += deepest;
+    }
     return sum;
 }
 

@@ -21,14 +21,25 @@ struct OrientedBox {
 double overlap_depth(const OrientedBox& a, const OrientedBox& b);
 
 /// Collision Bounding Volume (thesis §6.4.2): the room a mechanism's patches may take while the
-/// card closes. One box per band of fold angles (the thesis merges convex hulls over angles; a
-/// band of its own per angle range keeps two mechanisms that pass the same place at different
-/// angles apart). Each box bounds the closed-form vertices at the band's sampled angles, padded
-/// by 0.6 of the largest move of a vertex between two samples (a vertex between samples stays
-/// within half its arc, barely longer than the chord at 5° steps) and by `clearance`. Boxes are
-/// axis-aligned in the card frame (an oriented box with identity axes).
+/// card closes. One set of boxes per band of fold angles (the thesis merges convex hulls over
+/// angles; a band of its own per angle range keeps two mechanisms that pass the same place at
+/// different angles apart). In each band, every piece of paper (mechanism_parts: a patch, or
+/// its part on one side of the fold's plane) gets two boxes, each holding its closed-form
+/// vertices at the band's sampled angles: one axis-aligned, one oriented to the piece's plane at
+/// the band's middle angle. Each box is padded along each of its axes by half the largest second
+/// difference of a vertex over neighbouring samples (which bounds the curve's departure from the
+/// chords between samples) and by `clearance`. A band also has one axis-aligned box around all
+/// its pieces, tested first.
+///
+/// The boxes live in the card frame with x divided by sin(θ/2) at each sample (docs/MATH.md,
+/// "Tight collision volumes"): at a given angle that is a linear map, so pieces whose mapped
+/// boxes are apart are apart; and it takes away the closing card's squeeze (every x → 0), which
+/// would otherwise make every two pieces near the fold overlap in the bands near 0°.
 struct CollisionVolume {
-    std::vector<OrientedBox> bands; ///< band k covers θ in [π k / n, π (k + 1) / n]
+    std::vector<OrientedBox> bands;   ///< band k covers θ in [π k / n, π (k + 1) / n]
+    std::vector<OrientedBox> aligned; ///< band-major: aligned[k * sides.size() + i], piece i
+    std::vector<OrientedBox> parts;   ///< the same pieces' boxes oriented to their planes
+    std::vector<int> sides;           ///< per piece, MechanismPart::side
 };
 
 struct VolumeOptions {
@@ -39,8 +50,15 @@ struct VolumeOptions {
 
 CollisionVolume collision_volume(const MotionMechanism& m, const VolumeOptions& options = {});
 
-/// Σ over bands of the overlap depth of two volumes built with the same options: 0 when they
-/// never share room at the same fold angles.
+/// The room the volume takes when its paper is also carried along each of `offsets` (a merged
+/// patch that carries several parts): each piece's box grows, along its own axes, to hold its
+/// copies moved by each offset; a piece keeps its side only when no offset moves it across.
+void carry_along(CollisionVolume& volume, const std::vector<Vec3>& offsets);
+
+/// Collision depth D_c of eq 6.8 for two volumes built with the same options: Σ over bands of
+/// the deepest overlap of two pieces (the smaller overlap_depth of their aligned and of their
+/// oriented boxes), pieces on opposite sides of the fold's plane excepted. 0 when they never share
+/// room at the same fold angles; in mm, shrinking as they separate.
 double collision_depth(const CollisionVolume& a, const CollisionVolume& b);
 
 } // namespace popup::motion
