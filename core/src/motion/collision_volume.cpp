@@ -81,19 +81,11 @@ Mat3 piece_axes(const std::vector<Vec3>& v)
     return axes;
 }
 
-// The box with the given axes around piece i's vertices at samples [first, last], padded along
-// each axis by half the largest second difference of a vertex at samples [d_first, d_last] and
-// by the clearance.
-OrientedBox piece_box(const std::vector<std::vector<MechanismPart>>& at, std::size_t i, int first,
-                      int last, int d_first, int d_last, const Mat3& axes, double clearance)
+// Half the largest second difference of piece i's vertices at samples [d_first, d_last], along
+// each of `axes`: with the clearance, how far the piece may stray between samples.
+Vec3 piece_pad(const std::vector<std::vector<MechanismPart>>& at, std::size_t i, int d_first,
+               int d_last, const Mat3& axes, double clearance)
 {
-    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-    for (int j = first; j <= last; ++j)
-        for (const Vec3& x : at[j][i].vertices) {
-            const Vec3 local = axes.transpose() * x;
-            lo = lo.cwiseMin(local);
-            hi = hi.cwiseMax(local);
-        }
     Vec3 pad = Vec3::Zero();
     for (int j = d_first; j <= d_last; ++j) {
         const auto &before = at[j - 1][i].vertices, &here = at[j][i].vertices,
@@ -104,11 +96,68 @@ OrientedBox piece_box(const std::vector<std::vector<MechanismPart>>& at, std::si
             pad = pad.cwiseMax(
                 (axes.transpose() * (before[k] - 2 * here[k] + after[k])).cwiseAbs() / 2);
     }
+    return pad + Vec3::Constant(clearance);
+}
+
+// The box with the given axes around piece i's vertices at samples [first, last], padded.
+OrientedBox piece_box(const std::vector<std::vector<MechanismPart>>& at, std::size_t i, int first,
+                      int last, const Vec3& pad, const Mat3& axes)
+{
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (int j = first; j <= last; ++j)
+        for (const Vec3& x : at[j][i].vertices) {
+            const Vec3 local = axes.transpose() * x;
+            lo = lo.cwiseMin(local);
+            hi = hi.cwiseMax(local);
+        }
     OrientedBox b;
     b.axes = axes;
-    b.half = (hi - lo) / 2 + pad + Vec3::Constant(clearance);
+    b.half = (hi - lo) / 2 + pad;
     b.centre = axes * ((lo + hi) / 2);
     return b;
+}
+
+// Overlap of two pieces' padded points on unit axis n (<= 0: n separates them).
+double shadow_overlap(const CollisionVolume& a, std::size_t ia, const CollisionVolume& b,
+                      std::size_t ib, const Vec3& n)
+{
+    double alo = std::numeric_limits<double>::infinity(), ahi = -alo, blo = alo, bhi = -alo;
+    for (int p = a.first[ia]; p < a.first[ia + 1]; ++p) {
+        const double t = n.dot(a.points[p]);
+        alo = std::min(alo, t);
+        ahi = std::max(ahi, t);
+    }
+    for (int p = b.first[ib]; p < b.first[ib + 1]; ++p) {
+        const double t = n.dot(b.points[p]);
+        blo = std::min(blo, t);
+        bhi = std::max(bhi, t);
+    }
+    // A deviation within pad_i along each axis moves a shadow by at most the sum of |n_i| pad_i.
+    const Vec3 m = n.cwiseAbs();
+    return std::min(ahi + m.dot(a.pad[ia]), bhi + m.dot(b.pad[ib])) -
+           std::max(alo - m.dot(a.pad[ia]), blo - m.dot(b.pad[ib]));
+}
+
+// The smallest of `depth` and two pieces' shadow overlaps over the separating-axis candidates of
+// two convex polygons (each plane's normal at the band's middle angle, the crosses of their
+// edges); 0 when one separates them.
+double piece_overlap(const CollisionVolume& a, std::size_t ia, const CollisionVolume& b,
+                     std::size_t ib, double depth)
+{
+    auto test = [&](const Vec3& axis) {
+        const double len = axis.norm();
+        if (len < 1e-9)
+            return true; // parallel edges: the other axes decide
+        depth = std::min(depth, shadow_overlap(a, ia, b, ib, axis / len));
+        return depth > 0;
+    };
+    if (!test(a.parts[ia].axes.col(0)) || !test(b.parts[ib].axes.col(0)))
+        return 0.0;
+    for (int i = a.edge_first[ia]; i < a.edge_first[ia + 1]; ++i)
+        for (int j = b.edge_first[ib]; j < b.edge_first[ib + 1]; ++j)
+            if (!test(a.edges[i].cross(b.edges[j])))
+                return 0.0;
+    return depth;
 }
 
 } // namespace
@@ -134,6 +183,8 @@ CollisionVolume collision_volume(const MotionMechanism& m, const VolumeOptions& 
         v.sides.push_back(part.side);
     v.parts.reserve(n * pieces);
     v.aligned.reserve(n * pieces);
+    v.first.push_back(0);
+    v.edge_first.push_back(0);
     for (int band = 0; band < n; ++band) {
         const int first = band * k, end = first + k;
         // Second differences at every sample of the band that has neighbours on both sides:
@@ -141,14 +192,25 @@ CollisionVolume collision_volume(const MotionMechanism& m, const VolumeOptions& 
         const int d_first = std::max(1, first), d_last = std::min(last - 1, end);
         Eigen::AlignedBox3d hull;
         for (std::size_t i = 0; i < pieces; ++i) {
-            const OrientedBox aligned =
-                piece_box(at, i, first, end, d_first, d_last, Mat3::Identity(), options.clearance);
+            const Vec3 pad = piece_pad(at, i, d_first, d_last, Mat3::Identity(), options.clearance);
+            const OrientedBox aligned = piece_box(at, i, first, end, pad, Mat3::Identity());
+            const std::vector<Vec3>& middle = at[first + k / 2][i].vertices;
+            const Mat3 axes = piece_axes(middle);
             v.aligned.push_back(aligned);
-            v.parts.push_back(piece_box(at, i, first, end, d_first, d_last,
-                                        piece_axes(at[first + k / 2][i].vertices),
-                                        options.clearance));
+            v.parts.push_back(piece_box(at, i, first, end,
+                                        piece_pad(at, i, d_first, d_last, axes, options.clearance),
+                                        axes));
             hull.extend(aligned.centre - aligned.half);
             hull.extend(aligned.centre + aligned.half);
+            for (int j = first; j <= end; ++j)
+                v.points.insert(v.points.end(), at[j][i].vertices.begin(), at[j][i].vertices.end());
+            v.first.push_back(int(v.points.size()));
+            v.pad.push_back(pad);
+            for (std::size_t p = 0; p < middle.size(); ++p)
+                for (std::size_t q = p + 1; q < middle.size(); ++q)
+                    if ((middle[q] - middle[p]).norm() > 1e-9)
+                        v.edges.push_back((middle[q] - middle[p]).normalized());
+            v.edge_first.push_back(int(v.edges.size()));
         }
         OrientedBox b;
         if (!hull.isEmpty()) {
@@ -177,9 +239,18 @@ void carry_along(CollisionVolume& volume, const std::vector<Vec3>& offsets)
         b.half = (hi - lo) / 2;
     };
     const std::size_t pieces = volume.sides.size();
+    std::vector<Vec3> points;
+    std::vector<int> first{0};
     for (std::size_t band = 0; band < volume.bands.size(); ++band) {
         Eigen::AlignedBox3d hull;
         for (std::size_t i = 0; i < pieces; ++i) {
+            const std::size_t at = band * pieces + i;
+            for (int p = volume.first[at]; p < volume.first[at + 1]; ++p) {
+                points.push_back(volume.points[p]);
+                for (const Vec3& t : offsets)
+                    points.push_back(volume.points[p] + t);
+            }
+            first.push_back(int(points.size()));
             carry(volume.parts[band * pieces + i]);
             OrientedBox& b = volume.aligned[band * pieces + i];
             carry(b);
@@ -191,6 +262,8 @@ void carry_along(CollisionVolume& volume, const std::vector<Vec3>& offsets)
             volume.bands[band].half = hull.sizes() / 2;
         }
     }
+    volume.points = std::move(points);
+    volume.first = std::move(first);
 }
 
 double collision_depth(const CollisionVolume& a, const CollisionVolume& b)
@@ -207,12 +280,15 @@ double collision_depth(const CollisionVolume& a, const CollisionVolume& b)
             for (std::size_t j = 0; j < nb; ++j) {
                 if (a.sides[i] * b.sides[j] < 0)
                     continue;
-                // Both boxes of a piece hold it: the pieces share no room when either pair is
-                // apart, and the shallower overlap bounds how deep they can meet.
-                const double d = overlap_depth(a.aligned[k * na + i], b.aligned[k * nb + j]);
+                // Each piece is within both its boxes and its padded points' hull: the pieces
+                // share no room when any of those pairs is apart, and the shallowest overlap
+                // bounds how deep they can meet.
+                const std::size_t ia = k * na + i, ib = k * nb + j;
+                double d = overlap_depth(a.aligned[ia], b.aligned[ib]);
                 if (d > deepest)
-                    deepest = std::max(deepest, std::min(d, overlap_depth(a.parts[k * na + i],
-                                                                          b.parts[k * nb + j])));
+                    d = std::min(d, overlap_depth(a.parts[ia], b.parts[ib]));
+                if (d > deepest)
+                    deepest = std::max(deepest, piece_overlap(a, ia, b, ib, d));
             }
         sum += deepest;
     }

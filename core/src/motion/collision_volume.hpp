@@ -40,11 +40,22 @@ struct CollisionVolume {
     std::vector<OrientedBox> aligned; ///< band-major: aligned[k * sides.size() + i], piece i
     std::vector<OrientedBox> parts;   ///< the same pieces' boxes oriented to their planes
     std::vector<int> sides;           ///< per piece, MechanismPart::side
+    /// The pieces' sampled vertices, band-major like `aligned`: piece i of band k holds
+    /// points[first[k·n + i] .. first[k·n + i + 1]), every sample of the band, and is within
+    /// `pad` (per axis) of their convex hull. Tested when both boxes of two pieces overlap.
+    std::vector<Vec3> points;
+    std::vector<int> first;
+    std::vector<Vec3> pad;
+    /// Directions along the pieces' edges at the band's middle angle: edges[edge_first[k·n + i] ..
+    /// edge_first[k·n + i + 1]), unit. Their crosses, with the planes' normals, are the axes
+    /// that may separate two pieces.
+    std::vector<Vec3> edges;
+    std::vector<int> edge_first;
 };
 
 struct VolumeOptions {
-    int bands = 6;
-    int samples_per_band = 6; ///< intervals per band (7 angles)
+    int bands = 12;
+    int samples_per_band = 3; ///< intervals per band (4 angles)
     double clearance = 0.5;   ///< mm added on every side (paper thickness and round-off)
 };
 
@@ -56,9 +67,11 @@ CollisionVolume collision_volume(const MotionMechanism& m, const VolumeOptions& 
 void carry_along(CollisionVolume& volume, const std::vector<Vec3>& offsets);
 
 /// Collision depth D_c of eq 6.8 for two volumes built with the same options: Σ over bands of
-/// the deepest overlap of two pieces (the smaller overlap_depth of their aligned and of their
-/// oriented boxes), pieces on opposite sides of the fold's plane excepted. 0 when they never share
-/// room at the same fold angles; in mm, shrinking as they separate.
+/// the deepest overlap of two pieces, pieces on opposite sides of the fold's plane excepted. The
+/// overlap of two pieces is the smallest of their aligned boxes' overlap_depth, their oriented
+/// boxes', and the overlap of their padded sampled points' shadows on the separating-axis
+/// candidates of two convex polygons (both planes' normals, crosses of their edges). 0 when they
+/// never share room at the same fold angles; in mm, shrinking as they separate.
 double collision_depth(const CollisionVolume& a, const CollisionVolume& b);
 
 } // namespace popup::motion

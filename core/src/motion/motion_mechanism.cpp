@@ -268,11 +268,18 @@ std::vector<MechanismPart> mechanism_parts(const MotionMechanism& m, double thet
         const HorizontalTranslationParams h = horizontal_params(m);
         const Vec2 A = h.run_ground * g, D = h.run_backdrop * b, C = A + D;
         const Vec2 P = h.reach * C / C.norm();
-        const int nose_side = h.run_ground >= h.run_backdrop ? +1 : 0;
+        // With a ≥ b the tread crosses x = 0 at Q = D + (b/a)(C − D) = b(g + b) = (0, 2b cos δ):
+        // it is cut there into a backdrop and a ground piece.
         const double y0 = h.offset, y1 = h.offset + h.width;
-        parts = {{{at(A, y0), at(C, y0), at(A, y1), at(C, y1)}, nose_side},
-                 {{at(D, y0), at(C, y0), at(D, y1), at(C, y1)}, 0},
-                 {{at(Vec2(0, 0), y0), at(P, y0), at(Vec2(0, 0), y1), at(P, y1)}, nose_side}};
+        auto strip = [&](const Vec2& p, const Vec2& q, int side) {
+            return MechanismPart{{at(p, y0), at(q, y0), at(p, y1), at(q, y1)}, side};
+        };
+        if (h.run_ground >= h.run_backdrop) {
+            const Vec2 Q(0, 2 * h.run_backdrop * std::cos(d));
+            parts = {strip(A, C, +1), strip(D, Q, -1), strip(Q, C, +1), strip(Vec2(0, 0), P, +1)};
+        } else {
+            parts = {strip(A, C, 0), strip(D, C, 0), strip(Vec2(0, 0), P, 0)};
+        }
         break;
     }
     case MotionKind::diagonal: {

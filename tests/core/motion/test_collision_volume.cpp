@@ -226,26 +226,5 @@ TEST(CollisionVolume, DepthOfTwoCopiesAlongTheFoldIsTheirOverlapAlongIt)
     EXPECT_EQ(collision_depth(va, collision_volume(b, options)), 0.0);
 }
 
-#include <iostream>
-TEST(CollisionVolume, ZZDebug)
-{
-    const auto four = rig_four_mechanisms();
-    const CollisionVolume a = collision_volume(four[0]), b = collision_volume(four[2]);
-    const std::size_t na = a.sides.size(), nb = b.sides.size();
-    for (std::size_t k = 0; k < a.bands.size(); ++k)
-        for (std::size_t i = 0; i < na; ++i)
-            for (std::size_t j = 0; j < nb; ++j) {
-                const OrientedBox &p = a.parts[k * na + i], &q = b.parts[k * nb + j];
-                const double d = overlap_depth(p, q);
-                if (d > 0)
-                    std::cout << "band " << k << " rot piece " << i << " side " << a.sides[i]
-                              << " hor piece " << j << " side " << b.sides[j] << " depth " << d
-                              << "\n  rot c " << p.centre.transpose() << " half "
-                              << p.half.transpose() << "\n  axes\n"
-                              << p.axes << "\n  hor c " << q.centre.transpose() << " half "
-                              << q.half.transpose() << "\n axes\n"
-                              << q.axes << "\n";
-            }
-}
 } // namespace
 } // namespace popup::motion
