@@ -81,42 +81,6 @@ Mat3 piece_axes(const std::vector<Vec3>& v)
     return axes;
 }
 
-// Half the largest second difference of piece i's vertices at samples [d_first, d_last], along
-// each of `axes`: with the clearance, how far the piece may stray between samples.
-Vec3 piece_pad(const std::vector<std::vector<MechanismPart>>& at, std::size_t i, int d_first,
-               int d_last, const Mat3& axes, double clearance)
-{
-    Vec3 pad = Vec3::Zero();
-    for (int j = d_first; j <= d_last; ++j) {
-        const auto &before = at[j - 1][i].vertices, &here = at[j][i].vertices,
-                   &after = at[j + 1][i].vertices;
-        if (before.size() != here.size() || after.size() != here.size())
-            continue; // the v-box's back corner has no root at some sample: no curve to bound
-        for (std::size_t k = 0; k < here.size(); ++k)
-            pad = pad.cwiseMax(
-                (axes.transpose() * (before[k] - 2 * here[k] + after[k])).cwiseAbs() / 2);
-    }
-    return pad + Vec3::Constant(clearance);
-}
-
-// The box with the given axes around piece i's vertices at samples [first, last], padded.
-OrientedBox piece_box(const std::vector<std::vector<MechanismPart>>& at, std::size_t i, int first,
-                      int last, const Vec3& pad, const Mat3& axes)
-{
-    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-    for (int j = first; j <= last; ++j)
-        for (const Vec3& x : at[j][i].vertices) {
-            const Vec3 local = axes.transpose() * x;
-            lo = lo.cwiseMin(local);
-            hi = hi.cwiseMax(local);
-        }
-    OrientedBox b;
-    b.axes = axes;
-    b.half = (hi - lo) / 2 + pad;
-    b.centre = axes * ((lo + hi) / 2);
-    return b;
-}
-
 // Overlap of two pieces' padded points on unit axis n (<= 0: n separates them).
 double shadow_overlap(const CollisionVolume& a, std::size_t ia, const CollisionVolume& b,
                       std::size_t ib, const Vec3& n)
@@ -167,12 +131,15 @@ CollisionVolume collision_volume(const MotionMechanism& m, const VolumeOptions& 
     CollisionVolume v;
     const int n = std::max(1, options.bands), k = std::max(2, options.samples_per_band);
     const int last = n * k;
-    std::vector<std::vector<MechanismPart>> at(last + 1);
+    // The samples' pieces, kept per thread from call to call: the annealing builds a volume
+    // per move, and allocating them each time doubled its cost.
+    thread_local std::vector<std::vector<MechanismPart>> at;
+    at.resize(last + 1);
     for (int j = 0; j <= last; ++j) {
         // Closed, every x is 0 and the volume holds the limit of x / sin(θ/2) (at 1e-7 rad,
         // within 1e-12 of it relatively).
         const double theta = j == 0 ? 1e-7 : M_PI * j / last;
-        at[j] = mechanism_parts(m, theta);
+        mechanism_parts(m, theta, at[j]);
         const double across = 1.0 / std::sin(theta / 2);
         for (MechanismPart& part : at[j])
             for (Vec3& x : part.vertices)
@@ -181,10 +148,29 @@ CollisionVolume collision_volume(const MotionMechanism& m, const VolumeOptions& 
     const std::size_t pieces = at[0].size();
     for (const MechanismPart& part : at[0])
         v.sides.push_back(part.side);
+    // Half the largest second difference of each piece's vertices at each inner sample, per
+    // axis: how far the piece may stray from the chords next to that sample.
+    thread_local std::vector<Vec3> bend;
+    bend.assign((last + 1) * pieces, Vec3::Zero());
+    for (int j = 1; j < last; ++j)
+        for (std::size_t i = 0; i < pieces; ++i) {
+            const auto &before = at[j - 1][i].vertices, &here = at[j][i].vertices,
+                       &after = at[j + 1][i].vertices;
+            if (before.size() != here.size() || after.size() != here.size())
+                continue; // the v-box's back corner has no root at some sample: no curve
+            Vec3& b = bend[j * pieces + i];
+            for (std::size_t q = 0; q < here.size(); ++q)
+                b = b.cwiseMax((before[q] - 2 * here[q] + after[q]).cwiseAbs() / 2);
+        }
     v.parts.reserve(n * pieces);
     v.aligned.reserve(n * pieces);
+    v.pad.reserve(n * pieces);
+    v.points.reserve(n * (k + 1) * pieces * 4);
+    v.first.reserve(n * pieces + 1);
     v.first.push_back(0);
+    v.edge_first.reserve(n * pieces + 1);
     v.edge_first.push_back(0);
+    const Vec3 clearance = Vec3::Constant(options.clearance);
     for (int band = 0; band < n; ++band) {
         const int first = band * k, end = first + k;
         // Second differences at every sample of the band that has neighbours on both sides:
@@ -192,24 +178,50 @@ CollisionVolume collision_volume(const MotionMechanism& m, const VolumeOptions& 
         const int d_first = std::max(1, first), d_last = std::min(last - 1, end);
         Eigen::AlignedBox3d hull;
         for (std::size_t i = 0; i < pieces; ++i) {
-            const Vec3 pad = piece_pad(at, i, d_first, d_last, Mat3::Identity(), options.clearance);
-            const OrientedBox aligned = piece_box(at, i, first, end, pad, Mat3::Identity());
-            const std::vector<Vec3>& middle = at[first + k / 2][i].vertices;
-            const Mat3 axes = piece_axes(middle);
-            v.aligned.push_back(aligned);
-            v.parts.push_back(piece_box(at, i, first, end,
-                                        piece_pad(at, i, d_first, d_last, axes, options.clearance),
-                                        axes));
-            hull.extend(aligned.centre - aligned.half);
-            hull.extend(aligned.centre + aligned.half);
+            Vec3 bent = Vec3::Zero();
+            for (int j = d_first; j <= d_last; ++j)
+                bent = bent.cwiseMax(bend[j * pieces + i]);
+            const int from = int(v.points.size());
             for (int j = first; j <= end; ++j)
                 v.points.insert(v.points.end(), at[j][i].vertices.begin(), at[j][i].vertices.end());
             v.first.push_back(int(v.points.size()));
-            v.pad.push_back(pad);
+            const std::vector<Vec3>& middle = at[first + k / 2][i].vertices;
+            const Mat3 axes = piece_axes(middle);
+            Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+            Vec3 olo = lo, ohi = hi;
+            for (int p = from; p < v.first.back(); ++p) {
+                lo = lo.cwiseMin(v.points[p]);
+                hi = hi.cwiseMax(v.points[p]);
+                const Vec3 local = axes.transpose() * v.points[p];
+                olo = olo.cwiseMin(local);
+                ohi = ohi.cwiseMax(local);
+            }
+            OrientedBox aligned;
+            aligned.centre = (lo + hi) / 2;
+            aligned.half = (hi - lo) / 2 + bent + clearance;
+            // Along an oriented axis a, |a · d| <= Σ |a_i| |d_i|: the world pads bound it.
+            OrientedBox fitted;
+            fitted.axes = axes;
+            fitted.centre = axes * ((olo + ohi) / 2);
+            fitted.half = (ohi - olo) / 2 + axes.cwiseAbs().transpose() * bent + clearance;
+            v.aligned.push_back(aligned);
+            v.parts.push_back(fitted);
+            v.pad.push_back(bent + clearance);
+            hull.extend(aligned.centre - aligned.half);
+            hull.extend(aligned.centre + aligned.half);
             for (std::size_t p = 0; p < middle.size(); ++p)
-                for (std::size_t q = p + 1; q < middle.size(); ++q)
-                    if ((middle[q] - middle[p]).norm() > 1e-9)
-                        v.edges.push_back((middle[q] - middle[p]).normalized());
+                for (std::size_t q = p + 1; q < middle.size(); ++q) {
+                    const Vec3 e = middle[q] - middle[p];
+                    if (e.norm() <= 1e-9)
+                        continue;
+                    // A strip's opposite edges are parallel: one direction each.
+                    const Vec3 u = e.normalized();
+                    bool parallel = false;
+                    for (int f = v.edge_first.back(); f < int(v.edges.size()); ++f)
+                        parallel = parallel || std::abs(v.edges[f].dot(u)) > 1 - 1e-12;
+                    if (!parallel)
+                        v.edges.push_back(u);
+                }
             v.edge_first.push_back(int(v.edges.size()));
         }
         OrientedBox b;

@@ -54,8 +54,8 @@ struct CollisionVolume {
 };
 
 struct VolumeOptions {
-    int bands = 12;
-    int samples_per_band = 3; ///< intervals per band (4 angles)
+    int bands = 8;
+    int samples_per_band = 2; ///< intervals per band (3 angles)
     double clearance = 0.5;   ///< mm added on every side (paper thickness and round-off)
 };
 

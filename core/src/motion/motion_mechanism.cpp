@@ -224,11 +224,20 @@ Vec3 mechanism_point(const MotionMechanism& m, double theta)
     return Vec3::Zero();
 }
 
-std::vector<MechanismPart> mechanism_parts(const MotionMechanism& m, double theta)
+void mechanism_parts(const MotionMechanism& m, double theta, std::vector<MechanismPart>& out)
 {
     const double d = theta / 2;
     const Vec2 g = ground_dir(theta), b = backdrop_dir(theta);
-    std::vector<MechanismPart> parts;
+    // Pieces written over `out`'s, keeping their storage (the volumes call this in a loop).
+    std::size_t count = 0;
+    auto add = [&](int side, std::initializer_list<Vec3> vertices) -> std::vector<Vec3>& {
+        if (count == out.size())
+            out.emplace_back();
+        MechanismPart& part = out[count++];
+        part.side = side;
+        part.vertices.assign(vertices);
+        return part.vertices;
+    };
     switch (m.kind) {
     case MotionKind::rotation: {
         // O, S, R, S' and the arm's tip P (docs/MATH.md, Rotation). The arm's wing O-S-P is cut
@@ -239,7 +248,9 @@ std::vector<MechanismPart> mechanism_parts(const MotionMechanism& m, double thet
         const Vec3 S(w * std::sin(d), r.offset + l, w * std::cos(d));
         const Vec3 Sb(-w * std::sin(d), r.offset + l, w * std::cos(d));
         const Vec3 R(0, r.offset + l * std::cos(t), l * std::sin(t));
-        parts = {{{O, S, R}, +1}, {{O, R, rotation_arm_tip(r, theta)}, -1}, {{O, R, Sb}, -1}};
+        add(+1, {O, S, R});
+        add(-1, {O, R, rotation_arm_tip(r, theta)});
+        add(-1, {O, R, Sb});
         break;
     }
     case MotionKind::vertical: {
@@ -254,12 +265,14 @@ std::vector<MechanismPart> mechanism_parts(const MotionMechanism& m, double thet
         const Vec3 Sg = at(across * g, p.offset + along), Sb = at(across * b, p.offset + along);
         const Vec3 Ft = v_box_front_corner(p, theta);
         const Vec3 lift = Ft - F;
-        MechanismPart top_g{{Ft, Sg + lift}, +1}, top_b{{Ft, Sb + lift}, -1};
-        for (const Vec3& q : trilaterate(Ft, Sg + lift, Sb + lift, 2 * along, p.side, p.side)) {
-            top_g.vertices.push_back(q);
-            top_b.vertices.push_back(q);
-        }
-        parts = {{{F, Sg, Sg + lift, Ft}, +1}, {{F, Sb, Sb + lift, Ft}, -1}, top_g, top_b};
+        add(+1, {F, Sg, Sg + lift, Ft});
+        add(-1, {F, Sb, Sb + lift, Ft});
+        const std::vector<Vec3> corner =
+            trilaterate(Ft, Sg + lift, Sb + lift, 2 * along, p.side, p.side);
+        add(+1, {Ft, Sg + lift})
+            .insert(out[count - 1].vertices.end(), corner.begin(), corner.end());
+        add(-1, {Ft, Sb + lift})
+            .insert(out[count - 1].vertices.end(), corner.begin(), corner.end());
         break;
     }
     case MotionKind::horizontal: {
@@ -272,13 +285,18 @@ std::vector<MechanismPart> mechanism_parts(const MotionMechanism& m, double thet
         // it is cut there into a backdrop and a ground piece.
         const double y0 = h.offset, y1 = h.offset + h.width;
         auto strip = [&](const Vec2& p, const Vec2& q, int side) {
-            return MechanismPart{{at(p, y0), at(q, y0), at(p, y1), at(q, y1)}, side};
+            add(side, {at(p, y0), at(q, y0), at(p, y1), at(q, y1)});
         };
         if (h.run_ground >= h.run_backdrop) {
             const Vec2 Q(0, 2 * h.run_backdrop * std::cos(d));
-            parts = {strip(A, C, +1), strip(D, Q, -1), strip(Q, C, +1), strip(Vec2(0, 0), P, +1)};
+            strip(A, C, +1);
+            strip(D, Q, -1);
+            strip(Q, C, +1);
+            strip(Vec2(0, 0), P, +1);
         } else {
-            parts = {strip(A, C, 0), strip(D, C, 0), strip(Vec2(0, 0), P, 0)};
+            strip(A, C, 0);
+            strip(D, C, 0);
+            strip(Vec2(0, 0), P, 0);
         }
         break;
     }
@@ -288,22 +306,18 @@ std::vector<MechanismPart> mechanism_parts(const MotionMechanism& m, double thet
         const VFoldParams vf = diagonal_v_fold(m);
         const double X = vf.run * std::sin(vf.hinge_angle), Y = vf.run * std::cos(vf.hinge_angle);
         const Vec3 O(0, vf.offset, 0), tip = v_fold_tip(vf, M_PI, theta);
-        parts = {{{O, Vec3(X * std::sin(d), vf.offset + Y, X * std::cos(d)), tip}, +1},
-                 {{O, Vec3(-X * std::sin(d), vf.offset + Y, X * std::cos(d)), tip}, -1}};
+        add(+1, {O, Vec3(X * std::sin(d), vf.offset + Y, X * std::cos(d)), tip});
+        add(-1, {O, Vec3(-X * std::sin(d), vf.offset + Y, X * std::cos(d)), tip});
         const StepFoldParams s = diagonal_step(m);
         const BasePatchPair wings = v_fold_wings(vf, M_PI, theta);
         const Vec2 A = s.run_ground * ground_dir(wings.opening);
         const Vec2 D = s.run_backdrop * backdrop_dir(wings.opening);
         const Vec2 C = A + D;
-        MechanismPart riser, tread;
-        for (double y : {s.offset, s.offset + s.width}) {
-            riser.vertices.push_back(wings.to_world(A.x(), y, A.y()));
-            riser.vertices.push_back(wings.to_world(C.x(), y, C.y()));
-            tread.vertices.push_back(wings.to_world(D.x(), y, D.y()));
-            tread.vertices.push_back(wings.to_world(C.x(), y, C.y()));
-        }
-        parts.push_back(riser);
-        parts.push_back(tread);
+        const double y0 = s.offset, y1 = s.offset + s.width;
+        add(0, {wings.to_world(A.x(), y0, A.y()), wings.to_world(C.x(), y0, C.y()),
+                wings.to_world(A.x(), y1, A.y()), wings.to_world(C.x(), y1, C.y())});
+        add(0, {wings.to_world(D.x(), y0, D.y()), wings.to_world(C.x(), y0, C.y()),
+                wings.to_world(D.x(), y1, D.y()), wings.to_world(C.x(), y1, C.y())});
         break;
     }
     case MotionKind::stationary: {
@@ -315,21 +329,30 @@ std::vector<MechanismPart> mechanism_parts(const MotionMechanism& m, double thet
         const Vec2 top(0, c);
         const double y0 = f.offset, y1 = f.offset + f.width;
         auto strip = [&](const Vec2& p, const Vec2& q, int side) {
-            return MechanismPart{{at(p, y0), at(q, y0), at(p, y1), at(q, y1)}, side};
+            add(side, {at(p, y0), at(q, y0), at(p, y1), at(q, y1)});
         };
-        parts = {strip(Vec2(0, 0), top, 0), strip(s * g, top + s * g, +1),
-                 strip(s * b, top + s * b, -1), strip(top, top + reach * g, +1),
-                 strip(top, top + reach * b, -1)};
+        strip(Vec2(0, 0), top, 0);
+        strip(s * g, top + s * g, +1);
+        strip(s * b, top + s * b, -1);
+        strip(top, top + reach * g, +1);
+        strip(top, top + reach * b, -1);
         const double out = s * std::cos(d);
         for (double y : {y0, y1}) {
             const double crease = y == y0 ? y0 - out : y1 + out;
             const Vec3 foot(0, crease, out), head(0, crease, out + c);
-            parts.push_back({{at(s * g, y), at(top + s * g, y), foot, head}, +1});
-            parts.push_back({{at(s * b, y), at(top + s * b, y), foot, head}, -1});
+            add(+1, {at(s * g, y), at(top + s * g, y), foot, head});
+            add(-1, {at(s * b, y), at(top + s * b, y), foot, head});
         }
         break;
     }
     }
+    out.resize(count);
+}
+
+std::vector<MechanismPart> mechanism_parts(const MotionMechanism& m, double theta)
+{
+    std::vector<MechanismPart> parts;
+    mechanism_parts(m, theta, parts);
     return parts;
 }
 

@@ -65,6 +65,8 @@ struct MechanismPart {
 /// that do not depend on theta (for the collision volumes). The vertical's top halves carry both
 /// roots of their back corner (conservative).
 std::vector<MechanismPart> mechanism_parts(const MotionMechanism& m, double theta);
+/// The same into `out`, reusing its storage (no allocation once it has held them).
+void mechanism_parts(const MotionMechanism& m, double theta, std::vector<MechanismPart>& out);
 
 /// Every patch vertex of the mechanism at theta, in closed form: the pieces' vertices together
 /// (a vertex shared by two pieces appears once per piece).
