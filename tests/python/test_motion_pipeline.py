@@ -265,15 +265,6 @@ def test_synthetic_rig_recovers_its_mechanism(name):
         assert np.asarray(arm.achieved[-1]) == pytest.approx(ident["open"], abs=ONE_PERCENT)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="the four known mechanisms collide under the search's collision volumes (rotation "
-    "and horizontal 12.7 mm: the arm's tip dips to y = 162.4 mm, inside the extruding patch's "
-    "band up to 164 mm, in the 0-60° boxes; vertical and horizontal 3.6 mm: the chord padding "
-    "near 180° eats their 3 mm gap) though the simulator accepts them together, so the search "
-    "moves them off their paths or maps the vertical and diagonal chains to rotation arms "
-    "(docs/DESIGN.md, Synthetic rigs)",
-)
 def test_four_mechanisms_on_one_rig_are_all_recovered():
     m = meta("rig_four")
     result = design("rig_four")
