@@ -57,9 +57,9 @@ double overlap_depth(const OrientedBox& a, const OrientedBox& b)
 
 namespace {
 
-// Axes fitted to a piece: its plane's normal, the fold's direction laid into that plane (most
-// pieces have edges along the fold), and their cross product. Identity for a degenerate piece.
-Mat3 piece_axes(const std::vector<Vec3>& v)
+// The unit normal of a piece's plane (the largest cross of two edges from its first vertex);
+// zero for a degenerate piece (no axis to test).
+Vec3 piece_normal(const std::vector<Vec3>& v)
 {
     Vec3 normal = Vec3::Zero();
     for (std::size_t i = 2; i < v.size(); ++i) {
@@ -67,18 +67,7 @@ Mat3 piece_axes(const std::vector<Vec3>& v)
         if (n.squaredNorm() > normal.squaredNorm())
             normal = n;
     }
-    if (v.size() < 3 || normal.norm() < 1e-9)
-        return Mat3::Identity();
-    normal.normalize();
-    Vec3 along = Vec3::UnitY() - normal.y() * normal;
-    if (along.norm() < 1e-3)
-        along = (v[1] - v[0]) - (v[1] - v[0]).dot(normal) * normal;
-    along.normalize();
-    Mat3 axes;
-    axes.col(0) = normal;
-    axes.col(1) = along;
-    axes.col(2) = normal.cross(along);
-    return axes;
+    return normal.norm() < 1e-9 ? Vec3::Zero() : Vec3(normal.normalized());
 }
 
 // Overlap of two pieces' padded points on unit axis n (<= 0: n separates them).
@@ -115,7 +104,7 @@ double piece_overlap(const CollisionVolume& a, std::size_t ia, const CollisionVo
         depth = std::min(depth, shadow_overlap(a, ia, b, ib, axis / len));
         return depth > 0;
     };
-    if (!test(a.parts[ia].axes.col(0)) || !test(b.parts[ib].axes.col(0)))
+    if (!test(a.normals[ia]) || !test(b.normals[ib]))
         return 0.0;
     for (int i = a.edge_first[ia]; i < a.edge_first[ia + 1]; ++i)
         for (int j = b.edge_first[ib]; j < b.edge_first[ib + 1]; ++j)
@@ -162,7 +151,7 @@ CollisionVolume collision_volume(const MotionMechanism& m, const VolumeOptions& 
             for (std::size_t q = 0; q < here.size(); ++q)
                 b = b.cwiseMax((before[q] - 2 * here[q] + after[q]).cwiseAbs() / 2);
         }
-    v.parts.reserve(n * pieces);
+    v.normals.reserve(n * pieces);
     v.aligned.reserve(n * pieces);
     v.pad.reserve(n * pieces);
     v.points.reserve(n * (k + 1) * pieces * 4);
@@ -186,26 +175,16 @@ CollisionVolume collision_volume(const MotionMechanism& m, const VolumeOptions& 
                 v.points.insert(v.points.end(), at[j][i].vertices.begin(), at[j][i].vertices.end());
             v.first.push_back(int(v.points.size()));
             const std::vector<Vec3>& middle = at[first + k / 2][i].vertices;
-            const Mat3 axes = piece_axes(middle);
             Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-            Vec3 olo = lo, ohi = hi;
             for (int p = from; p < v.first.back(); ++p) {
                 lo = lo.cwiseMin(v.points[p]);
                 hi = hi.cwiseMax(v.points[p]);
-                const Vec3 local = axes.transpose() * v.points[p];
-                olo = olo.cwiseMin(local);
-                ohi = ohi.cwiseMax(local);
             }
             OrientedBox aligned;
             aligned.centre = (lo + hi) / 2;
             aligned.half = (hi - lo) / 2 + bent + clearance;
-            // Along an oriented axis a, |a · d| <= Σ |a_i| |d_i|: the world pads bound it.
-            OrientedBox fitted;
-            fitted.axes = axes;
-            fitted.centre = axes * ((olo + ohi) / 2);
-            fitted.half = (ohi - olo) / 2 + axes.cwiseAbs().transpose() * bent + clearance;
             v.aligned.push_back(aligned);
-            v.parts.push_back(fitted);
+            v.normals.push_back(piece_normal(middle));
             v.pad.push_back(bent + clearance);
             hull.extend(aligned.centre - aligned.half);
             hull.extend(aligned.centre + aligned.half);
@@ -263,7 +242,6 @@ void carry_along(CollisionVolume& volume, const std::vector<Vec3>& offsets)
                     points.push_back(volume.points[p] + t);
             }
             first.push_back(int(points.size()));
-            carry(volume.parts[band * pieces + i]);
             OrientedBox& b = volume.aligned[band * pieces + i];
             carry(b);
             hull.extend(b.centre - b.half);
@@ -278,6 +256,17 @@ void carry_along(CollisionVolume& volume, const std::vector<Vec3>& offsets)
     volume.first = std::move(first);
 }
 
+namespace {
+
+// overlap_depth of two axis-aligned boxes, without checking that they are.
+double aligned_overlap(const OrientedBox& a, const OrientedBox& b)
+{
+    const double overlap = (a.half + b.half - (b.centre - a.centre).cwiseAbs()).minCoeff();
+    return overlap > 0 ? overlap : 0.0;
+}
+
+} // namespace
+
 double collision_depth(const CollisionVolume& a, const CollisionVolume& b)
 {
     double sum = 0.0;
@@ -285,7 +274,7 @@ double collision_depth(const CollisionVolume& a, const CollisionVolume& b)
     const std::size_t na = a.sides.size(), nb = b.sides.size();
     for (std::size_t k = 0; k < n; ++k) {
         // The whole-band boxes hold every piece's box: apart, no two pieces meet.
-        if (overlap_depth(a.bands[k], b.bands[k]) <= 0)
+        if (aligned_overlap(a.bands[k], b.bands[k]) <= 0)
             continue;
         double deepest = 0.0;
         for (std::size_t i = 0; i < na; ++i)
@@ -296,9 +285,7 @@ double collision_depth(const CollisionVolume& a, const CollisionVolume& b)
                 // share no room when any of those pairs is apart, and the shallowest overlap
                 // bounds how deep they can meet.
                 const std::size_t ia = k * na + i, ib = k * nb + j;
-                double d = overlap_depth(a.aligned[ia], b.aligned[ib]);
-                if (d > deepest)
-                    d = std::min(d, overlap_depth(a.parts[ia], b.parts[ib]));
+                double d = aligned_overlap(a.aligned[ia], b.aligned[ib]);
                 if (d > deepest)
                     deepest = std::max(deepest, piece_overlap(a, ia, b, ib, d));
             }
