@@ -70,25 +70,34 @@ Vec3 piece_normal(const std::vector<Vec3>& v)
     return normal.norm() < 1e-9 ? Vec3::Zero() : Vec3(normal.normalized());
 }
 
-// Overlap of two pieces' padded points on unit axis n (<= 0: n separates them).
+// The shadow of piece i of v on unit axis n: its points', grown by its pad and swept by the
+// offsets it is carried along.
+std::pair<double, double> shadow(const CollisionVolume& v, std::size_t i, const Vec3& n)
+{
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (int p = v.first[i]; p < v.first[i + 1]; ++p) {
+        const double t = n.dot(v.points[p]);
+        lo = std::min(lo, t);
+        hi = std::max(hi, t);
+    }
+    // A deviation within pad_i along each axis moves a shadow by at most the sum of |n_i| pad_i;
+    // the hull of the points moved by offsets t has the shadow moved by n·t.
+    const double pad = n.cwiseAbs().dot(v.pad[i]);
+    double tlo = 0.0, thi = 0.0;
+    for (const Vec3& t : v.carried) {
+        tlo = std::min(tlo, n.dot(t));
+        thi = std::max(thi, n.dot(t));
+    }
+    return {lo - pad + tlo, hi + pad + thi};
+}
+
+// Overlap of two pieces' shadows on unit axis n (<= 0: n separates them).
 double shadow_overlap(const CollisionVolume& a, std::size_t ia, const CollisionVolume& b,
                       std::size_t ib, const Vec3& n)
 {
-    double alo = std::numeric_limits<double>::infinity(), ahi = -alo, blo = alo, bhi = -alo;
-    for (int p = a.first[ia]; p < a.first[ia + 1]; ++p) {
-        const double t = n.dot(a.points[p]);
-        alo = std::min(alo, t);
-        ahi = std::max(ahi, t);
-    }
-    for (int p = b.first[ib]; p < b.first[ib + 1]; ++p) {
-        const double t = n.dot(b.points[p]);
-        blo = std::min(blo, t);
-        bhi = std::max(bhi, t);
-    }
-    // A deviation within pad_i along each axis moves a shadow by at most the sum of |n_i| pad_i.
-    const Vec3 m = n.cwiseAbs();
-    return std::min(ahi + m.dot(a.pad[ia]), bhi + m.dot(b.pad[ib])) -
-           std::max(alo - m.dot(a.pad[ia]), blo - m.dot(b.pad[ib]));
+    const auto [alo, ahi] = shadow(a, ia, n);
+    const auto [blo, bhi] = shadow(b, ib, n);
+    return std::min(ahi, bhi) - std::max(alo, blo);
 }
 
 // The smallest of `depth` and two pieces' shadow overlaps over the separating-axis candidates of
@@ -188,6 +197,10 @@ CollisionVolume collision_volume(const MotionMechanism& m, const VolumeOptions& 
             v.pad.push_back(bent + clearance);
             hull.extend(aligned.centre - aligned.half);
             hull.extend(aligned.centre + aligned.half);
+            // Every two vertices' direction: the outline's edges and, for four or more
+            // vertices, its diagonals (testing only the outline's edges changed the search's
+            // floating-point path enough that the incremental search no longer followed the full
+            // re-evaluation; Annealing.IncrementalEvaluationFollowsTheFullReevaluation).
             for (std::size_t p = 0; p < middle.size(); ++p)
                 for (std::size_t q = p + 1; q < middle.size(); ++q) {
                     const Vec3 e = middle[q] - middle[p];
@@ -230,18 +243,10 @@ void carry_along(CollisionVolume& volume, const std::vector<Vec3>& offsets)
         b.half = (hi - lo) / 2;
     };
     const std::size_t pieces = volume.sides.size();
-    std::vector<Vec3> points;
-    std::vector<int> first{0};
+    volume.carried.insert(volume.carried.end(), offsets.begin(), offsets.end());
     for (std::size_t band = 0; band < volume.bands.size(); ++band) {
         Eigen::AlignedBox3d hull;
         for (std::size_t i = 0; i < pieces; ++i) {
-            const std::size_t at = band * pieces + i;
-            for (int p = volume.first[at]; p < volume.first[at + 1]; ++p) {
-                points.push_back(volume.points[p]);
-                for (const Vec3& t : offsets)
-                    points.push_back(volume.points[p] + t);
-            }
-            first.push_back(int(points.size()));
             OrientedBox& b = volume.aligned[band * pieces + i];
             carry(b);
             hull.extend(b.centre - b.half);
@@ -252,8 +257,6 @@ void carry_along(CollisionVolume& volume, const std::vector<Vec3>& offsets)
             volume.bands[band].half = hull.sizes() / 2;
         }
     }
-    volume.points = std::move(points);
-    volume.first = std::move(first);
 }
 
 namespace {
@@ -272,23 +275,39 @@ double collision_depth(const CollisionVolume& a, const CollisionVolume& b)
     double sum = 0.0;
     const std::size_t n = std::min(a.bands.size(), b.bands.size());
     const std::size_t na = a.sides.size(), nb = b.sides.size();
+    struct Pair {
+        double boxes;
+        std::size_t ia, ib;
+    };
+    thread_local std::vector<Pair> pairs;
     for (std::size_t k = 0; k < n; ++k) {
         // The whole-band boxes hold every piece's box: apart, no two pieces meet.
         if (aligned_overlap(a.bands[k], b.bands[k]) <= 0)
             continue;
-        double deepest = 0.0;
+        pairs.clear();
         for (std::size_t i = 0; i < na; ++i)
             for (std::size_t j = 0; j < nb; ++j) {
                 if (a.sides[i] * b.sides[j] < 0)
                     continue;
-                // Each piece is within both its boxes and its padded points' hull: the pieces
-                // share no room when any of those pairs is apart, and the shallowest overlap
-                // bounds how deep they can meet.
                 const std::size_t ia = k * na + i, ib = k * nb + j;
-                double d = aligned_overlap(a.aligned[ia], b.aligned[ib]);
-                if (d > deepest)
-                    deepest = std::max(deepest, piece_overlap(a, ia, b, ib, d));
+                const double d = aligned_overlap(a.aligned[ia], b.aligned[ib]);
+                if (d > 0)
+                    pairs.push_back({d, ia, ib});
             }
+        // Each piece is within its box and its padded points' hull: the pieces share no room
+        // when either pair is apart, and the shallower overlap bounds how deep they can meet.
+        // Deepest boxes first: a pair whose boxes overlap less than the deepest found so far
+        // cannot change the band's depth, so its hulls are not tested.
+        std::sort(pairs.begin(), pairs.end(), [](const Pair& p, const Pair& q) {
+            return p.boxes > q.boxes ||
+                   (p.boxes == q.boxes && (p.ia < q.ia || (p.ia == q.ia && p.ib < q.ib)));
+        });
+        double deepest = 0.0;
+        for (const Pair& p : pairs) {
+            if (p.boxes <= deepest)
+                break;
+            deepest = std::max(deepest, piece_overlap(a, p.ia, b, p.ib, p.boxes));
+        }
         sum += deepest;
     }
     return sum;

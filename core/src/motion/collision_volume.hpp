@@ -44,8 +44,10 @@ struct CollisionVolume {
     std::vector<Vec3> points;
     std::vector<int> first;
     std::vector<Vec3> pad;
+    /// Offsets the paper is also carried along (carry_along): each piece's hull is swept by them.
+    std::vector<Vec3> carried;
     /// The separating-axis candidates of two convex polygons: each piece's plane normal at the
-    /// band's middle angle (zero when degenerate) and its edge directions there,
+    /// band's middle angle (zero when degenerate) and the directions between its vertices there,
     /// edges[edge_first[k·n + i] .. edge_first[k·n + i + 1]), unit, one per direction.
     std::vector<Vec3> normals;
     std::vector<Vec3> edges;
@@ -61,9 +63,9 @@ struct VolumeOptions {
 CollisionVolume collision_volume(const MotionMechanism& m, const VolumeOptions& options = {});
 
 /// The room the volume takes when its paper is also carried along each of `offsets` (a merged
-/// patch that carries several parts): each piece's points gain their copies moved by each
-/// offset, its box grows to hold them; a piece keeps its side only when no offset moves it
-/// across.
+/// patch that carries several parts): each piece's hull is swept by the offsets (`carried`),
+/// its box grows to hold its copies moved by each; a piece keeps its side only when no offset
+/// moves it across.
 void carry_along(CollisionVolume& volume, const std::vector<Vec3>& offsets);
 
 /// Collision depth D_c of eq 6.8 for two volumes built with the same options: Σ over bands of

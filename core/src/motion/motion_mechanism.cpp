@@ -285,7 +285,7 @@ void mechanism_parts(const MotionMechanism& m, double theta, std::vector<Mechani
         // it is cut there into a backdrop and a ground piece.
         const double y0 = h.offset, y1 = h.offset + h.width;
         auto strip = [&](const Vec2& p, const Vec2& q, int side) {
-            add(side, {at(p, y0), at(q, y0), at(p, y1), at(q, y1)});
+            add(side, {at(p, y0), at(q, y0), at(q, y1), at(p, y1)});
         };
         if (h.run_ground >= h.run_backdrop) {
             const Vec2 Q(0, 2 * h.run_backdrop * std::cos(d));
@@ -315,9 +315,9 @@ void mechanism_parts(const MotionMechanism& m, double theta, std::vector<Mechani
         const Vec2 C = A + D;
         const double y0 = s.offset, y1 = s.offset + s.width;
         add(0, {wings.to_world(A.x(), y0, A.y()), wings.to_world(C.x(), y0, C.y()),
-                wings.to_world(A.x(), y1, A.y()), wings.to_world(C.x(), y1, C.y())});
+                wings.to_world(C.x(), y1, C.y()), wings.to_world(A.x(), y1, A.y())});
         add(0, {wings.to_world(D.x(), y0, D.y()), wings.to_world(C.x(), y0, C.y()),
-                wings.to_world(D.x(), y1, D.y()), wings.to_world(C.x(), y1, C.y())});
+                wings.to_world(C.x(), y1, C.y()), wings.to_world(D.x(), y1, D.y())});
         break;
     }
     case MotionKind::stationary: {
@@ -329,7 +329,7 @@ void mechanism_parts(const MotionMechanism& m, double theta, std::vector<Mechani
         const Vec2 top(0, c);
         const double y0 = f.offset, y1 = f.offset + f.width;
         auto strip = [&](const Vec2& p, const Vec2& q, int side) {
-            add(side, {at(p, y0), at(q, y0), at(p, y1), at(q, y1)});
+            add(side, {at(p, y0), at(q, y0), at(q, y1), at(p, y1)});
         };
         strip(Vec2(0, 0), top, 0);
         strip(s * g, top + s * g, +1);
@@ -340,8 +340,8 @@ void mechanism_parts(const MotionMechanism& m, double theta, std::vector<Mechani
         for (double y : {y0, y1}) {
             const double crease = y == y0 ? y0 - out : y1 + out;
             const Vec3 foot(0, crease, out), head(0, crease, out + c);
-            add(+1, {at(s * g, y), at(top + s * g, y), foot, head});
-            add(-1, {at(s * b, y), at(top + s * b, y), foot, head});
+            add(+1, {at(s * g, y), at(top + s * g, y), head, foot});
+            add(-1, {at(s * b, y), at(top + s * b, y), head, foot});
         }
         break;
     }

@@ -52,10 +52,11 @@ Vec3 mechanism_point(const MotionMechanism& m, double theta);
 
 /// One rigid convex piece of a mechanism's paper at some fold angle: every point of the piece
 /// is a convex combination of `vertices` (a patch, or the part of a patch on one side of a
-/// crease line through it). `side` says which side of the card's bisecting plane x = 0 the piece
-/// keeps to at every fold angle (derived per kind in docs/MATH.md, "Tight collision volumes"):
-/// +1 never at x < 0 (the ground's half), −1 never at x > 0, 0 either. Pieces on opposite sides
-/// can touch only on that plane, so they never cross.
+/// crease line through it), listed along its outline (the vertical's top halves end with both
+/// roots of their back corner). `side` says which side of the card's bisecting plane x = 0 the
+/// piece keeps to at every fold angle (derived per kind in docs/MATH.md, "Tight collision
+/// volumes"): +1 never at x < 0 (the ground's half), −1 never at x > 0, 0 either. Pieces on
+/// opposite sides can touch only on that plane, so they never cross.
 struct MechanismPart {
     std::vector<Vec3> vertices;
     int side = 0;
