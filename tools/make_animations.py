@@ -555,6 +555,18 @@ def _character():
     return root, motion, known
 
 
+def carried_height(mech):
+    """H of eq 6.7 for a known mechanism on A4 (h_max = 25 mm): the v-box's height, the diagonal
+    nose's height on its standing spine (step offset + width/2), 0 for the flat rotation arm and
+    extruding patch (which eq 6.5 does not charge)."""
+    p = mech["params"]
+    if mech["type"] == "vertical_translation":
+        return min(1.0, p["height"] / 25.0)
+    if mech["type"] == "diagonal":
+        return min(1.0, (p["step_fold"]["offset"] + p["step_fold"]["width"] / 2) / 25.0)
+    return 0.0
+
+
 def _synthetic(names):
     """Hands driven by the closed forms of MECHANISMS[names], all on one body at (-100, 190)."""
     s = s_values()
@@ -574,7 +586,11 @@ def _synthetic(names):
         mid = 0.5 * (path.min(axis=0) + path.max(axis=0))
         shoulder = np.array([mid[0] - 45.0, mid[1] - 12.0])
         length = reach_for(path, shoulder)
-        z = 4.0 + 4.0 * index
+        # Depth: with several chains eq 6.5 charges |D − H| (D = the chain's depth over the
+        # character's range, the body at 0; H = the carrying patch's height over h_max = 25 mm),
+        # so each arm stands where its mechanism's carried patch does and the known design is the
+        # cheapest (docs/DESIGN.md, "Tight collision volumes"). One chain has no depth term.
+        z = 4.0 + 4.0 * index if len(names) == 1 else 16.0 * carried_height(mech)
         offset = (shoulder[0] - body[0], shoulder[1] - body[1], z)
         joint_name = name.capitalize() + "Arm"
         joint, m = arm(joint_name, offset, path, (*shoulder, z), length, length)

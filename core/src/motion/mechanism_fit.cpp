@@ -238,13 +238,19 @@ std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& t,
     }
     {
         // Horizontal: P = r·C/|C| is at (r, y) open and on the fold closed: r from the last
-        // pose; the runs' ratio k = b/a shapes x(θ) (1-D search), with a − b = r/2.
+        // pose; the runs' ratio k = b/a shapes x(θ) (1-D search). The path fixes only the far
+        // edge's middle, offset + width/2, and the runs' ratio (P follows C's direction, not its
+        // length): the patch is as narrow, and the runs as short (a − b at most r/2), as their
+        // creases can be glued (1 mm above infeasibility's bounds), taking the least room from
+        // the neighbours (docs/DESIGN.md, "Tight collision volumes").
         const double r = clamp(A1.x(), shortest_crease(), D - 2);
+        const double width = std::max(12.0, shortest_crease()) + 1.0;
         auto trial = [&](double k) {
             MotionMechanism q;
             q.kind = MotionKind::horizontal;
             const double a = clamp(0.5 * r / (1 - k), 2.0, D - 2);
-            q.p = {clamp(A1.y() - 10, 0, W - 20), 20, a, k * a, r};
+            const double shorter = std::min(1.0, (shortest_crease() + 1.0) / (k * a));
+            q.p = {clamp(A1.y() - width / 2, 0, W - width), width, shorter * a, shorter * k * a, r};
             return q;
         };
         const double k = search_1d([&](double k) { return cost(trial(k)); }, 0.05, 0.9, 20);

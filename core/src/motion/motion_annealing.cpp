@@ -485,20 +485,13 @@ CollisionVolume slot_volume(const AnnealProblem& p, const Slot& slot)
     if (slot.chains.size() < 2 || slot.mechanism.kind == MotionKind::rotation)
         return v;
     const Vec3 open = mechanism_point(slot.mechanism, M_PI);
-    for (OrientedBox& b : v.bands) {
-        Eigen::AlignedBox3d box(b.centre - b.half, b.centre + b.half);
-        const Eigen::AlignedBox3d own = box;
-        for (int j : slot.chains) {
-            const ChainTarget& t = p.chains[j];
-            if (t.target.empty())
-                continue;
-            const Vec3 offset(t.target.back().x() - open.x(), t.target.back().y() - open.y(), 0);
-            box.extend(own.min() + offset);
-            box.extend(own.max() + offset);
-        }
-        b.centre = box.center();
-        b.half = box.sizes() / 2;
+    std::vector<Vec3> offsets;
+    for (int j : slot.chains) {
+        const ChainTarget& t = p.chains[j];
+        if (!t.target.empty())
+            offsets.emplace_back(t.target.back().x() - open.x(), t.target.back().y() - open.y(), 0);
     }
+    carry_along(v, offsets);
     return v;
 }
 

@@ -224,26 +224,40 @@ Vec3 mechanism_point(const MotionMechanism& m, double theta)
     return Vec3::Zero();
 }
 
-std::vector<Vec3> mechanism_vertices(const MotionMechanism& m, double theta)
+void mechanism_parts(const MotionMechanism& m, double theta, std::vector<MechanismPart>& out)
 {
     const double d = theta / 2;
     const Vec2 g = ground_dir(theta), b = backdrop_dir(theta);
-    std::vector<Vec3> v;
+    // Pieces written over `out`'s, keeping their storage (the volumes call this in a loop).
+    std::size_t count = 0;
+    auto add = [&](int side, std::initializer_list<Vec3> vertices) -> std::vector<Vec3>& {
+        if (count == out.size())
+            out.emplace_back();
+        MechanismPart& part = out[count++];
+        part.side = side;
+        part.vertices.assign(vertices);
+        return part.vertices;
+    };
     switch (m.kind) {
     case MotionKind::rotation: {
-        // O, S, R, S' and the arm's tip P (docs/MATH.md, Rotation).
+        // O, S, R, S' and the arm's tip P (docs/MATH.md, Rotation). The arm's wing O-S-P is cut
+        // along the spine O-R (R lies on S-P): O-S-R has x = α w sin δ ≥ 0, O-R-P x ≤ 0.
         const RotationArmParams r = rotation_params(m);
         const double l = r.spine, w = r.run, t = 2 * std::atan2(w * std::cos(d), l);
-        v.push_back({0, r.offset, 0});
-        v.push_back({w * std::sin(d), r.offset + l, w * std::cos(d)});
-        v.push_back({-w * std::sin(d), r.offset + l, w * std::cos(d)});
-        v.push_back({0, r.offset + l * std::cos(t), l * std::sin(t)});
-        v.push_back(rotation_arm_tip(r, theta));
+        const Vec3 O(0, r.offset, 0);
+        const Vec3 S(w * std::sin(d), r.offset + l, w * std::cos(d));
+        const Vec3 Sb(-w * std::sin(d), r.offset + l, w * std::cos(d));
+        const Vec3 R(0, r.offset + l * std::cos(t), l * std::sin(t));
+        add(+1, {O, S, R});
+        add(-1, {O, R, rotation_arm_tip(r, theta)});
+        add(-1, {O, R, Sb});
         break;
     }
     case MotionKind::vertical: {
         // The walls FL, FR are rectangles: their tops are the feet plus F' − F. The top's back
-        // corner is where the three top edges meet; both roots are kept (conservative).
+        // corner is where the three top edges meet; both roots are kept (conservative). F' and
+        // both roots lie on x = 0 (the section is symmetric about it), so each wall and each
+        // top half keeps to its page's side.
         const VBoxFoldParams p = vertical_params(m);
         const double across = p.side * std::sin(p.wall_angle);
         const double along = p.side * std::cos(p.wall_angle);
@@ -251,54 +265,102 @@ std::vector<Vec3> mechanism_vertices(const MotionMechanism& m, double theta)
         const Vec3 Sg = at(across * g, p.offset + along), Sb = at(across * b, p.offset + along);
         const Vec3 Ft = v_box_front_corner(p, theta);
         const Vec3 lift = Ft - F;
-        v = {F, Sg, Sb, Ft, Sg + lift, Sb + lift};
-        for (const Vec3& q : trilaterate(Ft, Sg + lift, Sb + lift, 2 * along, p.side, p.side))
-            v.push_back(q);
+        add(+1, {F, Sg, Sg + lift, Ft});
+        add(-1, {F, Sb, Sb + lift, Ft});
+        const std::vector<Vec3> corner =
+            trilaterate(Ft, Sg + lift, Sb + lift, 2 * along, p.side, p.side);
+        add(+1, {Ft, Sg + lift})
+            .insert(out[count - 1].vertices.end(), corner.begin(), corner.end());
+        add(-1, {Ft, Sb + lift})
+            .insert(out[count - 1].vertices.end(), corner.begin(), corner.end());
         break;
     }
     case MotionKind::horizontal: {
+        // The step's riser A-C and tread D-C, and the extruding patch from the hinge to P = r
+        // C/|C|. x of A = a sin δ, of D = −b sin δ, of C and P (a − b) sin δ (times r/|C| for P).
         const HorizontalTranslationParams h = horizontal_params(m);
         const Vec2 A = h.run_ground * g, D = h.run_backdrop * b, C = A + D;
         const Vec2 P = h.reach * C / C.norm();
-        for (double y : {h.offset, h.offset + h.width})
-            for (const Vec2& q : {Vec2(0, 0), A, D, C, P})
-                v.push_back(at(q, y));
+        // With a ≥ b the tread crosses x = 0 at Q = D + (b/a)(C − D) = b(g + b) = (0, 2b cos δ):
+        // it is cut there into a backdrop and a ground piece.
+        const double y0 = h.offset, y1 = h.offset + h.width;
+        auto strip = [&](const Vec2& p, const Vec2& q, int side) {
+            add(side, {at(p, y0), at(q, y0), at(q, y1), at(p, y1)});
+        };
+        if (h.run_ground >= h.run_backdrop) {
+            const Vec2 Q(0, 2 * h.run_backdrop * std::cos(d));
+            strip(A, C, +1);
+            strip(D, Q, -1);
+            strip(Q, C, +1);
+            strip(Vec2(0, 0), P, +1);
+        } else {
+            strip(A, C, 0);
+            strip(D, C, 0);
+            strip(Vec2(0, 0), P, 0);
+        }
         break;
     }
     case MotionKind::diagonal: {
+        // The v-fold's wings O-A-P (x = X sin δ ≥ 0 at A, the tip on x = 0) and O-B-P, and the
+        // step's riser and tread in the wings' pair (their nose may be on either side).
         const VFoldParams vf = diagonal_v_fold(m);
         const double X = vf.run * std::sin(vf.hinge_angle), Y = vf.run * std::cos(vf.hinge_angle);
-        v.push_back({0, vf.offset, 0});
-        v.push_back({X * std::sin(d), vf.offset + Y, X * std::cos(d)});
-        v.push_back({-X * std::sin(d), vf.offset + Y, X * std::cos(d)});
-        v.push_back(v_fold_tip(vf, M_PI, theta));
+        const Vec3 O(0, vf.offset, 0), tip = v_fold_tip(vf, M_PI, theta);
+        add(+1, {O, Vec3(X * std::sin(d), vf.offset + Y, X * std::cos(d)), tip});
+        add(-1, {O, Vec3(-X * std::sin(d), vf.offset + Y, X * std::cos(d)), tip});
         const StepFoldParams s = diagonal_step(m);
         const BasePatchPair wings = v_fold_wings(vf, M_PI, theta);
         const Vec2 A = s.run_ground * ground_dir(wings.opening);
         const Vec2 D = s.run_backdrop * backdrop_dir(wings.opening);
-        for (double y : {s.offset, s.offset + s.width})
-            for (const Vec2& q : {A, D, Vec2(A + D)})
-                v.push_back(wings.to_world(q.x(), y, q.y()));
+        const Vec2 C = A + D;
+        const double y0 = s.offset, y1 = s.offset + s.width;
+        add(0, {wings.to_world(A.x(), y0, A.y()), wings.to_world(C.x(), y0, C.y()),
+                wings.to_world(C.x(), y1, C.y()), wings.to_world(A.x(), y1, A.y())});
+        add(0, {wings.to_world(D.x(), y0, D.y()), wings.to_world(C.x(), y0, C.y()),
+                wings.to_world(C.x(), y1, C.y()), wings.to_world(D.x(), y1, D.y())});
         break;
     }
     case MotionKind::stationary: {
-        // The parallel section (docs/MATH.md, Box fold / Floating layer): C on the bisector,
-        // the platform c above it along each page, the end creases g·cos(θ/2) out of each end.
+        // The parallel section (docs/MATH.md, Box fold / Floating layer): C on the bisector from
+        // the hinge up to c·ẑ, the legs L, R at s·g, s·b, the top halves reaching s + o, and the
+        // end panels from the legs' ends to the end creases g·cos(θ/2) out of each end.
         const FloatingLayerParams f = layer_params(m);
         const double c = f.height, s = f.support, reach = f.support + f.overhang;
         const Vec2 top(0, c);
-        for (double y : {f.offset, f.offset + f.width})
-            for (const Vec2& q : {Vec2(0, 0), Vec2(s * g), Vec2(s * b), top, Vec2(top + s * g),
-                                  Vec2(top + s * b), Vec2(top + reach * g), Vec2(top + reach * b)})
-                v.push_back(at(q, y));
+        const double y0 = f.offset, y1 = f.offset + f.width;
+        auto strip = [&](const Vec2& p, const Vec2& q, int side) {
+            add(side, {at(p, y0), at(q, y0), at(q, y1), at(p, y1)});
+        };
+        strip(Vec2(0, 0), top, 0);
+        strip(s * g, top + s * g, +1);
+        strip(s * b, top + s * b, -1);
+        strip(top, top + reach * g, +1);
+        strip(top, top + reach * b, -1);
         const double out = s * std::cos(d);
-        for (double y : {f.offset - out, f.offset + f.width + out}) {
-            v.push_back({0, y, out});
-            v.push_back({0, y, out + c});
+        for (double y : {y0, y1}) {
+            const double crease = y == y0 ? y0 - out : y1 + out;
+            const Vec3 foot(0, crease, out), head(0, crease, out + c);
+            add(+1, {at(s * g, y), at(top + s * g, y), head, foot});
+            add(-1, {at(s * b, y), at(top + s * b, y), head, foot});
         }
         break;
     }
     }
+    out.resize(count);
+}
+
+std::vector<MechanismPart> mechanism_parts(const MotionMechanism& m, double theta)
+{
+    std::vector<MechanismPart> parts;
+    mechanism_parts(m, theta, parts);
+    return parts;
+}
+
+std::vector<Vec3> mechanism_vertices(const MotionMechanism& m, double theta)
+{
+    std::vector<Vec3> v;
+    for (const MechanismPart& part : mechanism_parts(m, theta))
+        v.insert(v.end(), part.vertices.begin(), part.vertices.end());
     return v;
 }
 

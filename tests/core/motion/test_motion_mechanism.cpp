@@ -85,8 +85,25 @@ TEST(MotionMechanism, PointPathEqualsTheSimulatorsOverTheFold)
     }
 }
 
-TEST(MotionMechanism, CollisionVolumeHoldsEverySimulatedVertexOver91Angles)
+// Points spread over a posed patch: its outline's vertices and a grid over each triangle of its
+// fan (the patches are convex), so a point of any of the patch's pieces is among them.
+std::vector<Vec3> points_over(const std::vector<Vec3>& outline)
 {
+    std::vector<Vec3> points = outline;
+    constexpr int n = 8;
+    for (std::size_t t = 1; t + 1 < outline.size(); ++t)
+        for (int i = 0; i <= n; ++i)
+            for (int j = 0; i + j <= n; ++j)
+                points.push_back(outline[0] + (outline[t] - outline[0]) * i / double(n) +
+                                 (outline[t + 1] - outline[0]) * j / double(n));
+    return points;
+}
+
+TEST(MotionMechanism, CollisionVolumeHoldsEverySimulatedPatchOver91Angles)
+{
+    // Every point of every patch, posed by the simulator at 91 angles (x divided by sin(θ/2), the
+    // volume's frame), lies in the box of one piece of its band whose side admits it (side s:
+    // s·x >= 0): the volume and its sides hold the paper the generators build.
     std::vector<double> angles;
     for (int k = 0; k <= 90; ++k)
         angles.push_back(M_PI * k / 90);
@@ -95,20 +112,30 @@ TEST(MotionMechanism, CollisionVolumeHoldsEverySimulatedVertexOver91Angles)
         const MotionMechanism m = sample_mechanism(kind);
         const CollisionVolume volume = collision_volume(m, options);
         ASSERT_EQ(int(volume.bands.size()), options.bands);
+        const std::size_t pieces = volume.sides.size();
+        ASSERT_EQ(volume.aligned.size(), pieces * options.bands);
         const Built b = build(m);
         const Result<FoldSweep> sweep = simulate_fold(b.scaffold, angles);
         ASSERT_TRUE(sweep.ok && sweep.value.complete);
         int outside = 0, checked = 0;
         for (const FoldState& state : sweep.value.states) {
+            if (state.angle == 0.0)
+                continue; // flat: the volume's frame, x / sin(θ/2), is a limit there
             const int band = std::min(options.bands - 1, int(state.angle / (M_PI / options.bands)));
-            const OrientedBox& box = volume.bands[band];
+            const double across = 1.0 / std::sin(state.angle / 2);
             for (int id : b.patches) {
                 const Patch* patch = b.scaffold.find_patch(id);
                 for (const Vec3& x :
-                     posed_outline(*patch, state.poses[b.scaffold.patch_index(id)])) {
-                    const Vec3 local = box.axes.transpose() * (x - box.centre);
+                     points_over(posed_outline(*patch, state.poses[b.scaffold.patch_index(id)]))) {
                     ++checked;
-                    if ((local.cwiseAbs() - box.half).maxCoeff() > 1e-9)
+                    const Vec3 mapped(x.x() * across, x.y(), x.z());
+                    bool held = false;
+                    for (std::size_t i = 0; i < pieces && !held; ++i) {
+                        const OrientedBox& box = volume.aligned[band * pieces + i];
+                        held = volume.sides[i] * x.x() >= -1e-9 &&
+                               ((mapped - box.centre).cwiseAbs() - box.half).maxCoeff() <= 1e-9;
+                    }
+                    if (!held)
                         ++outside;
                 }
             }
