@@ -7,7 +7,9 @@ namespace popup {
 /// Rotation (thesis §4.3.4, Fig 4.15): a v-fold lying flat on the host at the design state, its
 /// spine O-R along the host hinge, whose ground wing O-S-P is extended past the spine by an arm:
 /// R lies on S-P with |PR| = `arm`. Closing, the spine pops up and P swings through the
-/// bisecting plane: P_x = −h sin δ and P_y follows thesis eq 4.10 (docs/MATH.md, Rotation).
+/// bisecting plane: P_x = −h sin δ and P_y follows thesis eq 4.10 (docs/MATH.md, Rotation). On a
+/// host open less than flat (a floating layer's side pair) it is built on the same branch at the
+/// host's design opening.
 struct RotationArmParams {
     double offset = 0.0; ///< O along the host hinge (mm)
     double spine = 40.0; ///< l = |OQ| = |OR| (mm)
