@@ -21,7 +21,8 @@ constexpr double margin = 1.0; // mm kept inside every generator range, so the b
 RotationArmParams rotation_params(const MotionMechanism& m)
 {
     RotationArmParams r;
-    r.offset = m.p[0];
+    // Off the fold the arm starts at its layer's start, which is at `offset` on the card.
+    r.offset = m.p[4] == 0 ? m.p[0] : 0.0;
     r.spine = m.p[1];
     r.run = m.p[2];
     r.arm = m.p[3];
@@ -117,6 +118,31 @@ std::vector<Vec3> trilaterate(const Vec3& p1, const Vec3& p2, const Vec3& p3, do
     return {base + z * ez, base - z * ez};
 }
 
+LayerSide rotation_side(const MotionMechanism& m)
+{
+    return m.p[4] > 0 ? LayerSide::ground : LayerSide::backdrop;
+}
+
+// The parallel section's points of a floating layer at θ (docs/MATH.md, Box fold / Floating
+// layer): C on the bisector, the platform c above it along each page, the end creases
+// s·cos(θ/2) out of each end.
+void layer_vertices(const FloatingLayerParams& f, double theta, std::vector<Vec3>& v)
+{
+    const double d = theta / 2;
+    const Vec2 g = ground_dir(theta), b = backdrop_dir(theta);
+    const double c = f.height, s = f.support, reach = f.support + f.overhang;
+    const Vec2 top(0, c);
+    for (double y : {f.offset, f.offset + f.width})
+        for (const Vec2& q : {Vec2(0, 0), Vec2(s * g), Vec2(s * b), top, Vec2(top + s * g),
+                              Vec2(top + s * b), Vec2(top + reach * g), Vec2(top + reach * b)})
+            v.push_back(at(q, y));
+    const double out = s * std::cos(d);
+    for (double y : {f.offset - out, f.offset + f.width + out}) {
+        v.push_back({0, y, out});
+        v.push_back({0, y, out + c});
+    }
+}
+
 std::string fail(const char* name, double value, const std::string& range)
 {
     std::ostringstream s;
@@ -153,11 +179,39 @@ int parameter_count(MotionKind kind)
     case MotionKind::horizontal:
         return 5;
     case MotionKind::rotation:
-        return 4;
+        return 5;
     case MotionKind::stationary:
         return 6;
     }
     return 0;
+}
+
+int active_parameter_count(const MotionMechanism& m)
+{
+    if (m.kind == MotionKind::rotation && !rotation_off_fold(m))
+        return 4;
+    return parameter_count(m.kind);
+}
+
+bool rotation_off_fold(const MotionMechanism& m)
+{
+    return m.kind == MotionKind::rotation && m.p[4] != 0;
+}
+
+double rotation_layer_height(double run, double arm)
+{
+    return std::max({run, arm, shortest_crease()}) + margin;
+}
+
+FloatingLayerParams rotation_layer(const MotionMechanism& m)
+{
+    FloatingLayerParams f;
+    f.offset = m.p[0];
+    f.width = m.p[1];
+    f.support = std::abs(m.p[4]);
+    f.height = rotation_layer_height(m.p[2], m.p[3]);
+    f.overhang = 0;
+    return f;
 }
 
 ParameterInfo parameter_info(MotionKind kind, int i)
@@ -176,8 +230,11 @@ ParameterInfo parameter_info(MotionKind kind, int i)
                                                {"run_ground", R::length},
                                                {"run_backdrop", R::length},
                                                {"reach", R::length}};
-    static const ParameterInfo rotation[] = {
-        {"offset", R::position}, {"spine", R::length}, {"run", R::length}, {"arm", R::length}};
+    static const ParameterInfo rotation[] = {{"offset", R::position},
+                                             {"spine", R::length},
+                                             {"run", R::length},
+                                             {"arm", R::length},
+                                             {"hinge", R::position}};
     static const ParameterInfo stationary[] = {{"offset", R::position}, {"width", R::length},
                                                {"height", R::length},   {"support", R::length},
                                                {"overhang", R::length}, {"anchor", R::position}};
@@ -200,6 +257,9 @@ Vec3 mechanism_point(const MotionMechanism& m, double theta)
 {
     switch (m.kind) {
     case MotionKind::rotation:
+        if (rotation_off_fold(m))
+            return rotation_arm_tip_on_layer_side(rotation_params(m), rotation_layer(m),
+                                                  rotation_side(m), theta);
         return rotation_arm_tip(rotation_params(m), theta);
     case MotionKind::vertical:
         return v_box_front_corner(vertical_params(m), theta);
@@ -231,14 +291,25 @@ std::vector<Vec3> mechanism_vertices(const MotionMechanism& m, double theta)
     std::vector<Vec3> v;
     switch (m.kind) {
     case MotionKind::rotation: {
-        // O, S, R, S' and the arm's tip P (docs/MATH.md, Rotation).
+        // O, S, R, S' and the arm's tip P (docs/MATH.md, Rotation), in its host's frame at the
+        // host's opening: the card's at θ, or a floating layer's side pair at θ/2 (docs/MATH.md,
+        // A rotation arm on a floating layer's side) with the layer's own points.
         const RotationArmParams r = rotation_params(m);
-        const double l = r.spine, w = r.run, t = 2 * std::atan2(w * std::cos(d), l);
-        v.push_back({0, r.offset, 0});
-        v.push_back({w * std::sin(d), r.offset + l, w * std::cos(d)});
-        v.push_back({-w * std::sin(d), r.offset + l, w * std::cos(d)});
-        v.push_back({0, r.offset + l * std::cos(t), l * std::sin(t)});
-        v.push_back(rotation_arm_tip(r, theta));
+        BasePatchPair host; // the central fold: the card frame
+        host.opening = theta;
+        if (rotation_off_fold(m)) {
+            const FloatingLayerParams f = rotation_layer(m);
+            layer_vertices(f, theta, v);
+            host = floating_layer_side(f, rotation_side(m), theta);
+        }
+        const double e = host.opening / 2;
+        const double l = r.spine, w = r.run, t = 2 * std::atan2(w * std::cos(e), l);
+        for (const Vec3& q :
+             {Vec3(0, r.offset, 0), Vec3(w * std::sin(e), r.offset + l, w * std::cos(e)),
+              Vec3(-w * std::sin(e), r.offset + l, w * std::cos(e)),
+              Vec3(0, r.offset + l * std::cos(t), l * std::sin(t)),
+              rotation_arm_tip(r, host.opening)})
+            v.push_back(host.to_world(q.x(), q.y(), q.z()));
         break;
     }
     case MotionKind::vertical: {
@@ -281,23 +352,9 @@ std::vector<Vec3> mechanism_vertices(const MotionMechanism& m, double theta)
                 v.push_back(wings.to_world(q.x(), y, q.y()));
         break;
     }
-    case MotionKind::stationary: {
-        // The parallel section (docs/MATH.md, Box fold / Floating layer): C on the bisector,
-        // the platform c above it along each page, the end creases g·cos(θ/2) out of each end.
-        const FloatingLayerParams f = layer_params(m);
-        const double c = f.height, s = f.support, reach = f.support + f.overhang;
-        const Vec2 top(0, c);
-        for (double y : {f.offset, f.offset + f.width})
-            for (const Vec2& q : {Vec2(0, 0), Vec2(s * g), Vec2(s * b), top, Vec2(top + s * g),
-                                  Vec2(top + s * b), Vec2(top + reach * g), Vec2(top + reach * b)})
-                v.push_back(at(q, y));
-        const double out = s * std::cos(d);
-        for (double y : {f.offset - out, f.offset + f.width + out}) {
-            v.push_back({0, y, out});
-            v.push_back({0, y, out + c});
-        }
+    case MotionKind::stationary:
+        layer_vertices(layer_params(m), theta, v);
         break;
-    }
     }
     return v;
 }
@@ -339,12 +396,28 @@ std::string infeasibility(const MotionMechanism& m, const CardParams& card)
         // The wing's width: a glue tab on its crease needs a patch that wide to sit on.
         if (!(r.run >= shortest_crease()))
             return fail("run", r.run, ">= the shortest glued crease");
-        if (!(r.offset >= 0 && r.offset + r.spine <= W))
-            return fail("offset", r.offset, "in [0, card width - spine]");
-        if (!(r.run > margin && r.run < D - margin))
-            return fail("run", r.run, "in (1, card depth - 1)");
-        if (!(r.arm > margin && r.arm <= std::min(r.spine * r.spine / r.run, D) * (1 - 1e-6)))
-            return fail("arm", r.arm, "in (1, min(spine²/run, card depth)]");
+        if (!(m.p[0] >= 0 && m.p[0] + r.spine <= W))
+            return fail("offset", m.p[0], "in [0, card width - spine]");
+        if (!rotation_off_fold(m)) {
+            if (!(r.run > margin && r.run < D - margin))
+                return fail("run", r.run, "in (1, card depth - 1)");
+            if (!(r.arm > margin && r.arm <= std::min(r.spine * r.spine / r.run, D) * (1 - 1e-6)))
+                return fail("arm", r.arm, "in (1, min(spine²/run, card depth)]");
+            break;
+        }
+        // On a layer's side pair: the layer's supports and height are glued creases; the wings
+        // reach the page beyond the support (D − s) and the support (the layer's height, which
+        // rotation_layer_height keeps above Run and Arm).
+        const FloatingLayerParams f = rotation_layer(m);
+        if (!(f.support >= shortest_crease() && f.support < D - margin))
+            return fail("hinge", m.p[4], "with |hinge| in [shortest glued crease, card depth - 1)");
+        if (!(r.run > margin && r.run < D - f.support - margin))
+            return fail("run", r.run, "in (1, card depth - |hinge| - 1)");
+        if (!(r.arm > margin && r.arm <= r.spine * r.spine / r.run * (1 - 1e-6)))
+            return fail("arm", r.arm, "in (1, spine²/run]");
+        // Closed, the support stands on the page from s to s + height.
+        if (!(f.support + f.height < D - margin))
+            return fail("hinge", m.p[4], "with the layer's height under the closed card's top");
         break;
     }
     case MotionKind::vertical: {
@@ -461,7 +534,28 @@ Result<std::vector<MechanismParts>> build_mechanism(Scaffold& scaffold, const Ba
         const RotationArmParams r = rotation_params(m);
         row.type = "rotation_arm";
         row.parameters = {{"offset", r.offset}, {"spine", r.spine}, {"run", r.run}, {"arm", r.arm}};
-        take(add_rotation_arm(scaffold, host, r, name), row);
+        if (!rotation_off_fold(m)) {
+            take(add_rotation_arm(scaffold, host, r, name), row);
+            break;
+        }
+        // Off the fold: the floating layer first (the host before what it carries), then the
+        // arm on its side pair (docs/MATH.md, A rotation arm on a floating layer's side).
+        const FloatingLayerParams f = rotation_layer(m);
+        FittedMechanism layer;
+        layer.type = "floating_layer";
+        layer.name = name + "_layer";
+        layer.host = row.host;
+        layer.parameters = {{"offset", f.offset},
+                            {"width", f.width},
+                            {"height", f.height},
+                            {"support", f.support},
+                            {"overhang", f.overhang}};
+        if (!take(add_floating_layer(scaffold, host, f, layer.name), layer))
+            break;
+        const BasePatchPair side =
+            out.value.back().offered.at(rotation_side(m) == LayerSide::ground ? 1 : 2);
+        row.host = side.name;
+        take(add_rotation_arm(scaffold, side, r, name), row);
         break;
     }
     case MotionKind::vertical: {
