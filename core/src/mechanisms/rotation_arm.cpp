@@ -57,11 +57,14 @@ Result<MechanismParts> add_rotation_arm(Scaffold& scaffold, const BasePatchPair&
              "180°";
         e.push_back(Diagnostic::error(DiagnosticCode::bad_host, m.str(), about_parameter("Host")));
     }
-    if (!(p.spine > 0 && p.spine <= host.length)) {
+    // A host's length is a difference of coordinates (a layer from offset to offset + width):
+    // a spine as long as it may exceed it by rounding.
+    const double length = host.length * (1 + 1e-12);
+    if (!(p.spine > 0 && p.spine <= length)) {
         std::ostringstream m;
         m << "> 0 and <= " << host.length << " mm (the length of " << host.name << ")";
         range_error(e, name, "Spine", p.spine, "mm", m.str());
-    } else if (!(p.offset >= 0 && p.offset + p.spine <= host.length)) {
+    } else if (!(p.offset >= 0 && p.offset + p.spine <= length)) {
         // The spine fits: only Offset can be at fault, and its range exists.
         std::ostringstream m;
         m << ">= 0 and <= " << host.length - p.spine << " mm (" << host.name << " is "
