@@ -233,18 +233,22 @@ std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& t,
         for (double side : {1.0, -1.0})
             for (double sf : {0.12, 0.25, 0.4})
                 for (double lf : {0.15, 0.3, 0.5, 0.7})
-                    for (double wf : {0.0, 0.5})
-                        for (double hf : {0.25, 0.5, 0.9}) {
+                    for (double wf : {0.0, 0.25, 0.5})
+                        for (double hf : {0.1, 0.3, 0.6, 0.9}) {
                             MotionMechanism q;
                             q.kind = MotionKind::rotation;
+                            // The layer's height follows Run and Arm, and closed it stands on
+                            // the page from the support up: keep both under the card's top.
                             const double support = std::max(sf * D, shortest_crease());
+                            const double room = D - support - 2 * shortest_crease();
                             const double l = std::max(lf * W, shortest_crease());
-                            const double w = shortest_crease() + 1 +
-                                             wf * std::max(0.0, D - support - shortest_crease());
-                            const double h = std::min(hf * l * l / w, D);
+                            const double w = shortest_crease() + 1 + wf * std::max(0.0, room);
+                            const double h = hf * std::min(l * l / w, std::max(room, 2.0));
                             q.p = {0, l, w, h, side * support};
                             const double tip_y = mechanism_point(q, M_PI).y();
                             q.p[0] = clamp(A1.y() - tip_y, 0, std::max(0.0, W - l));
+                            // Closed, the arm's tip may reach past the fold's ends.
+                            fit_along_fold_when_closed(q, W);
                             const double e = cost(q);
                             if (e < inf)
                                 starts.push_back({e, q});
