@@ -253,8 +253,8 @@ std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& t,
                             if (e < inf)
                                 starts.push_back({e, q});
                         }
-        std::sort(starts.begin(), starts.end(),
-                  [](const auto& a, const auto& b) { return a.first < b.first; });
+        std::stable_sort(starts.begin(), starts.end(),
+                         [](const auto& a, const auto& b) { return a.first < b.first; });
         Candidate best_rotation = on_fold;
         for (std::size_t k = 0; k < std::min<std::size_t>(2, starts.size()); ++k) {
             Candidate off = finish(starts[k].second, 600);
