@@ -102,3 +102,18 @@ def test_sheets_of_the_off_fold_design_verify(doc, design, tmp_path):
     proc = run_popup("verify", path, str(out))
     assert proc.returncode == 0, proc.stdout + proc.stderr
     assert proc.stdout.startswith("sheets match the design")
+
+
+def test_an_arm_added_with_its_fitted_defaults_on_a_side_pair_is_valid(doc, popup):
+    """What the RotationArm command does: no parameters given, the feature fits its defaults to
+    the pair (a side pair is open 90° and only as deep as the layer is high)."""
+    from popupwb import validity
+
+    make = popup.make
+    card = make.make_card(doc, **CARD)
+    layer = make.make_floating_layer(card, name="Layer", **LAYER)
+    arm = make.make_rotation_arm(layer, host_pair="Layer.side_backdrop", name="Arm")
+    recompute_ok(doc, card, layer, arm)
+    assert arm.Shape.isValid() and len(arm.Shape.Faces) == 2
+    report = validity.run_check(card)
+    assert report["valid"], report["diagnostics"]
