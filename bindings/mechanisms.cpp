@@ -168,6 +168,18 @@ void bind_mechanisms(py::module_& m)
         .def_readwrite("height", &FloatingLayerParams::height)
         .def_readwrite("support", &FloatingLayerParams::support)
         .def_readwrite("overhang", &FloatingLayerParams::overhang);
+    py::enum_<LayerSide>(m, "LayerSide")
+        .value("ground", LayerSide::ground)
+        .value("backdrop", LayerSide::backdrop);
+    m.def(
+        "floating_layer_side",
+        [](const FloatingLayerParams& p, LayerSide side, double angle) {
+            check_opening(angle, "angle");
+            return checked(floating_layer_side(p, side, angle), "floating_layer_side");
+        },
+        py::arg("params"), py::arg("side"), py::arg("angle"),
+        "Closed form: the layer's side pair (origin, axis, up, opening angle/2) posed when its "
+        "host is open at `angle`, in the host's frame.");
     py::class_<HorizontalTranslationParams, StepFoldParams>(m, "HorizontalTranslationParams")
         .def(py::init<>())
         .def_readwrite("reach", &HorizontalTranslationParams::reach);
@@ -183,6 +195,17 @@ void bind_mechanisms(py::module_& m)
     m.def("rotation_arm_tip", closed_form(&rotation_arm_tip, "rotation_arm_tip"), py::arg("params"),
           py::arg("opening"),
           "Closed form: the arm's tip P (x, y, z) in the host's frame at that opening.");
+    m.def(
+        "rotation_arm_tip_on_layer_side",
+        [](const RotationArmParams& arm, const FloatingLayerParams& layer, LayerSide side,
+           double angle) {
+            check_opening(angle, "angle");
+            return checked(rotation_arm_tip_on_layer_side(arm, layer, side, angle),
+                           "rotation_arm_tip_on_layer_side");
+        },
+        py::arg("arm"), py::arg("layer"), py::arg("side"), py::arg("angle"),
+        "Closed form: the tip of an arm on a floating layer's side pair, in the layer host's "
+        "frame when that host is open at `angle` (thesis §4.3.4, off the central fold).");
     py::class_<VBoxFoldParams>(m, "VBoxFoldParams")
         .def(py::init<>())
         .def_readwrite("offset", &VBoxFoldParams::offset)
@@ -222,8 +245,10 @@ void bind_mechanisms(py::module_& m)
     def_generator<HorizontalTranslationParams>(
         m, "add_horizontal_translation", &add_horizontal_translation,
         "Adds a horizontal translation: a step fold and a patch M through a slit at its nose.");
-    def_generator<RotationArmParams>(m, "add_rotation_arm", &add_rotation_arm,
-                                     "Adds a rotation arm (extended flat v-fold, thesis §4.3.4).");
+    def_generator<RotationArmParams>(
+        m, "add_rotation_arm", &add_rotation_arm,
+        "Adds a rotation arm (extended v-fold, thesis §4.3.4) on a flat host or a "
+        "floating layer's side pair.");
     m.def(
         "add_vertical_translation",
         [](Scaffold& s, const BasePatchPair& host, const VBoxFoldParams& p,

@@ -91,8 +91,9 @@ MECHANISMS = (
         "PopUp_RotationArm",
         "make_rotation_arm",
         "Rotation arm",
-        "Add a rotation arm (a flat v-fold whose wing carries an arm past the spine) on the "
-        "selected card or box fold",
+        "Add a rotation arm (a v-fold whose wing carries an arm past the spine) on the "
+        "selected card, box fold or floating layer (on a layer's side pair it turns off the "
+        "central fold)",
         motion=True,
     ),
     Mechanism(

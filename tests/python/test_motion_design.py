@@ -67,7 +67,11 @@ def test_design_motion_report_is_consistent_with_its_own_paths(animation):
     stages = [s for s, _ in r.timings]
     assert stages[0] == "targets" and stages[-1] == "total"
     assert all(t >= 0 for _, t in r.timings)
-    hosts = {"central fold"} | {m.name + ".wings" for m in r.mechanisms}
+    # A v-fold's wings carry the diagonal's step; a floating layer's side pairs carry a rotation
+    # off the central fold.
+    hosts = {"central fold"} | {
+        m.name + part for m in r.mechanisms for part in (".wings", ".side_ground", ".side_backdrop")
+    }
     for m in r.mechanisms:
         assert m.host in hosts
         assert m.type in (

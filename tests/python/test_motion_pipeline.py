@@ -31,6 +31,7 @@ ONE_PERCENT = 0.01 * make_animations.CARD_WIDTH  # 2.1 mm: "within 1 % of the ca
 NEAR_ZERO_MM = 0.5  # motion error (RMS over the samples, eq 6.6) of a path a mechanism can make
 RIGS = {
     "rig_rotation": "rotation",
+    "rig_rotation_off_fold": "rotation",
     "rig_vertical": "vertical",
     "rig_horizontal": "horizontal",
     "rig_diagonal": "diagonal",
@@ -105,6 +106,18 @@ def test_written_out_closed_forms_equal_the_library(s):
     assert make_animations.rotation_tip(p, [s])[0] == pytest.approx(
         np.array(popupcore.rotation_arm_tip(r, theta))[:2], abs=1e-9
     )
+    p = make_animations.MECHANISMS["rotation_off_fold"]["params"]
+    for hinge in (p["hinge"], -p["hinge"]):
+        arm = popupcore.RotationArmParams()
+        arm.offset, arm.spine, arm.run, arm.arm = 0.0, p["spine"], p["run"], p["arm"]
+        layer = popupcore.FloatingLayerParams()
+        layer.offset, layer.width, layer.support = p["offset"], p["spine"], abs(hinge)
+        side = popupcore.LayerSide.ground if hinge > 0 else popupcore.LayerSide.backdrop
+        law = make_animations.rotation_off_fold_tip(dict(p, hinge=hinge), [s])[0]
+        assert law == pytest.approx(
+            np.array(popupcore.rotation_arm_tip_on_layer_side(arm, layer, side, theta))[:2],
+            abs=1e-9,
+        )
     p = make_animations.MECHANISMS["vertical"]["params"]
     v = popupcore.VBoxFoldParams()
     v.offset, v.side, v.height, v.wall_angle = p["offset"], p["side"], p["height"], p["wall_angle"]
@@ -152,7 +165,8 @@ def _build_known_mechanisms(names):
 def test_the_synthetic_rigs_mechanisms_make_a_valid_card_together():
     """The answer the rigs ask for exists: all four mechanisms on one A4 card pass the simulator
     (so rig_four can be recovered without a collision)."""
-    report = popupcore.check_validity(_build_known_mechanisms(list(make_animations.MECHANISMS)))
+    four = ["rotation", "vertical", "horizontal", "diagonal"]
+    report = popupcore.check_validity(_build_known_mechanisms(four))
     assert report.valid, [d.message for d in report.diagnostics]
 
 
@@ -243,7 +257,19 @@ def test_synthetic_rig_recovers_its_mechanism(name):
     ident = known["identifiable"]
     carried = [mm for mm in result.mechanisms if mm.name in arm.mechanisms]
     types = sorted(mm.type for mm in carried)
-    if known["type"] == "rotation_arm":
+    if known["type"] == "rotation_off_fold":
+        # A floating layer carrying the arm on its side pair; the path fixes only the family's
+        # invariants (make_animations.identifiable, docs/MATH.md).
+        assert types == ["floating_layer", "rotation_arm"]
+        layer = next(mm for mm in carried if mm.type == "floating_layer")
+        rotation = next(mm for mm in carried if mm.type == "rotation_arm")
+        assert rotation.host == layer.name + ".side_ground"
+        lp, p = layer.parameters, rotation.parameters
+        assert p["offset"] == 0.0 and lp["width"] == p["spine"]
+        assert lp["offset"] + p["spine"] == pytest.approx(ident["s_along"], abs=ONE_PERCENT)
+        assert p["run"] + p["arm"] == pytest.approx(ident["reach"], abs=ONE_PERCENT)
+        assert lp["support"] + p["run"] == pytest.approx(ident["s_across"], abs=ONE_PERCENT)
+    elif known["type"] == "rotation_arm":
         assert types == ["rotation_arm"]
         p = carried[0].parameters
         for key in ("arm", "spine", "run", "offset"):

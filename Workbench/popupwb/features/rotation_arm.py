@@ -1,5 +1,8 @@
 """RotationArm: a v-fold lying flat on its host whose ground wing carries an arm past the spine;
-closing the card swings the arm's tip P (thesis §4.3.4, Fig 4.15; docs/MATH.md, Rotation).
+closing the card swings the arm's tip P (thesis §4.3.4, Fig 4.15; docs/MATH.md, Rotation). On a
+floating layer's side pair (HostPair "<layer>.side_ground" or ".side_backdrop", open 90°) it is
+built popped at that opening and turns about the support's foot, off the central fold (§4.3.4,
+last paragraph; docs/MATH.md, "A rotation arm on a floating layer's side").
 
 Stored in .FCStd files as popupwb.features.rotation_arm.RotationArm: never rename.
 """

@@ -8,6 +8,22 @@
 
 namespace popup {
 
+BasePatchPair floating_layer_side(const FloatingLayerParams& p, LayerSide side, double angle)
+{
+    // The support stays parallel to the backbone, which stays on the host's bisector z; the
+    // page turns by angle/2 from z. So the pair opens at angle/2 and its bisector leans angle/4
+    // from z toward the page (docs/MATH.md, "A rotation arm on a floating layer's side").
+    const double d = angle / 2, sign = side == LayerSide::ground ? 1.0 : -1.0;
+    BasePatchPair pair;
+    pair.name = side == LayerSide::ground ? "side_ground" : "side_backdrop";
+    pair.origin = Vec3(sign * p.support * std::sin(d), p.offset, p.support * std::cos(d));
+    pair.axis = Vec3::UnitY();
+    pair.up = Vec3(sign * std::sin(d / 2), 0, std::cos(d / 2));
+    pair.opening = d;
+    pair.length = p.width;
+    return pair;
+}
+
 Result<MechanismParts> add_floating_layer(Scaffold& scaffold, const BasePatchPair& host,
                                           const FloatingLayerParams& p, const std::string& name)
 {

@@ -8,16 +8,41 @@
 
 namespace popup {
 
-Vec3 rotation_arm_tip(const RotationArmParams& p, double opening)
+namespace {
+
+struct ArmPoints {
+    Vec3 S, Sb, R, P; ///< relative to O, in the host's frame
+};
+
+// The arm's points at host opening φ (docs/MATH.md, Rotation): the spine tip R = l (cos t, sin t)
+// in the (y, z) plane with tan(t/2) = w cos δ / l, S = (w sin δ, l, w cos δ) and its mirror S',
+// and P = R + (h / w)(R − S); δ = φ/2.
+ArmPoints arm_points(const RotationArmParams& p, double opening)
 {
-    // The spine tip R = l (cos t, sin t) in the (y, z) plane with tan(t/2) = w cos δ / l, and
-    // P = R + (h / w)(R − S), S = (w sin δ, l, w cos δ) (docs/MATH.md, Rotation).
     const double l = p.spine, w = p.run, h = p.arm, d = opening / 2;
     const double t = 2 * std::atan2(w * std::cos(d), l);
-    const Vec3 R(0, l * std::cos(t), l * std::sin(t));
-    const Vec3 S(w * std::sin(d), l, w * std::cos(d));
-    const Vec3 P = R + (h / w) * (R - S);
+    ArmPoints a;
+    a.R = Vec3(0, l * std::cos(t), l * std::sin(t));
+    a.S = Vec3(w * std::sin(d), l, w * std::cos(d));
+    a.Sb = Vec3(-w * std::sin(d), l, w * std::cos(d));
+    a.P = a.R + (h / w) * (a.R - a.S);
+    return a;
+}
+
+} // namespace
+
+Vec3 rotation_arm_tip(const RotationArmParams& p, double opening)
+{
+    const Vec3 P = arm_points(p, opening).P;
     return {P.x(), p.offset + P.y(), P.z()};
+}
+
+Vec3 rotation_arm_tip_on_layer_side(const RotationArmParams& arm, const FloatingLayerParams& layer,
+                                    LayerSide side, double angle)
+{
+    const BasePatchPair pair = floating_layer_side(layer, side, angle);
+    const Vec3 tip = rotation_arm_tip(arm, pair.opening);
+    return pair.to_world(tip.x(), tip.y(), tip.z());
 }
 
 Result<MechanismParts> add_rotation_arm(Scaffold& scaffold, const BasePatchPair& host,
@@ -25,12 +50,21 @@ Result<MechanismParts> add_rotation_arm(Scaffold& scaffold, const BasePatchPair&
 {
     Result<MechanismParts> r;
     Diagnostics& e = r.diagnostics;
-    check_flat_host(name, host, "a rotation arm", e);
-    if (!(p.spine > 0 && p.spine <= host.length)) {
+    if (!(host.opening > 1e-9 && host.opening <= M_PI + 1e-9)) {
+        std::ostringstream m;
+        m << name << ": host " << host.name << " is open " << host.opening * 180 / M_PI
+          << "° at the design state; a rotation arm needs a host open more than 0° and at most "
+             "180°";
+        e.push_back(Diagnostic::error(DiagnosticCode::bad_host, m.str(), about_parameter("Host")));
+    }
+    // A host's length is a difference of coordinates (a layer from offset to offset + width):
+    // a spine as long as it may exceed it by rounding.
+    const double length = host.length * (1 + 1e-12);
+    if (!(p.spine > 0 && p.spine <= length)) {
         std::ostringstream m;
         m << "> 0 and <= " << host.length << " mm (the length of " << host.name << ")";
         range_error(e, name, "Spine", p.spine, "mm", m.str());
-    } else if (!(p.offset >= 0 && p.offset + p.spine <= host.length)) {
+    } else if (!(p.offset >= 0 && p.offset + p.spine <= length)) {
         // The spine fits: only Offset can be at fault, and its range exists.
         std::ostringstream m;
         m << ">= 0 and <= " << host.length - p.spine << " mm (" << host.name << " is "
@@ -55,11 +89,22 @@ Result<MechanismParts> add_rotation_arm(Scaffold& scaffold, const BasePatchPair&
         r.ok = false;
         return r;
     }
-    const double l = p.spine, w = p.run, y0 = p.offset;
-    const Vec3 O(0, y0, 0), R(0, y0 + l, 0), S(w, y0 + l, 0), Sb(-w, y0 + l, 0),
-        P(-p.arm, y0 + l, 0);
+    // Flat on a flat host (P = (−h, l, 0)); on a host open less, the popped branch of the same
+    // closed form at the host's design opening, which the simulator then follows.
+    const double l = p.spine, y0 = p.offset;
+    const bool flat = std::abs(host.opening - M_PI) <= 1e-9;
+    ArmPoints a = arm_points(p, flat ? M_PI : host.opening);
+    if (flat) {
+        // Exactly on the host, not through cos(π/2) ≈ 6e-17.
+        a.R = Vec3(0, l, 0);
+        a.S = Vec3(p.run, l, 0);
+        a.Sb = Vec3(-p.run, l, 0);
+        a.P = Vec3(-p.arm, l, 0);
+    }
+    const Vec3 base(0, y0, 0);
+    const Vec3 O = base, R = base + a.R, S = base + a.S, Sb = base + a.Sb, P = base + a.P;
     MechanismBuilder m(scaffold, host, name);
-    // Both wings lie on the host, printed side up; R sits on the ground wing's edge S-P.
+    // Flat, both wings lie on the host printed side up; R sits on the ground wing's edge S-P.
     const int wing = m.patch({O, S, P}, PatchRole::support, "wing_arm");
     const int other = m.patch({O, R, Sb}, PatchRole::support, "wing_backdrop");
     m.tab(host.ground, wing, O, S, FoldDirection::valley);
@@ -68,9 +113,9 @@ Result<MechanismParts> add_rotation_arm(Scaffold& scaffold, const BasePatchPair&
     // side: a mountain (the sign of det[S, R, S'] in docs/MATH.md, Rotation). The spine crosses
     // the arm wing's paper, so the backdrop wing is a sheet of its own, glued on along it.
     m.tab(wing, other, O, R, FoldDirection::mountain);
-    double lo = 0.0, hi = l;
+    double lo = std::min(0.0, a.P.y()), hi = std::max(l, a.P.y());
     for (int k = 0; k <= 90; ++k) {
-        const double y = rotation_arm_tip(p, M_PI * k / 90).y() - y0;
+        const double y = rotation_arm_tip(p, host.opening * k / 90).y() - y0;
         lo = std::min(lo, y);
         hi = std::max(hi, y);
     }

@@ -54,7 +54,7 @@ double search_1d(const std::function<double(double)>& f, double lo, double hi, i
 MotionMechanism polish(MotionMechanism m, const std::function<double(const MotionMechanism&)>& f,
                        int evaluations)
 {
-    const int n = parameter_count(m.kind);
+    const int n = active_parameter_count(m);
     std::vector<MotionMechanism> simplex(n + 1, m);
     std::vector<double> value(n + 1);
     for (int i = 0; i < n; ++i) {
@@ -224,7 +224,44 @@ std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& t,
                 m = trial(l);
             }
         }
-        out[int(MotionKind::rotation)] = finish(m, 600);
+        Candidate on_fold = finish(m, 600);
+        // Off the fold (thesis §4.3.4, last paragraph): the arm on a floating layer's side pair
+        // turns about the support's foot. No closed-form start: a coarse grid over the side,
+        // the support, the spine, the run and the arm (the offset put where the open tip meets
+        // the last pose along the fold), then the polish from the best two starts.
+        std::vector<std::pair<double, MotionMechanism>> starts;
+        for (double side : {1.0, -1.0})
+            for (double sf : {0.12, 0.25, 0.4})
+                for (double lf : {0.15, 0.3, 0.5, 0.7})
+                    for (double wf : {0.0, 0.25, 0.5})
+                        for (double hf : {0.1, 0.3, 0.6, 0.9}) {
+                            MotionMechanism q;
+                            q.kind = MotionKind::rotation;
+                            // The layer's height follows Run and Arm, and closed it stands on
+                            // the page from the support up: keep both under the card's top.
+                            const double support = std::max(sf * D, shortest_crease());
+                            const double room = D - support - 2 * shortest_crease();
+                            const double l = std::max(lf * W, shortest_crease());
+                            const double w = shortest_crease() + 1 + wf * std::max(0.0, room);
+                            const double h = hf * std::min(l * l / w, std::max(room, 2.0));
+                            q.p = {0, l, w, h, side * support};
+                            const double tip_y = mechanism_point(q, M_PI).y();
+                            q.p[0] = clamp(A1.y() - tip_y, 0, std::max(0.0, W - l));
+                            // Closed, the arm's tip may reach past the fold's ends.
+                            fit_along_fold_when_closed(q, W);
+                            const double e = cost(q);
+                            if (e < inf)
+                                starts.push_back({e, q});
+                        }
+        std::stable_sort(starts.begin(), starts.end(),
+                         [](const auto& a, const auto& b) { return a.first < b.first; });
+        Candidate best_rotation = on_fold;
+        for (std::size_t k = 0; k < std::min<std::size_t>(2, starts.size()); ++k) {
+            Candidate off = finish(starts[k].second, 600);
+            if (off.error_mm < best_rotation.error_mm)
+                best_rotation = off;
+        }
+        out[int(MotionKind::rotation)] = best_rotation;
     }
     {
         // Vertical: F' is at offset when open and offset − height·sin(wall_angle) when closed.
@@ -330,10 +367,15 @@ MotionKind best_mapping(const std::array<Candidate, motion_kind_count>& c, const
     // Paths two mechanisms both make (within mapping_tie_fraction) go to the one with
     // fewer parameters: a diagonal whose step sits still on its wings also rises along the fold
     // exactly, but a vertical path is the v-box's (Table 6.1).
+    // A rotation off the fold counts its hinge too.
+    auto count = [&](int k) {
+        MotionMechanism m = c[k].mechanism;
+        m.kind = MotionKind(k);
+        return active_parameter_count(m);
+    };
     const double tie = c[best].error_mm + mapping_tie_fraction * diagonal;
     for (int k = 0; k < motion_kind_count; ++k)
-        if (c[k].error_mm <= tie &&
-            parameter_count(MotionKind(k)) < parameter_count(MotionKind(best)))
+        if (c[k].error_mm <= tie && count(k) < count(best))
             best = k;
     return MotionKind(best);
 }

@@ -148,7 +148,7 @@ private:
             if (s.printed)
                 return false; // nothing to change: the part lies on the page
             std::vector<int> params;
-            for (int k = 0; k < parameter_count(s.mechanism.kind); ++k)
+            for (int k = 0; k < active_parameter_count(s.mechanism); ++k)
                 if ((parameter_info(s.mechanism.kind, k).role == ParameterRole::position) ==
                     translate)
                     params.push_back(k);

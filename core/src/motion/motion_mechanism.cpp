@@ -21,7 +21,8 @@ constexpr double margin = 1.0; // mm kept inside every generator range, so the b
 RotationArmParams rotation_params(const MotionMechanism& m)
 {
     RotationArmParams r;
-    r.offset = m.p[0];
+    // Off the fold the arm starts at its layer's start, which is at `offset` on the card.
+    r.offset = m.p[4] == 0 ? m.p[0] : 0.0;
     r.spine = m.p[1];
     r.run = m.p[2];
     r.arm = m.p[3];
@@ -117,6 +118,56 @@ std::vector<Vec3> trilaterate(const Vec3& p1, const Vec3& p2, const Vec3& p3, do
     return {base + z * ez, base - z * ez};
 }
 
+LayerSide rotation_side(const MotionMechanism& m)
+{
+    return m.p[4] > 0 ? LayerSide::ground : LayerSide::backdrop;
+}
+
+// The parallel section's points of a floating layer at θ (docs/MATH.md, Box fold / Floating
+// layer): C on the bisector, the platform c above it along each page, the end creases
+// s·cos(θ/2) out of each end.
+/// Writes pieces over `out`'s, keeping their storage (the volumes call mechanism_parts in a loop).
+struct PartWriter {
+    std::vector<MechanismPart>& out;
+    std::size_t count = 0;
+    std::vector<Vec3>& add(int side, std::initializer_list<Vec3> vertices)
+    {
+        if (count == out.size())
+            out.emplace_back();
+        MechanismPart& part = out[count++];
+        part.side = side;
+        part.vertices.assign(vertices);
+        return part.vertices;
+    }
+};
+
+/// The parallel section (docs/MATH.md, Box fold / Floating layer): C on the bisector from the
+/// hinge up to c·ẑ, the legs L, R at s·g, s·b, the top halves reaching s + o, and the end panels
+/// from the legs' ends to the end creases g·cos(θ/2) out of each end.
+void layer_parts(const FloatingLayerParams& f, double theta, PartWriter& parts)
+{
+    const double d = theta / 2;
+    const Vec2 g = ground_dir(theta), b = backdrop_dir(theta);
+    const double c = f.height, s = f.support, reach = f.support + f.overhang;
+    const Vec2 top(0, c);
+    const double y0 = f.offset, y1 = f.offset + f.width;
+    auto strip = [&](const Vec2& p, const Vec2& q, int side) {
+        parts.add(side, {at(p, y0), at(q, y0), at(q, y1), at(p, y1)});
+    };
+    strip(Vec2(0, 0), top, 0);
+    strip(s * g, top + s * g, +1);
+    strip(s * b, top + s * b, -1);
+    strip(top, top + reach * g, +1);
+    strip(top, top + reach * b, -1);
+    const double out = s * std::cos(d);
+    for (double y : {y0, y1}) {
+        const double crease = y == y0 ? y0 - out : y1 + out;
+        const Vec3 foot(0, crease, out), head(0, crease, out + c);
+        parts.add(+1, {at(s * g, y), at(top + s * g, y), head, foot});
+        parts.add(-1, {at(s * b, y), at(top + s * b, y), head, foot});
+    }
+}
+
 std::string fail(const char* name, double value, const std::string& range)
 {
     std::ostringstream s;
@@ -153,11 +204,39 @@ int parameter_count(MotionKind kind)
     case MotionKind::horizontal:
         return 5;
     case MotionKind::rotation:
-        return 4;
+        return 5;
     case MotionKind::stationary:
         return 6;
     }
     return 0;
+}
+
+int active_parameter_count(const MotionMechanism& m)
+{
+    if (m.kind == MotionKind::rotation && !rotation_off_fold(m))
+        return 4;
+    return parameter_count(m.kind);
+}
+
+bool rotation_off_fold(const MotionMechanism& m)
+{
+    return m.kind == MotionKind::rotation && m.p[4] != 0;
+}
+
+double rotation_layer_height(double run, double arm)
+{
+    return std::max({run, arm, shortest_crease()}) + margin;
+}
+
+FloatingLayerParams rotation_layer(const MotionMechanism& m)
+{
+    FloatingLayerParams f;
+    f.offset = m.p[0];
+    f.width = m.p[1];
+    f.support = std::abs(m.p[4]);
+    f.height = rotation_layer_height(m.p[2], m.p[3]);
+    f.overhang = 0;
+    return f;
 }
 
 ParameterInfo parameter_info(MotionKind kind, int i)
@@ -176,8 +255,11 @@ ParameterInfo parameter_info(MotionKind kind, int i)
                                                {"run_ground", R::length},
                                                {"run_backdrop", R::length},
                                                {"reach", R::length}};
-    static const ParameterInfo rotation[] = {
-        {"offset", R::position}, {"spine", R::length}, {"run", R::length}, {"arm", R::length}};
+    static const ParameterInfo rotation[] = {{"offset", R::position},
+                                             {"spine", R::length},
+                                             {"run", R::length},
+                                             {"arm", R::length},
+                                             {"hinge", R::position}};
     static const ParameterInfo stationary[] = {{"offset", R::position}, {"width", R::length},
                                                {"height", R::length},   {"support", R::length},
                                                {"overhang", R::length}, {"anchor", R::position}};
@@ -200,6 +282,9 @@ Vec3 mechanism_point(const MotionMechanism& m, double theta)
 {
     switch (m.kind) {
     case MotionKind::rotation:
+        if (rotation_off_fold(m))
+            return rotation_arm_tip_on_layer_side(rotation_params(m), rotation_layer(m),
+                                                  rotation_side(m), theta);
         return rotation_arm_tip(rotation_params(m), theta);
     case MotionKind::vertical:
         return v_box_front_corner(vertical_params(m), theta);
@@ -228,29 +313,37 @@ void mechanism_parts(const MotionMechanism& m, double theta, std::vector<Mechani
 {
     const double d = theta / 2;
     const Vec2 g = ground_dir(theta), b = backdrop_dir(theta);
-    // Pieces written over `out`'s, keeping their storage (the volumes call this in a loop).
-    std::size_t count = 0;
+    PartWriter parts{out};
     auto add = [&](int side, std::initializer_list<Vec3> vertices) -> std::vector<Vec3>& {
-        if (count == out.size())
-            out.emplace_back();
-        MechanismPart& part = out[count++];
-        part.side = side;
-        part.vertices.assign(vertices);
-        return part.vertices;
+        return parts.add(side, vertices);
     };
     switch (m.kind) {
     case MotionKind::rotation: {
         // O, S, R, S' and the arm's tip P (docs/MATH.md, Rotation). The arm's wing O-S-P is cut
-        // along the spine O-R (R lies on S-P): O-S-R has x = α w sin δ ≥ 0, O-R-P x ≤ 0.
+        // along the spine O-R (R lies on S-P): O-S-R has x = α w sin δ ≥ 0, O-R-P x ≤ 0 in its
+        // host's frame. Off the fold the host is a floating layer's side pair at θ/2 (docs/MATH.md,
+        // A rotation arm on a floating layer's side): the layer's pieces come too, and the arm's
+        // keep to no side of the fold's plane (its tip may swing across it).
         const RotationArmParams r = rotation_params(m);
-        const double l = r.spine, w = r.run, t = 2 * std::atan2(w * std::cos(d), l);
-        const Vec3 O(0, r.offset, 0);
-        const Vec3 S(w * std::sin(d), r.offset + l, w * std::cos(d));
-        const Vec3 Sb(-w * std::sin(d), r.offset + l, w * std::cos(d));
-        const Vec3 R(0, r.offset + l * std::cos(t), l * std::sin(t));
-        add(+1, {O, S, R});
-        add(-1, {O, R, rotation_arm_tip(r, theta)});
-        add(-1, {O, R, Sb});
+        BasePatchPair host; // the central fold: the card frame
+        host.opening = theta;
+        const bool off_fold = rotation_off_fold(m);
+        if (off_fold) {
+            const FloatingLayerParams f = rotation_layer(m);
+            layer_parts(f, theta, parts);
+            host = floating_layer_side(f, rotation_side(m), theta);
+        }
+        const double e = host.opening / 2;
+        const double l = r.spine, w = r.run, t = 2 * std::atan2(w * std::cos(e), l);
+        auto world = [&](const Vec3& q) { return host.to_world(q.x(), q.y(), q.z()); };
+        const Vec3 O = world({0, r.offset, 0});
+        const Vec3 S = world({w * std::sin(e), r.offset + l, w * std::cos(e)});
+        const Vec3 Sb = world({-w * std::sin(e), r.offset + l, w * std::cos(e)});
+        const Vec3 R = world({0, r.offset + l * std::cos(t), l * std::sin(t)});
+        const Vec3 P = world(rotation_arm_tip(r, host.opening));
+        add(off_fold ? 0 : +1, {O, S, R});
+        add(off_fold ? 0 : -1, {O, R, P});
+        add(off_fold ? 0 : -1, {O, R, Sb});
         break;
     }
     case MotionKind::vertical: {
@@ -269,10 +362,10 @@ void mechanism_parts(const MotionMechanism& m, double theta, std::vector<Mechani
         add(-1, {F, Sb, Sb + lift, Ft});
         const std::vector<Vec3> corner =
             trilaterate(Ft, Sg + lift, Sb + lift, 2 * along, p.side, p.side);
-        add(+1, {Ft, Sg + lift})
-            .insert(out[count - 1].vertices.end(), corner.begin(), corner.end());
-        add(-1, {Ft, Sb + lift})
-            .insert(out[count - 1].vertices.end(), corner.begin(), corner.end());
+        std::vector<Vec3>& halfSg = add(+1, {Ft, Sg + lift});
+        halfSg.insert(halfSg.end(), corner.begin(), corner.end());
+        std::vector<Vec3>& halfSb = add(-1, {Ft, Sb + lift});
+        halfSb.insert(halfSb.end(), corner.begin(), corner.end());
         break;
     }
     case MotionKind::horizontal: {
@@ -320,33 +413,11 @@ void mechanism_parts(const MotionMechanism& m, double theta, std::vector<Mechani
                 wings.to_world(C.x(), y1, C.y()), wings.to_world(D.x(), y1, D.y())});
         break;
     }
-    case MotionKind::stationary: {
-        // The parallel section (docs/MATH.md, Box fold / Floating layer): C on the bisector from
-        // the hinge up to c·ẑ, the legs L, R at s·g, s·b, the top halves reaching s + o, and the
-        // end panels from the legs' ends to the end creases g·cos(θ/2) out of each end.
-        const FloatingLayerParams f = layer_params(m);
-        const double c = f.height, s = f.support, reach = f.support + f.overhang;
-        const Vec2 top(0, c);
-        const double y0 = f.offset, y1 = f.offset + f.width;
-        auto strip = [&](const Vec2& p, const Vec2& q, int side) {
-            add(side, {at(p, y0), at(q, y0), at(q, y1), at(p, y1)});
-        };
-        strip(Vec2(0, 0), top, 0);
-        strip(s * g, top + s * g, +1);
-        strip(s * b, top + s * b, -1);
-        strip(top, top + reach * g, +1);
-        strip(top, top + reach * b, -1);
-        const double out = s * std::cos(d);
-        for (double y : {y0, y1}) {
-            const double crease = y == y0 ? y0 - out : y1 + out;
-            const Vec3 foot(0, crease, out), head(0, crease, out + c);
-            add(+1, {at(s * g, y), at(top + s * g, y), head, foot});
-            add(-1, {at(s * b, y), at(top + s * b, y), head, foot});
-        }
+    case MotionKind::stationary:
+        layer_parts(layer_params(m), theta, parts);
         break;
     }
-    }
-    out.resize(count);
+    out.resize(parts.count);
 }
 
 std::vector<MechanismPart> mechanism_parts(const MotionMechanism& m, double theta)
@@ -401,12 +472,28 @@ std::string infeasibility(const MotionMechanism& m, const CardParams& card)
         // The wing's width: a glue tab on its crease needs a patch that wide to sit on.
         if (!(r.run >= shortest_crease()))
             return fail("run", r.run, ">= the shortest glued crease");
-        if (!(r.offset >= 0 && r.offset + r.spine <= W))
-            return fail("offset", r.offset, "in [0, card width - spine]");
-        if (!(r.run > margin && r.run < D - margin))
-            return fail("run", r.run, "in (1, card depth - 1)");
-        if (!(r.arm > margin && r.arm <= std::min(r.spine * r.spine / r.run, D) * (1 - 1e-6)))
-            return fail("arm", r.arm, "in (1, min(spine²/run, card depth)]");
+        if (!(m.p[0] >= 0 && m.p[0] + r.spine <= W))
+            return fail("offset", m.p[0], "in [0, card width - spine]");
+        if (!rotation_off_fold(m)) {
+            if (!(r.run > margin && r.run < D - margin))
+                return fail("run", r.run, "in (1, card depth - 1)");
+            if (!(r.arm > margin && r.arm <= std::min(r.spine * r.spine / r.run, D) * (1 - 1e-6)))
+                return fail("arm", r.arm, "in (1, min(spine²/run, card depth)]");
+            break;
+        }
+        // On a layer's side pair: the layer's supports and height are glued creases; the wings
+        // reach the page beyond the support (D − s) and the support (the layer's height, which
+        // rotation_layer_height keeps above Run and Arm).
+        const FloatingLayerParams f = rotation_layer(m);
+        if (!(f.support >= shortest_crease() && f.support < D - margin))
+            return fail("hinge", m.p[4], "with |hinge| in [shortest glued crease, card depth - 1)");
+        if (!(r.run > margin && r.run < D - f.support - margin))
+            return fail("run", r.run, "in (1, card depth - |hinge| - 1)");
+        if (!(r.arm > margin && r.arm <= r.spine * r.spine / r.run * (1 - 1e-6)))
+            return fail("arm", r.arm, "in (1, spine²/run]");
+        // Closed, the support stands on the page from s to s + height.
+        if (!(f.support + f.height < D - margin))
+            return fail("hinge", m.p[4], "with the layer's height under the closed card's top");
         break;
     }
     case MotionKind::vertical: {
@@ -523,7 +610,28 @@ Result<std::vector<MechanismParts>> build_mechanism(Scaffold& scaffold, const Ba
         const RotationArmParams r = rotation_params(m);
         row.type = "rotation_arm";
         row.parameters = {{"offset", r.offset}, {"spine", r.spine}, {"run", r.run}, {"arm", r.arm}};
-        take(add_rotation_arm(scaffold, host, r, name), row);
+        if (!rotation_off_fold(m)) {
+            take(add_rotation_arm(scaffold, host, r, name), row);
+            break;
+        }
+        // Off the fold: the floating layer first (the host before what it carries), then the
+        // arm on its side pair (docs/MATH.md, A rotation arm on a floating layer's side).
+        const FloatingLayerParams f = rotation_layer(m);
+        FittedMechanism layer;
+        layer.type = "floating_layer";
+        layer.name = name + "_layer";
+        layer.host = row.host;
+        layer.parameters = {{"offset", f.offset},
+                            {"width", f.width},
+                            {"height", f.height},
+                            {"support", f.support},
+                            {"overhang", f.overhang}};
+        if (!take(add_floating_layer(scaffold, host, f, layer.name), layer))
+            break;
+        const BasePatchPair side =
+            out.value.back().offered.at(rotation_side(m) == LayerSide::ground ? 1 : 2);
+        row.host = side.name;
+        take(add_rotation_arm(scaffold, side, r, name), row);
         break;
     }
     case MotionKind::vertical: {

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "popup/fitting/fit_design.hpp"
+#include "popup/mechanisms/floating_layer.hpp"
 #include "popup/mechanisms/mechanism.hpp"
 #include "popup/model/card.hpp"
 
@@ -31,7 +32,10 @@ constexpr int max_parameters = 8;
 /// - diagonal   (add_v_fold, spine standing, + add_step_fold on its wings): offset, run,
 ///               hinge_angle, spine, step_offset, step_width, run_ground, run_backdrop
 /// - horizontal (add_horizontal_translation): offset, width, run_ground, run_backdrop, reach
-/// - rotation   (add_rotation_arm): offset, spine, run, arm
+/// - rotation   (add_rotation_arm): offset, spine, run, arm, hinge — hinge 0: on the central
+///               fold; ±s: on the side pair (+ ground, − backdrop) of a floating layer with
+///               supports s from the fold, as wide as the spine, from offset, its height
+///               rotation_layer_height (thesis §4.3.4, last paragraph: a rotation off the fold)
 /// - stationary (add_floating_layer): offset, width, height, support, overhang, anchor (the
 ///               platform point, across the fold, that carries the part)
 struct MotionMechanism {
@@ -41,6 +45,18 @@ struct MotionMechanism {
 
 int parameter_count(MotionKind kind);
 ParameterInfo parameter_info(MotionKind kind, int index);
+/// The parameters that shape this mechanism: a rotation on the central fold (hinge 0) has no
+/// layer, so its hinge is not stepped (a small hinge is no layer either: it is infeasible).
+int active_parameter_count(const MotionMechanism& m);
+
+/// A rotation standing on a floating layer's side pair (hinge != 0).
+bool rotation_off_fold(const MotionMechanism& m);
+/// The floating layer an off-fold rotation stands on: supports |hinge|, width spine, from
+/// offset, no overhang, height rotation_layer_height.
+FloatingLayerParams rotation_layer(const MotionMechanism& m);
+/// The layer's height: the lowest the arm's checks allow (Run < height, Arm <= height) with
+/// 1 mm to spare, at least the shortest glued crease. The tip's path does not depend on it.
+double rotation_layer_height(double run, double arm);
 
 /// The mechanism's moving point (the end effector it carries) in the card frame when the card
 /// is open at theta: the rotation arm's tip, the v-box's front top corner, the extruding patch's

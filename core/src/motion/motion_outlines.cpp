@@ -64,6 +64,14 @@ void outline_motion(const Animation& animation, MotionResult& r, const CancelFla
         const std::vector<std::string> parts = outlined_parts(m.type);
         if (parts.empty())
             continue;
+        // A mechanism that hosts another (the floating layer under a rotation off the fold)
+        // stands under the part; the one it carries takes the outline.
+        const bool hosts =
+            std::any_of(r.mechanisms.begin(), r.mechanisms.end(), [&](const FittedMechanism& f) {
+                return f.host.rfind(m.name + ".", 0) == 0;
+            });
+        if (hosts)
+            continue;
         std::set<int> vertices;
         std::string chains;
         for (std::size_t j = 0; j < r.chains.size(); ++j) {

@@ -369,3 +369,102 @@ TEST(ClosedForm, HorizontalTranslationSlidesThroughTheSlit)
     loose.slits.clear();
     EXPECT_FALSE(check_validity(loose).stable);
 }
+
+// docs/MATH.md, "A rotation arm on a floating layer's side" (thesis §4.3.4, last paragraph): the
+// arm stands on a side pair open 90° at the design state, which opens at θ/2 while the card
+// opens at θ, so the arm turns about the support's foot at x = ±support, off the central fold.
+namespace {
+struct LayerArm {
+    FloatingLayerParams layer;
+    RotationArmParams arm;
+};
+
+LayerArm layer_arm()
+{
+    LayerArm d;
+    d.layer.offset = 60;
+    d.layer.width = 70;
+    d.layer.height = 35;
+    d.layer.support = 30;
+    d.layer.overhang = 0;
+    d.arm.offset = 15;
+    d.arm.spine = 40;
+    d.arm.run = 25; // < the support's height 35
+    d.arm.arm = 30; // <= min(l²/w = 64, 35)
+    return d;
+}
+} // namespace
+
+TEST(ClosedForm, RotationArmOnAFloatingLayersSideTurnsAboutTheSupport)
+{
+    for (LayerSide side : {LayerSide::ground, LayerSide::backdrop}) {
+        SCOPED_TRACE(side == LayerSide::ground ? "side_ground" : "side_backdrop");
+        Scaffold s = card();
+        const LayerArm d = layer_arm();
+        const auto layer = add_floating_layer(s, central_fold(s), d.layer, "Layer");
+        ASSERT_TRUE(layer.ok) << layer.diagnostics.front().message;
+        const BasePatchPair& host = layer.value.offered[side == LayerSide::ground ? 1 : 2];
+        // The closed-form frame at the design angle is the offered pair.
+        const BasePatchPair at_design = floating_layer_side(d.layer, side, M_PI);
+        EXPECT_LT((at_design.origin - host.origin).norm(), 1e-12);
+        EXPECT_LT((at_design.up - host.up).norm(), 1e-12);
+        EXPECT_NEAR(at_design.opening, host.opening, 1e-12);
+        const auto arm = add_rotation_arm(s, host, d.arm, "Arm");
+        ASSERT_TRUE(arm.ok) << arm.diagnostics.front().message;
+        // The tip vertex of the arm's wing at the design state, read off the built patch.
+        const Patch* wing = s.find_patch(arm.value.patches[0]);
+        ASSERT_EQ(wing->outer.size(), 3u);
+        const Vec3 tip0 = wing->outer[2];
+        EXPECT_LT((tip0 - rotation_arm_tip_on_layer_side(d.arm, d.layer, side, M_PI)).norm(), 1e-9);
+        // The support's foot is the centre of the turn: at 180° the tip's distance to the
+        // hinge line (x = ±30, z = 0) is that of P from the host hinge, √(P_x² + P_z²).
+        const Vec3 local = rotation_arm_tip(d.arm, M_PI / 2);
+        const double sign = side == LayerSide::ground ? 1 : -1;
+        EXPECT_NEAR(std::hypot(tip0.x() - sign * 30, tip0.z()), std::hypot(local.x(), local.z()),
+                    1e-9);
+        const auto sweep = simulate_fold(s, {M_PI, 170 * M_PI / 180, 120 * M_PI / 180,
+                                             75 * M_PI / 180, 30 * M_PI / 180, 5 * M_PI / 180});
+        ASSERT_TRUE(sweep.value.complete);
+        for (const FoldState& st : sweep.value.states) {
+            const Vec3 at = fixtures::world_point(s, st, wing->id, tip0);
+            const Vec3 expected = rotation_arm_tip_on_layer_side(d.arm, d.layer, side, st.angle);
+            EXPECT_LT((at - expected).norm(), 1e-6) << "at " << st.angle * 180 / M_PI << "°";
+        }
+        const ValidityReport r = check_validity(s);
+        EXPECT_TRUE(r.valid()) << (r.diagnostics.empty() ? "" : r.diagnostics.front().message);
+    }
+}
+
+TEST(RotationArm, OnAFloatingLayersSideNamesItsBadParameters)
+{
+    const LayerArm d = layer_arm();
+    auto refused = [&](RotationArmParams arm, const std::string& parameter,
+                       const std::string& mentions) {
+        Scaffold s = card();
+        const auto layer = add_floating_layer(s, central_fold(s), d.layer, "Layer");
+        ASSERT_TRUE(layer.ok);
+        const size_t patches = s.patches.size();
+        const auto r = add_rotation_arm(s, layer.value.offered[1], arm, "Arm");
+        ASSERT_FALSE(r.ok);
+        EXPECT_EQ(r.diagnostics.front().parameter, parameter);
+        EXPECT_NE(r.diagnostics.front().message.find(mentions), std::string::npos)
+            << r.diagnostics.front().message;
+        EXPECT_EQ(s.patches.size(), patches);
+    };
+    RotationArmParams a = d.arm;
+    a.run = 35; // the support is 35 mm high: the backdrop wing would run off it
+    refused(a, "Run", "< 35 mm");
+    a = d.arm;
+    a.arm = 36; // longer than the support
+    refused(a, "Arm", "<= 35 mm");
+    a = d.arm;
+    a.spine = 71; // the layer is 70 mm wide
+    refused(a, "Spine", "<= 70 mm");
+    // A host closed at the design state has no opening to build on.
+    Scaffold s = card();
+    BasePatchPair closed = central_fold(s);
+    closed.opening = 0;
+    const auto r = add_rotation_arm(s, closed, d.arm, "Arm");
+    ASSERT_FALSE(r.ok);
+    EXPECT_EQ(r.diagnostics.front().parameter, "Host");
+}

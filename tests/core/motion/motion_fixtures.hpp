@@ -30,4 +30,14 @@ inline MotionMechanism sample_mechanism(MotionKind kind)
     return m;
 }
 
+/// A rotation off the central fold: the arm on the side pair of a floating layer whose supports
+/// stand 30 mm from the fold (side +1: the ground's, −1: the backdrop's).
+inline MotionMechanism off_fold_rotation(double side)
+{
+    MotionMechanism m;
+    m.kind = MotionKind::rotation;
+    m.p = {50, 40, 25, 30, side * 30};
+    return m;
+}
+
 } // namespace popup::motion::testing

@@ -70,6 +70,61 @@ TEST(MechanismFit, RecoversTypeAndParametersOfClosedFormPaths)
     }
 }
 
+// A path made by the off-fold closed form (docs/MATH.md, A rotation arm on a floating layer's
+// side) maps to a rotation off the fold on the same side, and the fit finds what the path pins
+// down within 1 % of the card size: offset + spine, the hinge's direction spine/run, the tip's
+// reach from the wing's far hinge end S, run + arm, and on the ground side |hinge| + run (S on
+// the page), on the backdrop side |hinge|. (Sliding O along O-S, a homothety about S, keeps the
+// tip's (x, y): the five parameters make a one-parameter family of equal paths, MATH.md.)
+TEST(MechanismFit, RecoversARotationOffTheFold)
+{
+    const double tolerance = 0.01 * 210;
+    for (double side : {1.0, -1.0}) {
+        SCOPED_TRACE(side > 0 ? "side_ground" : "side_backdrop");
+        const MotionMechanism truth = testing::off_fold_rotation(side);
+        const ChainTarget t = target_of(truth);
+        const auto candidates = fit_candidates(t, a4(), 25);
+        EXPECT_EQ(best_mapping(candidates, t, 2.0, 200.0), MotionKind::rotation);
+        const Candidate& c = candidates[int(MotionKind::rotation)];
+        EXPECT_LT(c.error_mm, 0.05);
+        const auto& p = c.mechanism.p;
+        const auto& q = truth.p;
+        SCOPED_TRACE(::testing::Message() << "fitted offset " << p[0] << ", spine " << p[1]
+                                          << ", run " << p[2] << ", arm " << p[3] << ", hinge "
+                                          << p[4] << "; error " << c.error_mm << " mm");
+        EXPECT_GT(p[4] * side, 0) << "the hinge on the other side: " << p[4];
+        if (side > 0)
+            EXPECT_NEAR(std::abs(p[4]) + p[2], std::abs(q[4]) + q[2], tolerance);
+        else
+            EXPECT_NEAR(p[4], q[4], tolerance);
+        EXPECT_NEAR(p[0] + p[1], q[0] + q[1], tolerance);
+        EXPECT_NEAR(p[1] / p[2], q[1] / q[2], 0.01 * q[1] / q[2]);
+        EXPECT_NEAR(p[2] + p[3], q[2] + q[3], tolerance);
+    }
+}
+
+// The family of equal paths above, by the homothety about S (k = 0.3 of O-S): on the ground
+// side the tip does not move at all; on the backdrop side (S on the support) the homothety is
+// followed by a slide down the support, and the tip moves by k·run along z only, unseen from
+// above (docs/MATH.md, A rotation arm on a floating layer's side).
+TEST(MechanismFit, SlidingTheArmsVertexAlongItsHingeKeepsThePath)
+{
+    for (double side : {1.0, -1.0}) {
+        const MotionMechanism a = testing::off_fold_rotation(side);
+        MotionMechanism b = a;
+        const double k = 0.3, l = a.p[1], w = a.p[2];
+        const double hinge = side > 0 ? a.p[4] + k * w : a.p[4];
+        b.p = {a.p[0] + k * l, (1 - k) * l, (1 - k) * w, a.p[3] + k * w, hinge};
+        ASSERT_EQ(infeasibility(b, a4()), "");
+        for (int i = 0; i <= 36; ++i) {
+            const double theta = M_PI * i / 36;
+            const Vec3 d = mechanism_point(b, theta) - mechanism_point(a, theta);
+            EXPECT_LT(d.head<2>().norm(), 1e-9) << side;
+            EXPECT_NEAR(d.z(), side > 0 ? 0.0 : -k * w, 1e-9) << side;
+        }
+    }
+}
+
 TEST(MechanismFit, HorizontalRunsRatioIsRecovered)
 {
     const MotionMechanism truth = testing::sample_mechanism(MotionKind::horizontal);

@@ -40,16 +40,26 @@ constexpr MotionKind all_kinds[] = {MotionKind::vertical, MotionKind::diagonal,
                                     MotionKind::horizontal, MotionKind::rotation,
                                     MotionKind::stationary};
 
+// Every kind's sample, and the rotation off the fold on either side of a floating layer.
+std::vector<std::pair<std::string, MotionMechanism>> samples()
+{
+    std::vector<std::pair<std::string, MotionMechanism>> out;
+    for (MotionKind kind : all_kinds)
+        out.push_back({to_string(kind), sample_mechanism(kind)});
+    out.push_back({"rotation on side_ground", testing::off_fold_rotation(1)});
+    out.push_back({"rotation on side_backdrop", testing::off_fold_rotation(-1)});
+    return out;
+}
+
 TEST(MotionMechanism, SampleParametersAreFeasibleAndTheDesignIsValid)
 {
     CardParams card;
     card.depth = 148;
-    for (MotionKind kind : all_kinds) {
-        const MotionMechanism m = sample_mechanism(kind);
-        EXPECT_EQ(infeasibility(m, card), "") << to_string(kind);
+    for (const auto& [kind, m] : samples()) {
+        EXPECT_EQ(infeasibility(m, card), "") << kind;
         const Built b = build(m);
         const ValidityReport report = check_validity(b.scaffold);
-        EXPECT_TRUE(report.valid()) << to_string(kind);
+        EXPECT_TRUE(report.valid()) << kind;
     }
 }
 
@@ -58,8 +68,7 @@ TEST(MotionMechanism, PointPathEqualsTheSimulatorsOverTheFold)
     std::vector<double> angles;
     for (int k = 0; k <= 36; ++k)
         angles.push_back(M_PI * k / 36);
-    for (MotionKind kind : all_kinds) {
-        const MotionMechanism m = sample_mechanism(kind);
+    for (const auto& [kind, m] : samples()) {
         const Built b = build(m);
         // The carried point at the design state lies on one of the mechanism's patches (the
         // first one built: the rotation arm's tip also touches the other wing's edge at 180°);
@@ -71,9 +80,9 @@ TEST(MotionMechanism, PointPathEqualsTheSimulatorsOverTheFold)
             if (carrier < 0 && patch->contains(design, 1e-9))
                 carrier = id;
         }
-        ASSERT_GE(carrier, 0) << to_string(kind);
+        ASSERT_GE(carrier, 0) << kind;
         const Result<FoldSweep> sweep = simulate_fold(b.scaffold, angles);
-        ASSERT_TRUE(sweep.ok && sweep.value.complete) << to_string(kind);
+        ASSERT_TRUE(sweep.ok && sweep.value.complete) << kind;
         const int index = b.scaffold.patch_index(carrier);
         double worst = 0;
         for (const FoldState& state : sweep.value.states) {
@@ -81,7 +90,7 @@ TEST(MotionMechanism, PointPathEqualsTheSimulatorsOverTheFold)
             const Vec3 closed = mechanism_point(m, state.angle);
             worst = std::max(worst, (simulated.head<2>() - closed.head<2>()).norm());
         }
-        EXPECT_LT(worst, 1e-6) << to_string(kind) << ": card (x, y) differs by " << worst << " mm";
+        EXPECT_LT(worst, 1e-6) << kind << ": card (x, y) differs by " << worst << " mm";
     }
 }
 
@@ -108,8 +117,7 @@ TEST(MotionMechanism, CollisionVolumeHoldsEverySimulatedPatchOver91Angles)
     for (int k = 0; k <= 90; ++k)
         angles.push_back(M_PI * k / 90);
     const VolumeOptions options;
-    for (MotionKind kind : all_kinds) {
-        const MotionMechanism m = sample_mechanism(kind);
+    for (const auto& [kind, m] : samples()) {
         const CollisionVolume volume = collision_volume(m, options);
         ASSERT_EQ(int(volume.bands.size()), options.bands);
         const std::size_t pieces = volume.sides.size();
@@ -141,7 +149,7 @@ TEST(MotionMechanism, CollisionVolumeHoldsEverySimulatedPatchOver91Angles)
             }
         }
         EXPECT_GT(checked, 91 * 3);
-        EXPECT_EQ(outside, 0) << to_string(kind);
+        EXPECT_EQ(outside, 0) << kind;
     }
 }
 

@@ -15,6 +15,16 @@ struct FloatingLayerParams : Placement1D {
     double overhang = 15.0; ///< platform beyond each support (mm)
 };
 
+/// A floating layer's side pairs (offered as "<name>.side_ground" and "<name>.side_backdrop"):
+/// the host's page outside a support and that support, hinged at `support` from the host hinge.
+enum class LayerSide { ground, backdrop };
+
+/// Closed form: the side pair `side` posed when the layer's host (built flat) is open at
+/// `angle`, in the host's frame: the hinge at support·g(angle) (or b), y from the layer's offset,
+/// `up` the bisector of the page and the support (which stays along the host's z), opening
+/// angle/2. Patch ids and depths are left unset (the offered pair has them).
+BasePatchPair floating_layer_side(const FloatingLayerParams& params, LayerSide side, double angle);
+
 Result<MechanismParts> add_floating_layer(Scaffold& scaffold, const BasePatchPair& host,
                                           const FloatingLayerParams& params,
                                           const std::string& name = "FloatingLayer");
