@@ -511,17 +511,19 @@ def _crossing_alike():
 
 
 def _conflicting():
-    """One hand rises along the fold (0, 60 → 110) while the other sweeps out across it at
-    y = 85 (x 0 → 60): the mechanisms cross each other and the motions differ (one must stay)."""
+    """Both hands leave the same point of the fold (0, 85) in opposite directions, one to x = −60
+    and one to x = +60: whatever carries them stands on the same stretch of the fold, and the
+    motions differ (one must stay). (A hand rising along the fold beside one sweeping across it,
+    the first version, was resolved by a tall v-box passing over the extruding patch.)"""
     s = s_values()
     paths = {
-        "LeftArm": _line((0.0, 60.0), (0.0, 110.0), s),
+        "LeftArm": _line((0.0, 85.0), (-60.0, 85.0), s),
         "RightArm": _line((0.0, 85.0), (60.0, 85.0), s),
     }
     root, motion, known = _two_arms(
-        paths, [(-50.0, 50.0), (50.0, 30.0)], lambda n: {"kind": "line", "group": "conflict"}
+        paths, [(-50.0, 50.0), (50.0, 50.0)], lambda n: {"kind": "line", "group": "conflict"}
     )
-    known["LeftArmFore"].update(start=[0.0, 60.0], end=[0.0, 110.0], mapping="vertical")
+    known["LeftArmFore"].update(start=[0.0, 85.0], end=[-60.0, 85.0], mapping="horizontal")
     known["RightArmFore"].update(start=[0.0, 85.0], end=[60.0, 85.0], mapping="horizontal")
     return root, motion, known
 
@@ -662,7 +664,7 @@ ANIMATIONS = {
     ),
     "line_diagonal": (_line_diagonal, "a hand moving on a straight diagonal (rotations)"),
     "crossing_alike": (_crossing_alike, "two crossing arms whose hands rise side by side"),
-    "conflicting_arms": (_conflicting, "two arms whose hands cross paths, moving differently"),
+    "conflicting_arms": (_conflicting, "two hands leaving one point of the fold in opposite directions"),
     "character": (_character, "body, head, two arms, two legs (six chains)"),
     "rig_rotation": (lambda: _synthetic(["rotation"]), "hand on a rotation arm's closed form"),
     "rig_rotation_off_fold": (

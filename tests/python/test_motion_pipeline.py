@@ -332,14 +332,6 @@ def test_two_crossing_arms_that_move_alike_are_merged():
         assert travel[1] == pytest.approx(40.0, abs=4 * ONE_PERCENT)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="with the per-piece collision volumes the search resolves conflicting_arms without a "
-    "stationary chain: a v-box 143 mm tall whose top passes over the extruding patch (errors "
-    "4.1 and 1.5 mm, and the simulator finds the card valid); the rig needs arms that cannot "
-    "both move, which a longer sweep (x 0-100, y 40-130) did not give either (docs/DESIGN.md, "
-    "Tight collision volumes)",
-)
 def test_two_conflicting_arms_leave_one_stationary_and_say_why():
     result = design("conflicting_arms")
     arms = [chain_for(result, bone) for bone in ("LeftArmFore", "RightArmFore")]
