@@ -664,7 +664,10 @@ ANIMATIONS = {
     ),
     "line_diagonal": (_line_diagonal, "a hand moving on a straight diagonal (rotations)"),
     "crossing_alike": (_crossing_alike, "two crossing arms whose hands rise side by side"),
-    "conflicting_arms": (_conflicting, "two hands leaving one point of the fold in opposite directions"),
+    "conflicting_arms": (
+        _conflicting,
+        "two hands leaving one point of the fold in opposite directions",
+    ),
     "character": (_character, "body, head, two arms, two legs (six chains)"),
     "rig_rotation": (lambda: _synthetic(["rotation"]), "hand on a rotation arm's closed form"),
     "rig_rotation_off_fold": (
