@@ -168,6 +168,22 @@ void layer_parts(const FloatingLayerParams& f, double theta, PartWriter& parts)
     }
 }
 
+/// The report's row of a floating layer (the stationary mapping's, or an off-fold arm's host).
+FittedMechanism layer_row(const FloatingLayerParams& f, const std::string& name,
+                          const std::string& host)
+{
+    FittedMechanism row;
+    row.type = "floating_layer";
+    row.name = name;
+    row.host = host;
+    row.parameters = {{"offset", f.offset},
+                      {"width", f.width},
+                      {"height", f.height},
+                      {"support", f.support},
+                      {"overhang", f.overhang}};
+    return row;
+}
+
 std::string fail(const char* name, double value, const std::string& range)
 {
     std::ostringstream s;
@@ -617,15 +633,7 @@ Result<std::vector<MechanismParts>> build_mechanism(Scaffold& scaffold, const Ba
         // Off the fold: the floating layer first (the host before what it carries), then the
         // arm on its side pair (docs/MATH.md, A rotation arm on a floating layer's side).
         const FloatingLayerParams f = rotation_layer(m);
-        FittedMechanism layer;
-        layer.type = "floating_layer";
-        layer.name = name + "_layer";
-        layer.host = row.host;
-        layer.parameters = {{"offset", f.offset},
-                            {"width", f.width},
-                            {"height", f.height},
-                            {"support", f.support},
-                            {"overhang", f.overhang}};
+        const FittedMechanism layer = layer_row(f, name + "_layer", row.host);
         if (!take(add_floating_layer(scaffold, host, f, layer.name), layer))
             break;
         const BasePatchPair side =
@@ -681,13 +689,7 @@ Result<std::vector<MechanismParts>> build_mechanism(Scaffold& scaffold, const Ba
     }
     case MotionKind::stationary: {
         const FloatingLayerParams f = layer_params(m);
-        row.type = "floating_layer";
-        row.parameters = {{"offset", f.offset},
-                          {"width", f.width},
-                          {"height", f.height},
-                          {"support", f.support},
-                          {"overhang", f.overhang}};
-        take(add_floating_layer(scaffold, host, f, name), row);
+        take(add_floating_layer(scaffold, host, f, name), layer_row(f, name, row.host));
         break;
     }
     }
