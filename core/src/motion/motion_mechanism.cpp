@@ -507,6 +507,13 @@ std::string infeasibility(const MotionMechanism& m, const CardParams& card)
             return fail("run", r.run, "in (1, card depth - |hinge| - 1)");
         if (!(r.arm > margin && r.arm <= r.spine * r.spine / r.run * (1 - 1e-6)))
             return fail("arm", r.arm, "in (1, spine²/run]");
+        // One wing is glued to a support along O–S, the diagonal of the support's Spine × Run
+        // corner: held to 20°..70° from the support's edges so the glue tab beside it has room
+        // (at 5.6°, found on a boxing BVH, the sheets found no room for any tab and the wing was a
+        // sliver).
+        if (!(r.run >= std::tan(20 * M_PI / 180) * r.spine &&
+              r.run <= std::tan(70 * M_PI / 180) * r.spine))
+            return fail("run", r.run, "in [tan 20°, tan 70°] × spine (the glued wing's crease)");
         // Closed, the support stands on the page from s to s + height.
         if (!(f.support + f.height < D - margin))
             return fail("hinge", m.p[4], "with the layer's height under the closed card's top");

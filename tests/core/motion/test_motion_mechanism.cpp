@@ -166,5 +166,33 @@ TEST(MotionMechanism, InfeasibleParametersAreNamed)
     EXPECT_NE(infeasibility(m, card).find("run_backdrop"), std::string::npos);
 }
 
+TEST(MotionMechanism, AnOffFoldArmsGluedCreaseKeepsItsTabRoom)
+{
+    // The wing glued to the support along the diagonal of its Spine × Run corner: 20°..70° from
+    // the support's edges. Spine 40: Run from 40·tan 20° = 14.56 to 40·tan 70° = 109.9 mm.
+    CardParams card;
+    card.width = 210;
+    card.depth = 148;
+    for (double side : {1.0, -1.0}) {
+        MotionMechanism m = testing::off_fold_rotation(side); // spine 40, run 25
+        m.p[3] = 10;                                          // arm under spine²/run
+        EXPECT_EQ(infeasibility(m, card), "") << side;
+        m.p[2] = 14.0; // 19.3° from the hinge
+        EXPECT_NE(infeasibility(m, card).find("run = 14"), std::string::npos) << side;
+        m.p[2] = 15.0;
+        EXPECT_EQ(infeasibility(m, card), "") << side;
+        m.p[2] = 100.0; // 68.2°: still in, the tallest the card allows with a 30 mm hinge
+        m.p[3] = 5;
+        EXPECT_EQ(infeasibility(m, card), "") << side;
+    }
+    MotionMechanism steep = testing::off_fold_rotation(1);
+    steep.p[1] = 12; // spine 12, run 25: 64.4° in; run 40: 73.3° out
+    steep.p[3] = 2;
+    EXPECT_EQ(infeasibility(steep, card), "");
+    steep.p[2] = 40;
+    EXPECT_NE(infeasibility(steep, card).find("tan 70"), std::string::npos)
+        << infeasibility(steep, card);
+}
+
 } // namespace
 } // namespace popup::motion
