@@ -118,6 +118,37 @@ TEST(MotionTargets, ProjectsAndPlacesTheDefaultFit)
     EXPECT_NEAR(t.paths[0].depth, 0.0, 1e-12);
 }
 
+TEST(MotionTargets, CaptureJitterUnderTheStillFloorAddsNoSamples)
+{
+    // A hand on a half circle of radius 50 over 8001 frames (0.0196 of arc per frame), shaken
+    // along its radius by ±0.1 from frame to frame (like a motion capture's noise; the
+    // diagonal is 141.4, the still floor 3e-4 of it = 0.0424). The circle alone needs 65
+    // samples; the jitter's kinks turn by more than 2° at every scale down to the frames, but
+    // an interval of k frames has quarter pieces of about k·0.0196/4, still under k = 8.65:
+    // splitting ends at intervals of 4.3..8.65 frames, 925..1860 samples (about 7500 with a
+    // floor of 1e-9: split down to the frames).
+    Animation a;
+    a.source = "jittery arc";
+    a.bones = {{"body", -1}, {"hand", 0}};
+    const int n = 8001;
+    for (int f = 0; f < n; ++f) {
+        const double angle = M_PI * f / (n - 1), r = 50.0 + (f % 2 == 0 ? 0.1 : -0.1);
+        a.frame_times_s.push_back(f / 120.0);
+        a.local.push_back(
+            {rigid(Vec3::Zero()), rigid(Vec3(r * std::cos(angle), r * std::sin(angle), 0))});
+    }
+    a.bind_inverse.assign(2, Eigen::Isometry3d::Identity());
+    MotionView view;
+    view.scale = 1.0;
+    view.centre = Vec2(0, 100);
+    const auto r = motion_targets(a, view);
+    ASSERT_TRUE(r.ok) << r.diagnostics[0].message;
+    ASSERT_EQ(r.value.paths.size(), 1u);
+    const std::size_t samples = r.value.paths[0].s.size();
+    EXPECT_LE(samples, 1860u);
+    EXPECT_GE(samples, 925u);
+}
+
 TEST(MotionTargets, ViewScaleCentreAndFrameRange)
 {
     const Animation a = turning_arm();
