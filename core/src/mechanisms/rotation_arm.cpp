@@ -8,20 +8,14 @@
 
 namespace popup {
 
-namespace {
-
-struct ArmPoints {
-    Vec3 S, Sb, R, P; ///< relative to O, in the host's frame
-};
-
-// The arm's points at host opening φ (docs/MATH.md, Rotation): the spine tip R = l (cos t, sin t)
-// in the (y, z) plane with tan(t/2) = w cos δ / l, S = (w sin δ, l, w cos δ) and its mirror S',
-// and P = R + (h / w)(R − S); δ = φ/2.
-ArmPoints arm_points(const RotationArmParams& p, double opening)
+RotationArmPoints rotation_arm_points(const RotationArmParams& p, double opening)
 {
+    // The spine tip R = l (cos t, sin t) in the (y, z) plane with tan(t/2) = w cos δ / l,
+    // S = (w sin δ, l, w cos δ) and its mirror S', and P = R + (h / w)(R − S); δ = φ/2
+    // (docs/MATH.md, Rotation).
     const double l = p.spine, w = p.run, h = p.arm, d = opening / 2;
     const double t = 2 * std::atan2(w * std::cos(d), l);
-    ArmPoints a;
+    RotationArmPoints a;
     a.R = Vec3(0, l * std::cos(t), l * std::sin(t));
     a.S = Vec3(w * std::sin(d), l, w * std::cos(d));
     a.Sb = Vec3(-w * std::sin(d), l, w * std::cos(d));
@@ -29,11 +23,9 @@ ArmPoints arm_points(const RotationArmParams& p, double opening)
     return a;
 }
 
-} // namespace
-
 Vec3 rotation_arm_tip(const RotationArmParams& p, double opening)
 {
-    const Vec3 P = arm_points(p, opening).P;
+    const Vec3 P = rotation_arm_points(p, opening).P;
     return {P.x(), p.offset + P.y(), P.z()};
 }
 
@@ -93,7 +85,7 @@ Result<MechanismParts> add_rotation_arm(Scaffold& scaffold, const BasePatchPair&
     // closed form at the host's design opening, which the simulator then follows.
     const double l = p.spine, y0 = p.offset;
     const bool flat = std::abs(host.opening - M_PI) <= 1e-9;
-    ArmPoints a = arm_points(p, flat ? M_PI : host.opening);
+    RotationArmPoints a = rotation_arm_points(p, flat ? M_PI : host.opening);
     if (flat) {
         // Exactly on the host, not through cos(π/2) ≈ 6e-17.
         a.R = Vec3(0, l, 0);

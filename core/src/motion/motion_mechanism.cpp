@@ -123,9 +123,6 @@ LayerSide rotation_side(const MotionMechanism& m)
     return m.p[4] > 0 ? LayerSide::ground : LayerSide::backdrop;
 }
 
-// The parallel section's points of a floating layer at θ (docs/MATH.md, Box fold / Floating
-// layer): C on the bisector, the platform c above it along each page, the end creases
-// s·cos(θ/2) out of each end.
 /// Writes pieces over `out`'s, keeping their storage (the volumes call mechanism_parts in a loop).
 struct PartWriter {
     std::vector<MechanismPart>& out;
@@ -330,9 +327,6 @@ void mechanism_parts(const MotionMechanism& m, double theta, std::vector<Mechani
     const double d = theta / 2;
     const Vec2 g = ground_dir(theta), b = backdrop_dir(theta);
     PartWriter parts{out};
-    auto add = [&](int side, std::initializer_list<Vec3> vertices) -> std::vector<Vec3>& {
-        return parts.add(side, vertices);
-    };
     switch (m.kind) {
     case MotionKind::rotation: {
         // O, S, R, S' and the arm's tip P (docs/MATH.md, Rotation). The arm's wing O-S-P is cut
@@ -349,17 +343,13 @@ void mechanism_parts(const MotionMechanism& m, double theta, std::vector<Mechani
             layer_parts(f, theta, parts);
             host = floating_layer_side(f, rotation_side(m), theta);
         }
-        const double e = host.opening / 2;
-        const double l = r.spine, w = r.run, t = 2 * std::atan2(w * std::cos(e), l);
-        auto world = [&](const Vec3& q) { return host.to_world(q.x(), q.y(), q.z()); };
-        const Vec3 O = world({0, r.offset, 0});
-        const Vec3 S = world({w * std::sin(e), r.offset + l, w * std::cos(e)});
-        const Vec3 Sb = world({-w * std::sin(e), r.offset + l, w * std::cos(e)});
-        const Vec3 R = world({0, r.offset + l * std::cos(t), l * std::sin(t)});
-        const Vec3 P = world(rotation_arm_tip(r, host.opening));
-        add(off_fold ? 0 : +1, {O, S, R});
-        add(off_fold ? 0 : -1, {O, R, P});
-        add(off_fold ? 0 : -1, {O, R, Sb});
+        const RotationArmPoints a = rotation_arm_points(r, host.opening);
+        auto world = [&](const Vec3& q) { return host.to_world(q.x(), r.offset + q.y(), q.z()); };
+        const Vec3 O = world(Vec3::Zero()), S = world(a.S), Sb = world(a.Sb), R = world(a.R),
+                   P = world(a.P);
+        parts.add(off_fold ? 0 : +1, {O, S, R});
+        parts.add(off_fold ? 0 : -1, {O, R, P});
+        parts.add(off_fold ? 0 : -1, {O, R, Sb});
         break;
     }
     case MotionKind::vertical: {
@@ -374,13 +364,13 @@ void mechanism_parts(const MotionMechanism& m, double theta, std::vector<Mechani
         const Vec3 Sg = at(across * g, p.offset + along), Sb = at(across * b, p.offset + along);
         const Vec3 Ft = v_box_front_corner(p, theta);
         const Vec3 lift = Ft - F;
-        add(+1, {F, Sg, Sg + lift, Ft});
-        add(-1, {F, Sb, Sb + lift, Ft});
+        parts.add(+1, {F, Sg, Sg + lift, Ft});
+        parts.add(-1, {F, Sb, Sb + lift, Ft});
         const std::vector<Vec3> corner =
             trilaterate(Ft, Sg + lift, Sb + lift, 2 * along, p.side, p.side);
-        std::vector<Vec3>& halfSg = add(+1, {Ft, Sg + lift});
+        std::vector<Vec3>& halfSg = parts.add(+1, {Ft, Sg + lift});
         halfSg.insert(halfSg.end(), corner.begin(), corner.end());
-        std::vector<Vec3>& halfSb = add(-1, {Ft, Sb + lift});
+        std::vector<Vec3>& halfSb = parts.add(-1, {Ft, Sb + lift});
         halfSb.insert(halfSb.end(), corner.begin(), corner.end());
         break;
     }
@@ -394,7 +384,7 @@ void mechanism_parts(const MotionMechanism& m, double theta, std::vector<Mechani
         // it is cut there into a backdrop and a ground piece.
         const double y0 = h.offset, y1 = h.offset + h.width;
         auto strip = [&](const Vec2& p, const Vec2& q, int side) {
-            add(side, {at(p, y0), at(q, y0), at(q, y1), at(p, y1)});
+            parts.add(side, {at(p, y0), at(q, y0), at(q, y1), at(p, y1)});
         };
         if (h.run_ground >= h.run_backdrop) {
             const Vec2 Q(0, 2 * h.run_backdrop * std::cos(d));
@@ -415,18 +405,18 @@ void mechanism_parts(const MotionMechanism& m, double theta, std::vector<Mechani
         const VFoldParams vf = diagonal_v_fold(m);
         const double X = vf.run * std::sin(vf.hinge_angle), Y = vf.run * std::cos(vf.hinge_angle);
         const Vec3 O(0, vf.offset, 0), tip = v_fold_tip(vf, M_PI, theta);
-        add(+1, {O, Vec3(X * std::sin(d), vf.offset + Y, X * std::cos(d)), tip});
-        add(-1, {O, Vec3(-X * std::sin(d), vf.offset + Y, X * std::cos(d)), tip});
+        parts.add(+1, {O, Vec3(X * std::sin(d), vf.offset + Y, X * std::cos(d)), tip});
+        parts.add(-1, {O, Vec3(-X * std::sin(d), vf.offset + Y, X * std::cos(d)), tip});
         const StepFoldParams s = diagonal_step(m);
         const BasePatchPair wings = v_fold_wings(vf, M_PI, theta);
         const Vec2 A = s.run_ground * ground_dir(wings.opening);
         const Vec2 D = s.run_backdrop * backdrop_dir(wings.opening);
         const Vec2 C = A + D;
         const double y0 = s.offset, y1 = s.offset + s.width;
-        add(0, {wings.to_world(A.x(), y0, A.y()), wings.to_world(C.x(), y0, C.y()),
-                wings.to_world(C.x(), y1, C.y()), wings.to_world(A.x(), y1, A.y())});
-        add(0, {wings.to_world(D.x(), y0, D.y()), wings.to_world(C.x(), y0, C.y()),
-                wings.to_world(C.x(), y1, C.y()), wings.to_world(D.x(), y1, D.y())});
+        parts.add(0, {wings.to_world(A.x(), y0, A.y()), wings.to_world(C.x(), y0, C.y()),
+                      wings.to_world(C.x(), y1, C.y()), wings.to_world(A.x(), y1, A.y())});
+        parts.add(0, {wings.to_world(D.x(), y0, D.y()), wings.to_world(C.x(), y0, C.y()),
+                      wings.to_world(C.x(), y1, C.y()), wings.to_world(D.x(), y1, D.y())});
         break;
     }
     case MotionKind::stationary:

@@ -17,6 +17,13 @@ struct RotationArmParams {
     double arm = 20.0;   ///< h = |PR|, at most l²/w so the arm stays above the backdrop (mm)
 };
 
+/// The arm's points relative to O (in the host's local frame, y along the hinge) when the host
+/// is open at `opening`: S and S' (the wings' far corners), R (the spine's tip) and P (the tip).
+struct RotationArmPoints {
+    Vec3 S, Sb, R, P;
+};
+RotationArmPoints rotation_arm_points(const RotationArmParams& params, double opening);
+
 /// Closed form: P in the host's local frame (x, y along the hinge from the host's origin, z)
 /// when the host is open at `opening`. It holds for any design opening of the host: the arm is
 /// built on this branch (the wings popped off the host) at the host's design opening.
