@@ -75,8 +75,11 @@ Vec3 piece_normal(const std::vector<Vec3>& v)
 std::pair<double, double> shadow(const CollisionVolume& v, std::size_t i, const Vec3& n)
 {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    const double nx = n.x(), ny = n.y(), nz = n.z();
+    const double *x = v.xs.data(), *y = v.ys.data(), *z = v.zs.data();
+#pragma omp simd reduction(min : lo) reduction(max : hi)
     for (int p = v.first[i]; p < v.first[i + 1]; ++p) {
-        const double t = n.dot(v.points[p]);
+        const double t = nx * x[p] + ny * y[p] + nz * z[p];
         lo = std::min(lo, t);
         hi = std::max(hi, t);
     }
@@ -102,23 +105,24 @@ double shadow_overlap(const CollisionVolume& a, std::size_t ia, const CollisionV
 
 // The smallest of `depth` and two pieces' shadow overlaps over the separating-axis candidates of
 // two convex polygons (each plane's normal at the band's middle angle, the crosses of their
-// edges); 0 when one separates them.
+// edges); 0 when one separates them. The test stops once the overlap is at most `floor` (the
+// caller keeps the larger of the two): the value returned is then some overlap <= floor.
 double piece_overlap(const CollisionVolume& a, std::size_t ia, const CollisionVolume& b,
-                     std::size_t ib, double depth)
+                     std::size_t ib, double depth, double floor = 0.0)
 {
     auto test = [&](const Vec3& axis) {
         const double len = axis.norm();
         if (len < 1e-9)
             return true; // parallel edges: the other axes decide
         depth = std::min(depth, shadow_overlap(a, ia, b, ib, axis / len));
-        return depth > 0;
+        return depth > floor;
     };
     if (!test(a.normals[ia]) || !test(b.normals[ib]))
-        return 0.0;
+        return std::max(depth, 0.0);
     for (int i = a.edge_first[ia]; i < a.edge_first[ia + 1]; ++i)
         for (int j = b.edge_first[ib]; j < b.edge_first[ib + 1]; ++j)
             if (!test(a.edges[i].cross(b.edges[j])))
-                return 0.0;
+                return std::max(depth, 0.0);
     return depth;
 }
 
@@ -163,7 +167,8 @@ CollisionVolume collision_volume(const MotionMechanism& m, const VolumeOptions& 
     v.normals.reserve(n * pieces);
     v.aligned.reserve(n * pieces);
     v.pad.reserve(n * pieces);
-    v.points.reserve(n * (k + 1) * pieces * 4);
+    for (std::vector<double>* c : {&v.xs, &v.ys, &v.zs})
+        c->reserve(n * (k + 1) * pieces * 4);
     v.first.reserve(n * pieces + 1);
     v.first.push_back(0);
     v.edge_first.reserve(n * pieces + 1);
@@ -179,16 +184,17 @@ CollisionVolume collision_volume(const MotionMechanism& m, const VolumeOptions& 
             Vec3 bent = Vec3::Zero();
             for (int j = d_first; j <= d_last; ++j)
                 bent = bent.cwiseMax(bend[j * pieces + i]);
-            const int from = int(v.points.size());
-            for (int j = first; j <= end; ++j)
-                v.points.insert(v.points.end(), at[j][i].vertices.begin(), at[j][i].vertices.end());
-            v.first.push_back(int(v.points.size()));
-            const std::vector<Vec3>& middle = at[first + k / 2][i].vertices;
             Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-            for (int p = from; p < v.first.back(); ++p) {
-                lo = lo.cwiseMin(v.points[p]);
-                hi = hi.cwiseMax(v.points[p]);
-            }
+            for (int j = first; j <= end; ++j)
+                for (const Vec3& x : at[j][i].vertices) {
+                    v.xs.push_back(x.x());
+                    v.ys.push_back(x.y());
+                    v.zs.push_back(x.z());
+                    lo = lo.cwiseMin(x);
+                    hi = hi.cwiseMax(x);
+                }
+            v.first.push_back(int(v.xs.size()));
+            const std::vector<Vec3>& middle = at[first + k / 2][i].vertices;
             OrientedBox aligned;
             aligned.centre = (lo + hi) / 2;
             aligned.half = (hi - lo) / 2 + bent + clearance;
@@ -306,11 +312,33 @@ double collision_depth(const CollisionVolume& a, const CollisionVolume& b)
         for (const Pair& p : pairs) {
             if (p.boxes <= deepest)
                 break;
-            deepest = std::max(deepest, piece_overlap(a, p.ia, b, p.ib, p.boxes));
+            deepest = std::max(deepest, piece_overlap(a, p.ia, b, p.ib, p.boxes, deepest));
         }
         sum += deepest;
     }
     return sum;
+}
+
+bool collide(const CollisionVolume& a, const CollisionVolume& b)
+{
+    // collision_depth's band depth is positive exactly when some pair of pieces overlaps both
+    // as boxes and as hulls; any such pair answers.
+    const std::size_t n = std::min(a.bands.size(), b.bands.size());
+    const std::size_t na = a.sides.size(), nb = b.sides.size();
+    for (std::size_t k = 0; k < n; ++k) {
+        if (aligned_overlap(a.bands[k], b.bands[k]) <= 0)
+            continue;
+        for (std::size_t i = 0; i < na; ++i)
+            for (std::size_t j = 0; j < nb; ++j) {
+                if (a.sides[i] * b.sides[j] < 0)
+                    continue;
+                const std::size_t ia = k * na + i, ib = k * nb + j;
+                const double d = aligned_overlap(a.aligned[ia], b.aligned[ib]);
+                if (d > 0 && piece_overlap(a, ia, b, ib, d) > 0)
+                    return true;
+            }
+    }
+    return false;
 }
 
 } // namespace popup::motion

@@ -38,10 +38,11 @@ struct CollisionVolume {
     std::vector<OrientedBox> bands;   ///< band k covers θ in [π k / n, π (k + 1) / n]
     std::vector<OrientedBox> aligned; ///< band-major: aligned[k * sides.size() + i], piece i
     std::vector<int> sides;           ///< per piece, MechanismPart::side
-    /// The pieces' sampled vertices, band-major like `aligned`: piece i of band k holds
-    /// points[first[k·n + i] .. first[k·n + i + 1]), every sample of the band, and lies within
+    /// The pieces' sampled vertices, band-major like `aligned`, one array per coordinate (the
+    /// shadows' loops are the search's hot spot): piece i of band k holds points
+    /// [first[k·n + i] .. first[k·n + i + 1]), every sample of the band, and lies within
     /// pad[k·n + i] (per axis) of their convex hull.
-    std::vector<Vec3> points;
+    std::vector<double> xs, ys, zs;
     std::vector<int> first;
     std::vector<Vec3> pad;
     /// Offsets the paper is also carried along (carry_along): each piece's hull is swept by them.
@@ -75,5 +76,9 @@ void carry_along(CollisionVolume& volume, const std::vector<Vec3>& offsets);
 /// crosses of their edges). 0 when they never share room at the same fold angles; in mm,
 /// shrinking as they separate.
 double collision_depth(const CollisionVolume& a, const CollisionVolume& b);
+
+/// Whether collision_depth(a, b) > 0, stopping at the first two pieces that share room: the
+/// annealing's hard constraint once it is collision-free needs only that answer.
+bool collide(const CollisionVolume& a, const CollisionVolume& b);
 
 } // namespace popup::motion

@@ -270,7 +270,7 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
             const CollisionVolume v = slot_volume(p, slot);
             if (slot.mechanism.kind == MotionKind::stationary)
                 for (const CollisionVolume& other : placed)
-                    if (collision_depth(v, other) > 0) {
+                    if (collide(v, other)) {
                         slot.printed = true;
                         break;
                     }
@@ -354,7 +354,7 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
             const CollisionVolume v = slot_volume(p, trial.slots[i]);
             bool free = true;
             for (int k = 0; k < int(trial.slots.size()) && free; ++k) {
-                if (k == i || collision_depth(v, slot_volume(p, trial.slots[k])) <= 0)
+                if (k == i || !collide(v, slot_volume(p, trial.slots[k])))
                     continue;
                 if (still_slot(trial.slots[k]))
                     trial.slots[k].printed = true;
@@ -385,7 +385,7 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
             const CollisionVolume v = slot_volume(p, trial);
             bool free = true;
             for (int k = 0; k < int(state.slots.size()) && free; ++k)
-                free = k == i || collision_depth(v, slot_volume(p, state.slots[k])) <= 0;
+                free = k == i || !collide(v, slot_volume(p, state.slots[k]));
             if (free)
                 s = trial;
         }

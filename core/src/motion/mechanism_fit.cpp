@@ -170,7 +170,7 @@ std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& t,
     const double W = card.width, D = card.depth;
     const Vec2 A0 = t.target.front(), A1 = t.target.back();
     auto cost = [&](const MotionMechanism& m) {
-        return infeasibility(m, card).empty() ? motion_error(m, t) : inf;
+        return feasible(m, card) ? motion_error(m, t) : inf;
     };
     auto finish = [&](MotionMechanism m, int evaluations) {
         Candidate c;
@@ -208,7 +208,7 @@ std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& t,
             };
             auto eq62 = [&](double l) {
                 const MotionMechanism q = trial(l);
-                if (!infeasibility(q, card).empty())
+                if (!feasible(q, card))
                     return inf;
                 double sum = 0;
                 for (std::size_t i = 0; i < t.s.size(); ++i) {

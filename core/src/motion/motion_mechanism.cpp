@@ -181,11 +181,18 @@ FittedMechanism layer_row(const FloatingLayerParams& f, const std::string& name,
     return row;
 }
 
-std::string fail(const char* name, double value, const std::string& range)
+// The first range a mechanism's parameters leave: `name` = `value` must be `must` (no name: the
+// whole of `must` says why). Kept unformatted: the search tests feasibility per move and only
+// the report needs the words.
+struct Violation {
+    const char* name = nullptr;
+    double value = 0.0;
+    const char* must = nullptr;
+};
+
+Violation fail(const char* name, double value, const char* range)
 {
-    std::ostringstream s;
-    s << name << " = " << value << " must be " << range;
-    return s.str();
+    return {name, value, range};
 }
 
 } // namespace
@@ -463,7 +470,9 @@ double shortest_crease()
     return crease;
 }
 
-std::string infeasibility(const MotionMechanism& m, const CardParams& card)
+namespace {
+
+Violation first_violation(const MotionMechanism& m, const CardParams& card)
 {
     const double W = card.width, D = card.depth;
     for (int i = 0; i < parameter_count(m.kind); ++i)
@@ -593,10 +602,32 @@ std::string infeasibility(const MotionMechanism& m, const CardParams& card)
     }
     // Closed (θ = 0) every part must lie inside the card: along the fold within its width, and
     // no higher than the pages (z along the closed pages).
-    for (const Vec3& q : mechanism_vertices(m, 0.0))
-        if (q.y() < -1e-9 || q.y() > W + 1e-9 || q.z() > D - margin)
-            return "a part sticks out of the closed card";
+    thread_local std::vector<MechanismPart> closed;
+    mechanism_parts(m, 0.0, closed);
+    for (const MechanismPart& part : closed)
+        for (const Vec3& q : part.vertices)
+            if (q.y() < -1e-9 || q.y() > W + 1e-9 || q.z() > D - margin)
+                return {nullptr, 0.0, "a part sticks out of the closed card"};
     return {};
+}
+
+} // namespace
+
+std::string infeasibility(const MotionMechanism& m, const CardParams& card)
+{
+    const Violation v = first_violation(m, card);
+    if (!v.must)
+        return {};
+    if (!v.name)
+        return v.must;
+    std::ostringstream s;
+    s << v.name << " = " << v.value << " must be " << v.must;
+    return s.str();
+}
+
+bool feasible(const MotionMechanism& m, const CardParams& card)
+{
+    return !first_violation(m, card).must;
 }
 
 Result<std::vector<MechanismParts>> build_mechanism(Scaffold& scaffold, const BasePatchPair& host,

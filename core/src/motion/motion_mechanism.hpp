@@ -102,6 +102,9 @@ double shortest_crease();
 /// refuses glued creases shorter than shortest_crease().
 std::string infeasibility(const MotionMechanism& m, const CardParams& card);
 
+/// infeasibility(m, card).empty(), without writing the reason (the search asks per move).
+bool feasible(const MotionMechanism& m, const CardParams& card);
+
 /// Builds the mechanism on the card's central fold with the library's generators; appends its
 /// FittedMechanism rows (host before what it carries). Names: `name` (and `name`_step for the
 /// diagonal's step fold).

@@ -175,8 +175,9 @@ TEST(CollisionVolume, EveryClosedFormVertexAt1000AnglesLiesInItsPiecesBox)
                         const Vec3 n = axis.normalized();
                         double lo = std::numeric_limits<double>::infinity(), hi = -lo;
                         for (int q = v.first[at]; q < v.first[at + 1]; ++q) {
-                            lo = std::min(lo, n.dot(v.points[q]));
-                            hi = std::max(hi, n.dot(v.points[q]));
+                            const double t = n.dot(Vec3(v.xs[q], v.ys[q], v.zs[q]));
+                            lo = std::min(lo, t);
+                            hi = std::max(hi, t);
                         }
                         const double pad = n.cwiseAbs().dot(v.pad[at]);
                         out = std::max(
@@ -238,6 +239,31 @@ TEST(CollisionVolume, DepthOfTwoCopiesAlongTheFoldIsTheirOverlapAlongIt)
     MotionMechanism b = a;
     b.p[0] += width + 2 * options.clearance + 1e-6;
     EXPECT_EQ(collision_depth(va, collision_volume(b, options)), 0.0);
+}
+
+TEST(CollisionVolume, CollideAnswersWhetherTheDepthIsPositive)
+{
+    // collide stops at the first two pieces that share room; it must say yes exactly when
+    // collision_depth is positive. Every kind against every kind, the second moved along the fold
+    // and across it by a grid of offsets: both answers occur, and they always agree.
+    const VolumeOptions options;
+    int yes = 0, no = 0;
+    for (int ka = 0; ka < motion_kind_count; ++ka)
+        for (int kb = 0; kb < motion_kind_count; ++kb) {
+            const MotionMechanism a = testing::sample_mechanism(MotionKind(ka));
+            const CollisionVolume va = collision_volume(a, options);
+            for (double dy = -60; dy <= 60; dy += 7.5) {
+                MotionMechanism b = testing::sample_mechanism(MotionKind(kb));
+                b.p[0] += dy;
+                const CollisionVolume vb = collision_volume(b, options);
+                const bool depth = collision_depth(va, vb) > 0;
+                EXPECT_EQ(collide(va, vb), depth) << ka << " " << kb << " dy " << dy;
+                EXPECT_EQ(collide(vb, va), depth) << kb << " " << ka << " dy " << dy;
+                (depth ? yes : no) += 1;
+            }
+        }
+    EXPECT_GT(yes, 50);
+    EXPECT_GT(no, 50);
 }
 
 } // namespace

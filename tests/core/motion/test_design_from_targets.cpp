@@ -240,5 +240,46 @@ TEST(Annealing, IncrementalEvaluationFollowsTheFullReevaluation)
     EXPECT_NEAR(fast.collision, state_collision(p, fast.best), 1e-9);
 }
 
+TEST(Annealing, ADeepCollisionAtTheStartIsResolved)
+{
+    // Eight known mechanisms 25 mm apart along the fold (as in make bench) start 38 mm deep in
+    // each other's room, far beyond where exp(w_c D_c) leaves the doubles (1.2 mm here). The
+    // search must still tell deeper from shallower and leave with none; the depth is re-measured
+    // from the returned state.
+    AnnealProblem p;
+    p.card.width = 210;
+    p.card.depth = 148;
+    p.diagonal = 180;
+    AnnealState start;
+    for (int i = 0; i < 8; ++i) {
+        const double y = 5 + 25 * i;
+        const MotionMechanism truth =
+            i % 3 == 0   ? mechanism(MotionKind::rotation, {y, 20, 15, 15})
+            : i % 3 == 1 ? mechanism(MotionKind::vertical, {y + 10, 8, 20, 40 * M_PI / 180})
+                         : mechanism(MotionKind::horizontal, {y, 14, 30, 10, 40.0 + 5.0 * i});
+        ChainTarget t;
+        t.name = "chain" + std::to_string(i);
+        t.weight = 1.0 / 8;
+        t.depth = std::min(1.0, mechanism_height(truth) / 25);
+        for (int k = 0; k <= 30; ++k) {
+            t.s.push_back(k / 30.0);
+            t.target.push_back(mechanism_point(truth, M_PI * k / 30.0).head<2>());
+        }
+        p.chains.push_back(t);
+        p.candidates.push_back(fit_candidates(t, p.card, 25));
+        start.slots.push_back({p.candidates.back()[int(truth.kind)].mechanism, {i}});
+    }
+    prepare_alike(p);
+    ASSERT_GT(state_collision(p, start), 20.0);
+    AnnealOptions o;
+    o.iterations = 2000;
+    for (std::uint64_t seed : {1u, 2u}) {
+        o.seed = seed;
+        const AnnealResult r = anneal(p, start, o);
+        EXPECT_EQ(r.collision, 0.0) << "seed " << seed;
+        EXPECT_EQ(state_collision(p, r.best), 0.0) << "seed " << seed;
+    }
+}
+
 } // namespace
 } // namespace popup::motion

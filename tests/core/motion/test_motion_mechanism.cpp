@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "motion/collision_volume.hpp"
 #include "motion_fixtures.hpp"
@@ -192,6 +193,33 @@ TEST(MotionMechanism, AnOffFoldArmsGluedCreaseKeepsItsTabRoom)
     steep.p[2] = 40;
     EXPECT_NE(infeasibility(steep, card).find("tan 70"), std::string::npos)
         << infeasibility(steep, card);
+}
+
+TEST(MotionMechanism, FeasibleAgreesWithInfeasibility)
+{
+    // feasible() is infeasibility() without its words: over random steps from each kind's sample
+    // (and the off-fold arm) both answers occur and the two always agree.
+    CardParams card;
+    card.width = 210;
+    card.depth = 148;
+    std::mt19937_64 rng(7);
+    std::normal_distribution<double> step(0.0, 1.0);
+    int yes = 0, no = 0;
+    for (int k = 0; k <= motion_kind_count; ++k) {
+        const MotionMechanism start =
+            k < motion_kind_count ? sample_mechanism(MotionKind(k)) : testing::off_fold_rotation(1);
+        for (int trial = 0; trial < 400; ++trial) {
+            MotionMechanism m = start;
+            for (int i = 0; i < parameter_count(m.kind); ++i)
+                m.p[i] += step(rng) *
+                          (parameter_info(m.kind, i).role == ParameterRole::angle ? 0.3 : 15.0);
+            const bool ok = infeasibility(m, card).empty();
+            EXPECT_EQ(feasible(m, card), ok) << k << " trial " << trial;
+            (ok ? yes : no) += 1;
+        }
+    }
+    EXPECT_GT(yes, 100);
+    EXPECT_GT(no, 100);
 }
 
 } // namespace
