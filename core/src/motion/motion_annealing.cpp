@@ -493,9 +493,17 @@ std::vector<Vec2> carried_path(const Slot& slot, const ChainTarget& t)
 {
     if (slot.printed)
         return printed_path(t);
-    std::vector<Vec2> out = achieved_path(slot.mechanism, t.s);
-    if (slot.chains.size() > 1 && slot.mechanism.kind != MotionKind::rotation &&
+    if (slot.chains.size() > 1 && slot.mechanism.kind == MotionKind::rotation &&
         !t.target.empty()) {
+        // A merged arm turns each part about the arm's hinge from its own open place.
+        std::vector<Vec2> out;
+        for (double si : t.s)
+            out.push_back(
+                rotation_carried_point(slot.mechanism, t.target.back(), M_PI * si).head<2>());
+        return out;
+    }
+    std::vector<Vec2> out = achieved_path(slot.mechanism, t.s);
+    if (slot.chains.size() > 1 && !t.target.empty()) {
         const Vec3 open = mechanism_point(slot.mechanism, M_PI);
         const Vec2 offset = t.target.back() - Vec2(open.x(), open.y());
         for (Vec2& q : out)

@@ -69,7 +69,8 @@ std::vector<Vec2> printed_path(const ChainTarget& t);
 /// merged translating patch (every kind but the rotation arm, whose patch turns) each part keeps
 /// its open-state place, the mechanism's point plus the constant offset target(1) − point(π)
 /// (exact at the open state, where the outline is placed; the patches stay nearly parallel to
-/// the pages in between). Otherwise the mechanism's point.
+/// the pages in between). A merged rotation arm turns each part rigidly with its arm's wing from
+/// its open-state place (rotation_carried_point). Otherwise the mechanism's point.
 std::vector<Vec2> carried_path(const Slot& slot, const ChainTarget& t);
 
 /// Eq 6.6 of chain t on slot: the RMS distance (mm) of carried_path from the target.

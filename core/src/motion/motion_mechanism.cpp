@@ -329,6 +329,45 @@ Vec3 mechanism_point(const MotionMechanism& m, double theta)
     return Vec3::Zero();
 }
 
+namespace {
+
+// The rotation arm's points in the card frame at fold angle theta: O on its hinge, the wings'
+// outer corners S (the arm's wing O-S-P) and S', R on the spine, the tip P.
+struct ArmInCard {
+    Vec3 O, S, Sb, R, P;
+};
+
+ArmInCard arm_in_card(const MotionMechanism& m, double theta)
+{
+    const RotationArmParams r = rotation_params(m);
+    BasePatchPair host; // the central fold: the card frame
+    host.opening = theta;
+    if (rotation_off_fold(m))
+        host = floating_layer_side(rotation_layer(m), rotation_side(m), theta);
+    const RotationArmPoints a = rotation_arm_points(r, host.opening);
+    auto world = [&](const Vec3& q) { return host.to_world(q.x(), r.offset + q.y(), q.z()); };
+    return {world(Vec3::Zero()), world(a.S), world(a.Sb), world(a.R), world(a.P)};
+}
+
+} // namespace
+
+Vec3 rotation_carried_point(const MotionMechanism& m, const Vec2& open, double theta)
+{
+    // The wing O-S-P is rigid: a point of its plane keeps its coordinates along S − O and P − O.
+    // Open, the point is the one of the plane above `open` (the wing lies on the page there).
+    const ArmInCard a = arm_in_card(m, M_PI);
+    const Vec3 e1 = a.S - a.O, e2 = a.P - a.O, n = e1.cross(e2);
+    if (!(std::abs(n.z()) > 1e-9 * n.norm()))
+        return mechanism_point(m, theta); // the wing stands edge-on to the page: at its tip
+    const Vec3 q(open.x(), open.y(),
+                 a.O.z() - (n.x() * (open.x() - a.O.x()) + n.y() * (open.y() - a.O.y())) / n.z());
+    Eigen::Matrix<double, 3, 2> basis;
+    basis << e1, e2;
+    const Vec2 c = basis.colPivHouseholderQr().solve(q - a.O);
+    const ArmInCard b = arm_in_card(m, theta);
+    return b.O + c.x() * (b.S - b.O) + c.y() * (b.P - b.O);
+}
+
 void mechanism_parts(const MotionMechanism& m, double theta, std::vector<MechanismPart>& out)
 {
     const double d = theta / 2;
@@ -341,19 +380,11 @@ void mechanism_parts(const MotionMechanism& m, double theta, std::vector<Mechani
         // host's frame. Off the fold the host is a floating layer's side pair at θ/2 (docs/MATH.md,
         // A rotation arm on a floating layer's side): the layer's pieces come too, and the arm's
         // keep to no side of the fold's plane (its tip may swing across it).
-        const RotationArmParams r = rotation_params(m);
-        BasePatchPair host; // the central fold: the card frame
-        host.opening = theta;
         const bool off_fold = rotation_off_fold(m);
-        if (off_fold) {
-            const FloatingLayerParams f = rotation_layer(m);
-            layer_parts(f, theta, parts);
-            host = floating_layer_side(f, rotation_side(m), theta);
-        }
-        const RotationArmPoints a = rotation_arm_points(r, host.opening);
-        auto world = [&](const Vec3& q) { return host.to_world(q.x(), r.offset + q.y(), q.z()); };
-        const Vec3 O = world(Vec3::Zero()), S = world(a.S), Sb = world(a.Sb), R = world(a.R),
-                   P = world(a.P);
+        if (off_fold)
+            layer_parts(rotation_layer(m), theta, parts);
+        const ArmInCard arm = arm_in_card(m, theta);
+        const Vec3 &O = arm.O, &S = arm.S, &Sb = arm.Sb, &R = arm.R, &P = arm.P;
         parts.add(off_fold ? 0 : +1, {O, S, R});
         parts.add(off_fold ? 0 : -1, {O, R, P});
         parts.add(off_fold ? 0 : -1, {O, R, Sb});

@@ -66,6 +66,12 @@ double rotation_layer_height(double run, double arm);
 /// the card plane).
 Vec3 mechanism_point(const MotionMechanism& m, double theta);
 
+/// Where a rotation arm carries a part placed at `open` (card x, y) on its arm's wing when the
+/// card is open: the point of the wing's plane there, moved rigidly with the wing O-S-P to fold
+/// angle theta (a merged arm carries each chain's part in its own place; docs/DESIGN.md). At the
+/// tip's open point it is mechanism_point.
+Vec3 rotation_carried_point(const MotionMechanism& m, const Vec2& open, double theta);
+
 /// One rigid convex piece of a mechanism's paper at some fold angle: every point of the piece
 /// is a convex combination of `vertices` (a patch, or the part of a patch on one side of a
 /// crease line through it), listed along its outline (the vertical's top halves end with both
