@@ -163,14 +163,21 @@ def save_design(doc, out, files):
 # --- sheets, report, exit code --------------------------------------------------------------
 
 
-def write_sheets(args, cli, paper, files, stages, say):
-    """`popup sheet DIR/design.FCStd --out DIR/sheets --paper PAPER`, through cmd_sheet itself."""
+def write_sheets(args, cli, paper, report, files, stages, say):
+    """`popup sheet DIR/design.FCStd --out DIR/sheets --paper PAPER`, through cmd_sheet itself.
+    Sheets that cannot be laid out (a piece larger than the paper) are the sheets' error, not
+    the run's: said, kept in the report as `sheets_error`, exit 1, the report still written."""
     sheets = os.path.join(args.out, SHEETS_DIR)
     with stages.stage("sheets", f"laying out the cutting sheets on {paper}"):
         sheet_args = cli.build_parser().parse_args(
             ["sheet", files["design"], "--out", sheets, "--paper", paper]
         )
-        status = sheet_args.run(sheet_args)
+        try:
+            status = sheet_args.run(sheet_args)
+        except cli.InputError as e:
+            report["sheets_error"] = cli._one_line(e)
+            say(f"error: no cutting sheets: {report['sheets_error']}")
+            return cli.EXIT_INVALID
     files["sheets"] = sheets
     return status
 
@@ -179,7 +186,7 @@ def sheets_of_valid_design(args, cli, paper, report, valid, files, stages, say):
     """The sheets' exit code when the design is `valid`; else 1, with the report's diagnostics
     said on stderr."""
     if valid:
-        return write_sheets(args, cli, paper, files, stages, say)
+        return write_sheets(args, cli, paper, report, files, stages, say)
     for d in report.get("diagnostics") or []:
         say(f"{d.get('severity', 'error')}: {d.get('code')}: {d.get('message')}")
     say("no valid design found: no sheets written")
@@ -209,6 +216,8 @@ def finish(args, cli, report, status, files, stages, say, print_summary):
             "but its cutting sheets have errors (listed above; "
             f"{os.path.join(files['sheets'], 'report.json')})"
         )
+    elif report["valid"] and report.get("sheets_error"):
+        print(f"but no cutting sheets could be laid out: {report['sheets_error']}")
     return status if report["valid"] else cli.EXIT_INVALID
 
 

@@ -241,3 +241,28 @@ def test_bad_options_exit_2_naming_the_flag(wave, flags, fragment, tmp_path, use
 def test_a_last_frame_past_the_end_is_named(wave, tmp_path, user_home):
     proc = animate(wave, tmp_path / "out", "--last-frame", "99", home=user_home)
     assert_named_error(proc, "99")
+
+
+def test_sheets_that_cannot_be_laid_out_are_reported_not_a_crash(tmp_path, user_home):
+    """A valid design whose piece is larger than the paper (here a card too big for A4): the
+    sheets' step says why, the report keeps it as sheets_error and the run's code is 1, so
+    report.json is still written (01_03.bvh once ended with exit 2 and no report)."""
+    import types
+
+    from popupwb import cli
+    from popupwb import cli_design_steps as steps
+    from popupwb.core import popupcore
+    from popupwb.fitting.fit_run import Stages
+
+    card = popupcore.CardParams()
+    card.width, card.depth = 300.0, 200.0
+    design = str(tmp_path / "big.json")
+    popupcore.save_scaffold(popupcore.make_card(card), design)
+    said, report = [], {"valid": True}
+    files = {"design": design}
+    args = types.SimpleNamespace(out=str(tmp_path / "out"))
+    status = steps.write_sheets(args, cli, "A4", report, files, Stages(), said.append)
+    assert status == cli.EXIT_INVALID
+    assert "does not fit the printable area 190.0 x 277.0 mm of A4" in report["sheets_error"]
+    assert any("no cutting sheets" in line for line in said)
+    assert "sheets" not in files
