@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <thread>
@@ -43,6 +44,65 @@ std::string chain_names(const AnnealProblem& p, const Slot& s)
     for (int j : s.chains)
         out += (out.empty() ? "" : ", ") + p.chains[j].name;
     return out;
+}
+
+// Why chain j and the chains of slot `other` do not share one patch, in the report's words:
+// their motions differ, their parts lie too far apart when open, or (alike and beside each
+// other) one patch carrying both still collided or missed more.
+std::string why_not_shared(const AnnealProblem& p, int j, const Slot& other)
+{
+    std::ostringstream why;
+    const ChainTarget &a = p.chains[j], &b = p.chains[other.chains.front()];
+    const double motions = motion_distance(a, b);
+    const double apart =
+        a.target.empty() || b.target.empty() ? 0.0 : (a.target.back() - b.target.back()).norm();
+    if (motions > p.alike_fraction * p.diagonal)
+        why << "they move too differently to share a patch (motions " << motions
+            << " mm apart, RMS)";
+    else if (apart > p.beside_fraction * p.diagonal)
+        why << "their parts lie " << apart << " mm apart when open, too far to share a patch";
+    else
+        why << "they move alike (motions " << motions
+            << " mm apart, RMS), but one patch carrying both collides or follows them worse";
+    return why.str();
+}
+
+// Slot i's single chain j and slot `other`'s chains on one patch (a merge): carried by the
+// other's mechanism or by j's `own`, whichever collides with nothing and costs least by eq 6.5,
+// taken when that is less than `fallback` (the state with j made stationary). True when taken.
+bool merged_instead(const AnnealProblem& p, AnnealState& state, int i, int other,
+                    const MotionMechanism& own, const AnnealState& fallback)
+{
+    const Slot& s = state.slots[i];
+    if (s.chains.size() != 1 || state.slots[other].printed)
+        return false;
+    const int j = s.chains.front();
+    for (int k : state.slots[other].chains)
+        if (p.alike.empty() || !p.alike[j][k])
+            return false;
+    double best = state_cost(p, fallback);
+    std::optional<AnnealState> chosen;
+    for (const MotionMechanism& carrier : {state.slots[other].mechanism, own}) {
+        AnnealState trial = state;
+        Slot& host = trial.slots[other];
+        host.mechanism = carrier;
+        host.chains.push_back(j);
+        std::sort(host.chains.begin(), host.chains.end());
+        trial.slots.erase(trial.slots.begin() + i);
+        const int merged = other > i ? other - 1 : other;
+        bool free = true;
+        for (const SlotCollision& h : state_collisions(p, trial))
+            free = free && h.a != merged && h.b != merged;
+        const double cost = state_cost(p, trial);
+        if (free && cost < best) {
+            best = cost;
+            chosen = std::move(trial);
+        }
+    }
+    if (!chosen)
+        return false;
+    state = std::move(*chosen);
+    return true;
 }
 
 double weight_of(const AnnealProblem& p, const Slot& s)
@@ -433,12 +493,18 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
         why << "its own " << to_string(mapped[j]) << " mechanism (" << own.error_mm
             << " mm from its path) collides with the one carrying "
             << chain_names(p, state.slots[other]) << " (volumes overlap by " << worst->depth
-            << " mm) and they move too differently to share a patch (motions "
-            << motion_distance(p.chains[j], p.chains[state.slots[other].chains.front()])
-            << " mm apart, RMS); the search's " << to_string(s.mechanism.kind)
-            << " instead misses it by " << error << " mm, more than " << remap_bound
-            << " of the character's diagonal worse";
-        demote(p, state, i, why.str(), reasons);
+            << " mm) and " << why_not_shared(p, j, state.slots[other]) << "; the search's "
+            << to_string(s.mechanism.kind) << " instead misses it by " << error << " mm, more than "
+            << remap_bound << " of the character's diagonal worse";
+        // Alike chains may share the other's patch (thesis §6.4.3, merging) rather than stand
+        // still, when that costs less.
+        std::map<int, std::string> demoted_reasons = reasons;
+        AnnealState demoted = state;
+        demote(p, demoted, i, why.str(), demoted_reasons);
+        if (merged_instead(p, state, i, other, own.mechanism, demoted))
+            continue;
+        state = std::move(demoted);
+        reasons = std::move(demoted_reasons);
     }
 
     // Collisions the search could not resolve: the lighter mechanism of the deepest pair
@@ -456,11 +522,8 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
         std::ostringstream why;
         why << "its " << to_string(state.slots[loser].mechanism.kind)
             << " mechanism collides with the one carrying " << chain_names(p, state.slots[other])
-            << " (volumes overlap by " << worst.depth
-            << " mm) and they move too differently to share a patch (motions "
-            << motion_distance(p.chains[state.slots[loser].chains.front()],
-                               p.chains[state.slots[other].chains.front()])
-            << " mm apart, RMS)";
+            << " (volumes overlap by " << worst.depth << " mm) and "
+            << why_not_shared(p, state.slots[loser].chains.front(), state.slots[other]);
         demote(p, state, loser, why.str(), reasons);
     }
     r.timings_s.push_back({"collision repair", seconds_since(t)});
