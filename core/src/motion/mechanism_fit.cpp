@@ -318,7 +318,30 @@ std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& t,
         // rides on it: slide the whole mechanism along the fold until its closed parts are on
         // the card, or the start is refused before the polish can move it.
         fit_along_fold_when_closed(m, W);
-        out[int(MotionKind::diagonal)] = finish(m, 800);
+        Candidate c = finish(m, 800);
+        // The path leaves the wings' length partly free, and the polish may take a long-run
+        // member whose wings, unfolded, outgrow the card's sheet (a 378 mm piece on A4, found on
+        // a long capture). Then the run is shortened until they fit and the polish goes on with
+        // the sheet as a bound.
+        if (std::isfinite(c.error_mm) && !diagonal_wings_fit(c.mechanism, card)) {
+            MotionMechanism q = c.mechanism;
+            for (int k = 0; k < 60 && !diagonal_wings_fit(q, card); ++k)
+                q.p[1] *= 0.95;
+            auto bounded = [&](const MotionMechanism& x) {
+                return diagonal_wings_fit(x, card) ? cost(x) : inf;
+            };
+            int evaluations = 800;
+            if (std::isfinite(bounded(q))) {
+                for (int round = 0; round < diagonal_polish_rounds; ++round)
+                    q = polish(q, bounded, evaluations);
+                c.mechanism = q;
+                c.error_mm = motion_error(q, t);
+            } else {
+                c.why = "its wings, unfolded about their spine, do not fit the card's sheet";
+                c.error_mm = inf;
+            }
+        }
+        out[int(MotionKind::diagonal)] = c;
     }
     {
         // Stationary: a platform point at the last pose's distance from the fold; the height

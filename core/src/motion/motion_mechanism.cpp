@@ -501,6 +501,30 @@ double shortest_crease()
     return crease;
 }
 
+bool diagonal_wings_fit(const MotionMechanism& m, const CardParams& card)
+{
+    // The v-fold's two wings are one piece of the sheets, unfolded about their spine O–P: the
+    // wing O-A-P and its mirror across O–P. Open (θ = π), A = (X, offset + Y, 0) lies on the
+    // page. Across the spine the piece spans twice A's distance from it; along it, the wing's
+    // shadow on O–P. The card is the largest whose open sheet (W × 2D) fits the paper, so the
+    // piece, grown by a glue tab on each side, must fit W × 2D one way or the other.
+    if (m.kind != MotionKind::diagonal)
+        return true;
+    const VFoldParams v = diagonal_v_fold(m);
+    const double X = v.run * std::sin(v.hinge_angle), Y = v.run * std::cos(v.hinge_angle);
+    const Vec3 O(0, v.offset, 0), A(X, v.offset + Y, 0), P = v_fold_tip(v, M_PI, M_PI);
+    const Vec3 spine = P - O;
+    const double length = spine.norm();
+    if (!(length > 0))
+        return false;
+    const double across = 2 * (A - O).cross(spine).norm() / length;
+    const double along_a = (A - O).dot(spine) / length;
+    const double along = std::max(length, along_a) - std::min(0.0, along_a);
+    const double tabs = 2 * SheetOptions{}.tab_width;
+    const double W = card.width, D2 = 2 * card.depth;
+    return (across + tabs <= D2 && along + tabs <= W) || (across + tabs <= W && along + tabs <= D2);
+}
+
 namespace {
 
 Violation first_violation(const MotionMechanism& m, const CardParams& card)

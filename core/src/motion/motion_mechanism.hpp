@@ -111,6 +111,11 @@ std::string infeasibility(const MotionMechanism& m, const CardParams& card);
 /// infeasibility(m, card).empty(), without writing the reason (the search asks per move).
 bool feasible(const MotionMechanism& m, const CardParams& card);
 
+/// False for a diagonal whose v-fold wings, one piece unfolded about their spine with a glue
+/// tab on each side, do not fit the card's open sheet (W × 2D, which PopUp sizes to the paper);
+/// true for every other kind.
+bool diagonal_wings_fit(const MotionMechanism& m, const CardParams& card);
+
 /// Builds the mechanism on the card's central fold with the library's generators; appends its
 /// FittedMechanism rows (host before what it carries). Names: `name` (and `name`_step for the
 /// diagonal's step fold).

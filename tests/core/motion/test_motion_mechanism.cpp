@@ -9,6 +9,8 @@
 #include "motion/collision_volume.hpp"
 #include "motion_fixtures.hpp"
 #include "popup/model/card.hpp"
+#include "popup/sheets/nest.hpp"
+#include "popup/sheets/sheet_layout.hpp"
 #include "popup/simulation/check_validity.hpp"
 #include "popup/simulation/simulate_fold.hpp"
 
@@ -264,6 +266,53 @@ TEST(MotionMechanism, AMergedArmCarriesEachPartWithItsWingAsTheSimulatorDoes)
         EXPECT_LT(worst, 1e-6) << name << ": " << worst << " mm from the simulator's pose";
         EXPECT_LT(at_tip, 1e-9) << name;
     }
+}
+
+TEST(MotionMechanism, ADiagonalsWingsMustFitTheCardsSheet)
+{
+    // PopUp's card for A4 is 186 x 136.5 mm (open, it fills A4 inside the sheets' margins). A
+    // diagonal with a 193 mm run at 40.2 deg (found on a long capture) unfolds its two wings into
+    // one piece 378 mm long: diagonal_wings_fit says no, and the sheets indeed cannot lay it out
+    // on A4. Feasible diagonals drawn at random that it passes all lay out on A4.
+    CardParams card;
+    card.width = 186;
+    card.depth = 136.5;
+    SheetOptions a4;
+    a4.nest.paper = paper_by_name("A4").value;
+    auto lays_out = [&](const MotionMechanism& m) {
+        Scaffold s = make_card(card).value;
+        std::vector<FittedMechanism> rows;
+        EXPECT_TRUE(build_mechanism(s, central_fold(s), m, "M", rows).ok);
+        return layout_sheets(s, a4).ok;
+    };
+    MotionMechanism long_run;
+    long_run.kind = MotionKind::diagonal;
+    long_run.p = {27.45, 193.22, 40.19 * M_PI / 180, 40.72, 10, 12, 16, 12};
+    EXPECT_EQ(infeasibility(long_run, card), "");
+    EXPECT_FALSE(diagonal_wings_fit(long_run, card));
+    EXPECT_FALSE(lays_out(long_run));
+    EXPECT_TRUE(diagonal_wings_fit(sample_mechanism(MotionKind::rotation), card));
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> offset(0, 120), run(20, 200), angle(10, 80),
+        spine(30, 120);
+    int passed = 0, refused = 0;
+    for (int trial = 0; trial < 5000 && passed < 12; ++trial) {
+        MotionMechanism m = long_run;
+        m.p[0] = offset(rng);
+        m.p[1] = run(rng);
+        m.p[2] = angle(rng) * M_PI / 180;
+        m.p[3] = spine(rng);
+        if (!infeasibility(m, card).empty())
+            continue;
+        if (!diagonal_wings_fit(m, card)) {
+            ++refused;
+            continue;
+        }
+        ++passed;
+        EXPECT_TRUE(lays_out(m)) << "run " << m.p[1] << " angle " << m.p[2] << " spine " << m.p[3];
+    }
+    EXPECT_GE(passed, 12);
+    EXPECT_GT(refused, 0);
 }
 
 } // namespace
