@@ -274,32 +274,43 @@ double aligned_overlap(const OrientedBox& a, const OrientedBox& b)
     return overlap > 0 ? overlap : 0.0;
 }
 
+// Calls visit(boxes, ia, ib) for the pieces of band k that may meet: on sides of the fold's
+// plane that can touch, their boxes overlapping by `boxes` (none when the whole-band boxes, which
+// hold every piece's box, are apart). Stops, returning true, when visit does.
+template <class Visit>
+bool each_box_pair(const CollisionVolume& a, const CollisionVolume& b, std::size_t k, Visit visit)
+{
+    if (aligned_overlap(a.bands[k], b.bands[k]) <= 0)
+        return false;
+    const std::size_t na = a.sides.size(), nb = b.sides.size();
+    for (std::size_t i = 0; i < na; ++i)
+        for (std::size_t j = 0; j < nb; ++j) {
+            if (a.sides[i] * b.sides[j] < 0)
+                continue;
+            const std::size_t ia = k * na + i, ib = k * nb + j;
+            const double d = aligned_overlap(a.aligned[ia], b.aligned[ib]);
+            if (d > 0 && visit(d, ia, ib))
+                return true;
+        }
+    return false;
+}
+
 } // namespace
 
 double collision_depth(const CollisionVolume& a, const CollisionVolume& b)
 {
     double sum = 0.0;
-    const std::size_t n = std::min(a.bands.size(), b.bands.size());
-    const std::size_t na = a.sides.size(), nb = b.sides.size();
     struct Pair {
         double boxes;
         std::size_t ia, ib;
     };
     thread_local std::vector<Pair> pairs;
-    for (std::size_t k = 0; k < n; ++k) {
-        // The whole-band boxes hold every piece's box: apart, no two pieces meet.
-        if (aligned_overlap(a.bands[k], b.bands[k]) <= 0)
-            continue;
+    for (std::size_t k = 0; k < std::min(a.bands.size(), b.bands.size()); ++k) {
         pairs.clear();
-        for (std::size_t i = 0; i < na; ++i)
-            for (std::size_t j = 0; j < nb; ++j) {
-                if (a.sides[i] * b.sides[j] < 0)
-                    continue;
-                const std::size_t ia = k * na + i, ib = k * nb + j;
-                const double d = aligned_overlap(a.aligned[ia], b.aligned[ib]);
-                if (d > 0)
-                    pairs.push_back({d, ia, ib});
-            }
+        each_box_pair(a, b, k, [&](double d, std::size_t ia, std::size_t ib) {
+            pairs.push_back({d, ia, ib});
+            return false;
+        });
         // Each piece is within its box and its padded points' hull: the pieces share no room
         // when either pair is apart, and the shallower overlap bounds how deep they can meet.
         // Deepest boxes first: a pair whose boxes overlap less than the deepest found so far
@@ -323,21 +334,11 @@ bool collide(const CollisionVolume& a, const CollisionVolume& b)
 {
     // collision_depth's band depth is positive exactly when some pair of pieces overlaps both
     // as boxes and as hulls; any such pair answers.
-    const std::size_t n = std::min(a.bands.size(), b.bands.size());
-    const std::size_t na = a.sides.size(), nb = b.sides.size();
-    for (std::size_t k = 0; k < n; ++k) {
-        if (aligned_overlap(a.bands[k], b.bands[k]) <= 0)
-            continue;
-        for (std::size_t i = 0; i < na; ++i)
-            for (std::size_t j = 0; j < nb; ++j) {
-                if (a.sides[i] * b.sides[j] < 0)
-                    continue;
-                const std::size_t ia = k * na + i, ib = k * nb + j;
-                const double d = aligned_overlap(a.aligned[ia], b.aligned[ib]);
-                if (d > 0 && piece_overlap(a, ia, b, ib, d) > 0)
-                    return true;
-            }
-    }
+    for (std::size_t k = 0; k < std::min(a.bands.size(), b.bands.size()); ++k)
+        if (each_box_pair(a, b, k, [&](double d, std::size_t ia, std::size_t ib) {
+                return piece_overlap(a, ia, b, ib, d) > 0;
+            }))
+            return true;
     return false;
 }
 

@@ -330,10 +330,9 @@ std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& t,
             auto bounded = [&](const MotionMechanism& x) {
                 return diagonal_wings_fit(x, card) ? cost(x) : inf;
             };
-            int evaluations = 800;
             if (std::isfinite(bounded(q))) {
                 for (int round = 0; round < diagonal_polish_rounds; ++round)
-                    q = polish(q, bounded, evaluations);
+                    q = polish(q, bounded, 800);
                 c.mechanism = q;
                 c.error_mm = motion_error(q, t);
             } else {

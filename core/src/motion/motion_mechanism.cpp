@@ -504,15 +504,15 @@ double shortest_crease()
 bool diagonal_wings_fit(const MotionMechanism& m, const CardParams& card)
 {
     // The v-fold's two wings are one piece of the sheets, unfolded about their spine O–P: the
-    // wing O-A-P and its mirror across O–P. Open (θ = π), A = (X, offset + Y, 0) lies on the
-    // page. Across the spine the piece spans twice A's distance from it; along it, the wing's
-    // shadow on O–P. The card is the largest whose open sheet (W × 2D) fits the paper, so the
-    // piece, grown by a glue tab on each side, must fit W × 2D one way or the other.
+    // wing O-A-P (mechanism_parts' first piece) and its mirror across O–P. Across the spine the
+    // piece spans twice A's distance from it; along it, the wing's shadow on O–P. The card is
+    // the largest whose open sheet (W × 2D) fits the paper, so the piece, grown by a glue tab on
+    // each side, must fit W × 2D one way or the other.
     if (m.kind != MotionKind::diagonal)
         return true;
-    const VFoldParams v = diagonal_v_fold(m);
-    const double X = v.run * std::sin(v.hinge_angle), Y = v.run * std::cos(v.hinge_angle);
-    const Vec3 O(0, v.offset, 0), A(X, v.offset + Y, 0), P = v_fold_tip(v, M_PI, M_PI);
+    thread_local std::vector<MechanismPart> opened;
+    mechanism_parts(m, M_PI, opened);
+    const Vec3 &O = opened[0].vertices[0], &A = opened[0].vertices[1], &P = opened[0].vertices[2];
     const Vec3 spine = P - O;
     const double length = spine.norm();
     if (!(length > 0))
