@@ -7,6 +7,7 @@ target path, put back through report.json's animation_to_card, is the arc the BV
 draw; the GIF has the movie's frame count and size; the report's totals are re-added from its
 own rows and its mechanisms are the document's features."""
 
+import math
 import os
 
 import numpy as np
@@ -83,6 +84,22 @@ def test_the_report_has_every_key_with_its_type(waved):
     diagonal = report["targets"]["diagonal_mm"]
     for chain in report["chains"]:
         assert chain["error"] == pytest.approx(chain["error_mm"] / diagonal, rel=1e-9, abs=1e-12)
+    # The reach floor, recomputed from the path and the card: the RMS of how far each target lies
+    # beyond depth·sin(θ/2) across the fold (θ = 180°·s); no chain's error is below it.
+    depth = report["card"]["depth_mm"]
+    for chain in report["chains"]:
+        short = [
+            max(0.0, abs(x) - depth * math.sin(math.pi * s / 2))
+            for s, (x, _) in zip(chain["s"], chain["target"])
+        ]
+        floor = math.sqrt(sum(d * d for d in short) / len(short))
+        assert chain["floor_mm"] == pytest.approx(floor, rel=1e-9, abs=1e-9)
+        assert chain["floor"] == pytest.approx(floor / diagonal, rel=1e-9, abs=1e-12)
+        assert chain["floor_mm"] <= chain["error_mm"] + 1e-9
+    assert max(c["floor_mm"] for c in report["chains"]) > 5.0  # the hands start far off the fold
+    assert report["weighted_floor"] == pytest.approx(
+        sum(c["weight"] * c["floor"] for c in report["chains"]), rel=1e-9, abs=1e-12
+    )
     timings = report["timings_s"]
     assert "total" in timings and {"load", "design_other", "document", "movie"} <= set(timings)
     assert sum(v for k, v in timings.items() if k != "total") <= timings["total"] + 1e-6

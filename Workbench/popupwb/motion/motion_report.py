@@ -14,14 +14,16 @@ VERSION = 1
 
 
 def chain_entry(chain):
-    """One ChainReport: {name, mechanism (the mapping), mechanisms, error, error_mm, weight,
-    status, reason, s, target, achieved}."""
+    """One ChainReport: {name, mechanism (the mapping), mechanisms, error, error_mm, floor,
+    floor_mm, weight, status, reason, s, target, achieved}."""
     return {
         "name": chain.name,
         "mechanism": chain.mapping,
         "mechanisms": list(chain.mechanisms),
         "error": float(chain.error),
         "error_mm": float(chain.error_mm),
+        "floor": float(chain.floor),
+        "floor_mm": float(chain.floor_mm),
         "weight": float(chain.weight),
         "status": chain.status,
         "reason": chain.reason,
@@ -82,6 +84,7 @@ def build_report(*, animation_file, animation, options, result, validity, stages
         "valid": valid,
         "chains": chains,
         "weighted_error": float(result.weighted_error) if result is not None else None,
+        "weighted_floor": float(result.weighted_floor) if result is not None else None,
         "iterations": int(result.iterations) if result is not None else 0,
         "cost": float(result.cost) if result is not None else None,
         "timings_s": timings(stages, total_s),

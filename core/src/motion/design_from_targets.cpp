@@ -12,6 +12,7 @@
 #include "motion_annealing.hpp"
 #include "popup/model/card.hpp"
 #include "popup/simulation/check_validity.hpp"
+#include "reach_floor.hpp"
 
 namespace popup::motion {
 
@@ -712,6 +713,9 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
         }
         cr.error = cr.error_mm / p.diagonal;
         r.weighted_error += c.weight * cr.error;
+        cr.floor_mm = reach_floor_mm(c, p.card);
+        cr.floor = cr.floor_mm / p.diagonal;
+        r.weighted_floor += c.weight * cr.floor;
         r.chains.push_back(cr);
     }
     if (!r.valid)

@@ -31,8 +31,12 @@ struct ChainReport {
     std::string name;
     std::string mapping; ///< "vertical", "diagonal", "horizontal", "rotation", "stationary"
     std::vector<std::string> mechanisms; ///< names of the mechanisms that carry it
-    double error = 0.0;         ///< E_m (eq 6.6) divided by the character's diagonal on the card
-    double error_mm = 0.0;      ///< E_m in mm
+    double error = 0.0;    ///< E_m (eq 6.6) divided by the character's diagonal on the card
+    double error_mm = 0.0; ///< E_m in mm
+    /// The lowest E_m any mechanism on the card could reach (the reach floor: the target beyond
+    /// what the card shows across the fold while nearly closed), / the diagonal, and in mm
+    double floor = 0.0;
+    double floor_mm = 0.0;
     double weight = 0.0;        ///< v_j
     std::string status;         ///< "animated", "merged" or "stationary"
     std::string reason;         ///< why merged or stationary; empty when animated as mapped
@@ -50,6 +54,7 @@ struct MotionResult {
     Scaffold scaffold;           ///< card plus mechanisms at the design state (180°)
     bool valid = false;          ///< the simulator's full validity check passed on `scaffold`
     double weighted_error = 0.0; ///< Σ v_j E_m(j) / diagonal
+    double weighted_floor = 0.0; ///< Σ v_j floor(j): no design on this card scores lower
     long iterations = 0;         ///< annealing iterations run (all search chains)
     double cost = 0.0;           ///< eq 6.5 of the returned state
     std::vector<std::pair<std::string, double>> timings_s; ///< stage -> seconds, in order
