@@ -256,10 +256,12 @@ def _print_summary(report, files):
         why = f" ({chain['reason']})" if chain["reason"] else ""
         print(
             f"chain {chain['name']}: {chain['mechanism']}, {chain['status']}{why}, error "
-            f"{steps.g(chain['error'])}, weight {steps.g(chain['weight'])}"
+            f"{steps.g(chain['error'])} (floor {steps.g(chain['floor'])}), weight "
+            f"{steps.g(chain['weight'])}"
         )
     print(
         f"{report['number_of_mechanisms']} mechanism(s); weighted motion error "
-        f"{steps.g(report['weighted_error'])} of the character's diagonal"
+        f"{steps.g(report['weighted_error'])} of the character's diagonal (no design on this "
+        f"card scores under {steps.g(report['weighted_floor'])}: the reach floor)"
     )
     print("valid design" if report["valid"] else "no valid design found")

@@ -122,6 +122,11 @@ def main():
     )
     check("Design designs", r.get("designed") is True, r.get("status"))
     check(
+        "the status says the reach floor next to the error",
+        "no design on this card under" in r.get("status", ""),
+        r.get("status"),
+    )
+    check(
         "the frame range follows the file",
         r.get("frames_max") == bvh_samples.FRAMES - 1,
         r.get("frames_max"),

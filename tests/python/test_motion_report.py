@@ -18,6 +18,8 @@ def _chain(name, mapping, status, reason="", error=0.01, weight=0.5):
         mechanisms=[f"{name}M"],
         error=error,
         error_mm=error * 200.0,
+        floor=error / 2,
+        floor_mm=error * 100.0,
         weight=weight,
         status=status,
         reason=reason,
@@ -60,6 +62,7 @@ def _result(core):
         mechanisms=[mechanism],
         valid=True,
         weighted_error=0.6 * 0.02 + 0.3 * 0.01,
+        weighted_floor=0.6 * 0.01 + 0.3 * 0.005,
         iterations=3000,
         cost=12.5,
         diagnostics=[],
@@ -87,6 +90,8 @@ def test_the_report_rows_and_their_types(tmp_path):
     assert again == report
     assert again["valid"] is True and again["iterations"] == 3000
     assert again["weighted_error"] == pytest.approx(0.015)
+    assert again["weighted_floor"] == pytest.approx(0.0075)
+    assert again["chains"][0]["floor_mm"] == pytest.approx(2.0)
     assert [c["status"] for c in again["chains"]] == ["animated", "merged", "stationary"]
     assert again["merged"] == ["RightHand"] and again["stationary"] == ["Tail"]
     assert again["chains"][1]["reason"] == "moves like LeftHand"

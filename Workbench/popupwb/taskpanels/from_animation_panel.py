@@ -203,7 +203,8 @@ class FromAnimationPanel(LongJobPanel):
         return (
             f"{len(result.chains)} chain(s) on {len(result.mechanisms)} mechanism(s)"
             f"{': ' + chains if chains else ''}; weighted motion error "
-            f"{result.weighted_error:.3f}; {verdict}. OK builds the card."
+            f"{result.weighted_error:.3f} (no design on this card under "
+            f"{result.weighted_floor:.3f}); {verdict}. OK builds the card."
         )
 
     # --- task dialog protocol ---------------------------------------------------------------
