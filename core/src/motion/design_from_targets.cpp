@@ -287,6 +287,8 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
     // Mapping and parameter estimation (thesis §6.2–6.3).
     Clock::time_point t = Clock::now();
     std::vector<MotionKind> mapped;
+    // The search scores every k-th sample of a long path (search_target); the report, all.
+    std::vector<ChainTarget> full_chains;
     for (std::size_t j = 0; j < targets.chains.size(); ++j) {
         stop_if_cancelled(cancel, "design_motion: mapping");
         ChainTarget c;
@@ -295,7 +297,8 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
         c.target = targets.paths[j].effector;
         c.weight = targets.chains[j].weight;
         c.depth = targets.paths[j].depth;
-        p.chains.push_back(c);
+        full_chains.push_back(c);
+        p.chains.push_back(search_target(c));
         p.candidates.push_back(fit_candidates(c, r.card, p.h_max));
         mapped.push_back(best_mapping(p.candidates.back(), c, 0.01 * p.diagonal, p.diagonal));
         if (progress)
@@ -660,7 +663,7 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
         for (int j : state.slots[i].chains)
             slot_of[j] = i;
     for (int j = 0; j < int(p.chains.size()); ++j) {
-        const ChainTarget& c = p.chains[j];
+        const ChainTarget& c = full_chains[j];
         ChainReport cr;
         cr.name = c.name;
         cr.weight = c.weight;

@@ -163,11 +163,33 @@ double motion_error(const MotionMechanism& m, const ChainTarget& t)
     return std::sqrt(sum / t.s.size());
 }
 
-std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& t,
-                                                        const CardParams& card, double h_max)
+ChainTarget search_target(const ChainTarget& t, std::size_t most)
+{
+    const std::size_t n = t.s.size();
+    if (n <= most || most < 2)
+        return t;
+    const std::size_t k = (n - 1 + most - 2) / (most - 1); // ceil((n − 1)/(most − 1))
+    ChainTarget out = t;
+    out.s.clear();
+    out.target.clear();
+    for (std::size_t i = 0; i < n; i += k) {
+        out.s.push_back(t.s[i]);
+        out.target.push_back(t.target[i]);
+    }
+    if (out.s.back() != t.s.back()) {
+        out.s.push_back(t.s.back());
+        out.target.push_back(t.target.back());
+    }
+    return out;
+}
+
+std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& full,
+                                                        const CardParams& card, double h_max,
+                                                        std::size_t fit_samples)
 {
     std::array<Candidate, motion_kind_count> out;
     const double W = card.width, D = card.depth;
+    const ChainTarget t = search_target(full, fit_samples);
     const Vec2 A0 = t.target.front(), A1 = t.target.back();
     auto cost = [&](const MotionMechanism& m) {
         return feasible(m, card) ? motion_error(m, t) : inf;
@@ -187,7 +209,7 @@ std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& t,
         const int rounds = m.kind == MotionKind::diagonal ? diagonal_polish_rounds : 1;
         for (int round = 0; round < rounds; ++round)
             c.mechanism = polish(c.mechanism, cost, evaluations);
-        c.error_mm = motion_error(c.mechanism, t);
+        c.error_mm = motion_error(c.mechanism, full);
         return c;
     };
     {
@@ -334,7 +356,7 @@ std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& t,
                 for (int round = 0; round < diagonal_polish_rounds; ++round)
                     q = polish(q, bounded, 800);
                 c.mechanism = q;
-                c.error_mm = motion_error(q, t);
+                c.error_mm = motion_error(q, full);
             } else {
                 c.why = "its wings, unfolded about their spine, do not fit the card's sheet";
                 c.error_mm = inf;
@@ -356,7 +378,7 @@ std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& t,
         Candidate c;
         c.mechanism = m;
         c.why = infeasibility(m, card);
-        c.error_mm = c.why.empty() ? motion_error(m, t) : inf;
+        c.error_mm = c.why.empty() ? motion_error(m, full) : inf;
         out[int(MotionKind::stationary)] = c;
     }
     return out;

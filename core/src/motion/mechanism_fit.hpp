@@ -28,13 +28,24 @@ struct Candidate {
     std::string why;       ///< why infeasible, when it is
 };
 
+/// The most samples the candidates' fits evaluate per step (search_target).
+constexpr std::size_t fit_samples_max = 256;
+
+/// t with at most `most` of its samples for a fit to evaluate: every k-th (k the smallest that
+/// keeps within `most`) and the last, so the adaptive samples' density along the path is kept.
+/// t itself when it has no more. A long capture's chain has thousands of samples (4511 frames:
+/// ~8000) that a polish need not see one by one.
+ChainTarget search_target(const ChainTarget& t, std::size_t most = fit_samples_max);
+
 /// One candidate per MotionKind (index = the enum's value): initial parameters from the key
 /// poses (closed forms at s = 0 and s = 1; for the rotation the 1-D search for the spine l of
 /// eq 6.2, for the horizontal translation the 1-D search of the runs' ratio), then a bounded
 /// Nelder–Mead polish of eq 6.6 inside the generators' ranges. The stationary candidate's
-/// platform height is h_max·D (eq 6.7).
+/// platform height is h_max·D (eq 6.7). The starts and the polish see search_target(t,
+/// fit_samples); each candidate's error_mm is eq 6.6 over all of t's samples.
 std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& t,
-                                                        const CardParams& card, double h_max);
+                                                        const CardParams& card, double h_max,
+                                                        std::size_t fit_samples = fit_samples_max);
 
 /// Two candidates whose eq 6.6 errors differ by less than this fraction of the character's
 /// diagonal make the path equally well: the mapping takes the one with fewer parameters.

@@ -69,9 +69,12 @@ double upright(double degrees)
 }
 
 // Where a glue area's code goes: its middle, unless another glue area of the piece (on the
-// paper's other face) covers that point; then the point along the area's mid-depth line nearest
-// the middle that stands clear of the others by half the text's width, so that no two codes
-// print on top of each other (the reader gives a code to the smallest area holding it).
+// paper's other face) covers that point; then the point of the area nearest the middle that
+// stands clear of the others by half the text's width, so that no two codes print on top of each
+// other (the reader gives a code to the smallest area holding it). Without such room, the point
+// deepest both inside the area and outside the others: the reader needs the code's position
+// there, never on an edge (two crowded areas on a small support of a rotation arm's layer had
+// both codes put on their own edges, and the round trip found neither).
 Vec2 glue_label_position(const LocalPiece& piece, size_t index, double width)
 {
     const GlueArea& g = piece.glue[index];
@@ -89,24 +92,32 @@ Vec2 glue_label_position(const LocalPiece& piece, size_t index, double width)
     const Vec2 middle = mean(g.polygon);
     if (clear_by(middle) >= 0.0)
         return middle;
-    // The mid-depth line: halfway between the crease (edge 0-1) and the far edge (2-3).
-    const Vec2 from = 0.5 * (g.polygon[0] + g.polygon[3]), to = 0.5 * (g.polygon[1] + g.polygon[2]);
-    constexpr int samples = 64;
+    // Points over the area: the quad (crease 0-1, far edge 2-3) sampled bilinearly.
+    constexpr int samples = 32;
+    const Vec2 &p0 = g.polygon[0], &p1 = g.polygon[1], &p2 = g.polygon[2], &p3 = g.polygon[3];
     Vec2 best = middle;
-    double best_clear = -1.0, best_shift = 1e300;
-    for (int k = 0; k <= samples; ++k) {
-        const Vec2 q = from + (to - from) * (double(k) / samples);
-        const double c = std::min(clear_by(q), distance_to_boundary(g.polygon, q) + 0.5 * width);
-        const double shift = (q - middle).norm();
-        const bool enough = c >= 0.5 * width, best_enough = best_clear >= 0.5 * width;
-        if ((enough && (!best_enough || shift < best_shift)) ||
-            (!enough && !best_enough && c > best_clear)) {
-            best = q;
-            best_clear = c;
-            best_shift = shift;
+    double best_room = -1.0, best_shift = 1e300;
+    bool best_enough = false;
+    for (int i = 1; i < samples; ++i)
+        for (int j = 1; j < samples; ++j) {
+            const double u = double(i) / samples, v = double(j) / samples;
+            const Vec2 q = (1 - v) * (p0 + u * (p1 - p0)) + v * (p3 + u * (p2 - p3));
+            if (!point_in_polygon(g.polygon, q))
+                continue;
+            const double inside = distance_to_boundary(g.polygon, q), clear = clear_by(q);
+            if (clear < 0.0)
+                continue;
+            const bool enough = clear >= 0.5 * width;
+            const double room = std::min(inside, clear), shift = (q - middle).norm();
+            if ((enough && (!best_enough || shift < best_shift)) ||
+                (!enough && !best_enough && room > best_room)) {
+                best = q;
+                best_room = room;
+                best_shift = shift;
+                best_enough = enough;
+            }
         }
-    }
-    return best_clear >= 0.0 ? best : middle;
+    return best;
 }
 
 void add_labels(LocalPiece& piece, const std::string& piece_id, bool fold_hints)

@@ -218,5 +218,37 @@ TEST(MechanismFit, AStillChainWhoseLayerDoesNotFitGetsOnlyAMechanismThatHoldsItS
     EXPECT_EQ(best_mapping(c, t, 2.0, 200.0), MotionKind::stationary);
 }
 
+TEST(MechanismFit, ALongPathIsFittedOnEveryKthSampleAndScoredOnAll)
+{
+    // 4001 samples of a known rotation with a 1 mm wobble along the fold (a capture's jitter):
+    // the fits see every 16th sample and the last (ceil(4000/255) = 16: 251 samples), and each
+    // candidate's error is eq 6.6 over all 4001.
+    const MotionMechanism truth = testing::sample_mechanism(MotionKind::rotation);
+    ChainTarget t;
+    for (int k = 0; k <= 4000; ++k) {
+        const double s = k / 4000.0;
+        t.s.push_back(s);
+        t.target.push_back(mechanism_point(truth, M_PI * s).head<2>() + Vec2(0, std::sin(0.9 * k)));
+    }
+    const ChainTarget thin = search_target(t);
+    ASSERT_EQ(thin.s.size(), 251u);
+    for (std::size_t i = 0; i < thin.s.size(); ++i) {
+        const std::size_t k = std::min<std::size_t>(16 * i, 4000);
+        EXPECT_EQ(thin.s[i], t.s[k]);
+        EXPECT_EQ(thin.target[i], t.target[k]);
+    }
+    EXPECT_EQ(search_target(thin).s.size(), 251u); // short enough already: kept whole
+    const auto candidates = fit_candidates(t, a4(), 25);
+    EXPECT_EQ(best_mapping(candidates, t, 2.0, 200.0), MotionKind::rotation);
+    for (const Candidate& c : candidates) {
+        if (std::isfinite(c.error_mm)) {
+            EXPECT_DOUBLE_EQ(c.error_mm, motion_error(c.mechanism, t));
+        }
+    }
+    // The wobble's RMS is 1/√2 mm: the fitted arm is as close as the true one, within 0.05 mm.
+    EXPECT_NEAR(motion_error(truth, t), std::sqrt(0.5), 0.01);
+    EXPECT_LT(candidates[int(MotionKind::rotation)].error_mm, motion_error(truth, t) + 0.05);
+}
+
 } // namespace
 } // namespace popup::motion
