@@ -214,7 +214,8 @@ def _write_pictures(args, result, animation, stages, files, say):
             result.chains,
             result.card.width,
             result.card.depth,
-            title=f"{title}: weighted motion error {result.weighted_error:.4f}",
+            title=f"{title}: weighted motion error {result.weighted_error:.4f} "
+            f"(reach floor {result.weighted_floor:.4f})",
         )
     say(f"wrote {files['paths']}")
     with stages.stage("movie", "drawing the card opening beside the animation"):

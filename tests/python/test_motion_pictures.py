@@ -136,6 +136,25 @@ def test_the_paths_plot_is_written_and_deterministic(tmp_path):
         assert a.read() == b.read()
 
 
+def test_the_paths_plot_labels_each_chain_with_its_error_and_reach_floor():
+    from popupwb.motion.paths_plot import chain_paths
+
+    chain = _chain()
+    assert chain_paths([chain])[0][0] == "Arm: rotation, E = 0.012"  # no floor known: none said
+    chain.floor = 0.0071
+    assert chain_paths([chain])[0][0] == "Arm: rotation, E = 0.012 (floor 0.007)"
+    entry = {
+        "name": "Hand",
+        "mechanism": "stationary",
+        "status": "stationary",
+        "error": 0.15,
+        "floor": 0.1019,
+        "target": [[0, 0]],
+        "achieved": [[0, 0]],
+    }
+    assert chain_paths([entry])[0][0] == "Hand: stationary, E = 0.150 (floor 0.102) [stationary]"
+
+
 def test_the_character_frames_follow_the_bvh(tmp_path):
     """The right half of the movie: the hand-written BVH's hand is where its channels put it, at
     the movie's fractional frames, mapped by animation_to_card (here a scale and a shift)."""

@@ -30,10 +30,12 @@ def chain_paths(chains):
     """[(label, status, target Nx2, achieved Nx2)] of ChainReports (or dicts of report.json)."""
     rows = []
     for chain in chains:
-        get = chain.get if isinstance(chain, dict) else lambda k, c=chain: getattr(c, k)
+        get = chain.get if isinstance(chain, dict) else lambda k, c=chain: getattr(c, k, None)
         mapping = get("mechanism") if isinstance(chain, dict) else get("mapping")
-        error = get("error")
+        error, floor = get("error"), get("floor")
         label = f"{get('name')}: {mapping}, E = {error:.3f}" if error is not None else get("name")
+        if error is not None and floor:
+            label += f" (floor {floor:.3f})"  # the reach floor: no design follows it closer
         status = get("status")
         rows.append(
             (
