@@ -527,6 +527,19 @@ bool diagonal_wings_fit(const MotionMechanism& m, const CardParams& card)
 
 namespace {
 
+// A floating layer's legs and platform unfold into one strip, a glue tab at each leg's foot:
+// 2 (height + support + overhang) + 2 tabs long. The card's open sheet (2D long, PopUp sizes the
+// card to the paper) must hold it, as it must the diagonal's wings (found by drawing random
+// feasible off-fold arms: a 76.5 mm layer on 58.8 mm supports unfolded to 286.6 mm, longer than
+// A4's printable 277 mm, and the sheets refused the design).
+bool layer_strip_fits(const FloatingLayerParams& f, const CardParams& card)
+{
+    // With an overhang the legs, turned out about their creases, would lie on the platform's
+    // overhang: the sheets cut them off at a tab joint, and the platform is the long piece.
+    const double strip = f.overhang > 0 ? 2 * (f.support + f.overhang) : 2 * (f.height + f.support);
+    return strip + 2 * SheetOptions{}.tab_width <= 2 * card.depth;
+}
+
 Violation first_violation(const MotionMechanism& m, const CardParams& card)
 {
     const double W = card.width, D = card.depth;
@@ -571,6 +584,10 @@ Violation first_violation(const MotionMechanism& m, const CardParams& card)
         // Closed, the support stands on the page from s to s + height.
         if (!(f.support + f.height < D - margin))
             return fail("hinge", m.p[4], "with the layer's height under the closed card's top");
+        if (!layer_strip_fits(f, card))
+            return fail("hinge", m.p[4],
+                        "with the layer's height, unfolded with its tabs, within the card's open "
+                        "sheet (2 × depth)");
         break;
     }
     case MotionKind::vertical: {
@@ -652,6 +669,10 @@ Violation first_violation(const MotionMechanism& m, const CardParams& card)
             return fail("width", f.width, "with height and support >= the shortest glued crease");
         if (!(std::abs(m.p[5]) <= f.support + f.overhang))
             return fail("anchor", m.p[5], "on the platform (|anchor| <= support + overhang)");
+        if (!layer_strip_fits(f, card))
+            return fail("support", f.support,
+                        "with height and overhang, unfolded with its tabs, within the card's open "
+                        "sheet (2 × depth)");
         break;
     }
     }

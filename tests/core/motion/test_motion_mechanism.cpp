@@ -316,6 +316,69 @@ TEST(MotionMechanism, ADiagonalsWingsMustFitTheCardsSheet)
     EXPECT_GT(refused, 0);
 }
 
+TEST(MotionMechanism, EveryFeasibleMechanismLaysOutOnTheCardsPaper)
+{
+    // The search bounds only the diagonal's pieces by the paper (diagonal_wings_fit); every other
+    // kind's are bounded by its ranges. Mechanisms drawn at random around each kind's sample
+    // (the off-fold arm on both sides too) that infeasibility and diagonal_wings_fit accept all
+    // build and lay out on A4 with the card PopUp sizes to it.
+    CardParams card;
+    card.width = 186;
+    card.depth = 136.5;
+    SheetOptions a4;
+    a4.nest.paper = paper_by_name("A4").value;
+    std::mt19937_64 rng(5);
+    std::normal_distribution<double> step(0.0, 1.0);
+    for (int k = 0; k <= motion_kind_count + 1; ++k) {
+        const MotionMechanism start =
+            k < motion_kind_count ? sample_mechanism(MotionKind(k))
+                                  : testing::off_fold_rotation(k == motion_kind_count ? 1 : -1);
+        int laid_out = 0;
+        for (int trial = 0; trial < 3000 && laid_out < 20; ++trial) {
+            MotionMechanism m = start;
+            for (int i = 0; i < parameter_count(m.kind); ++i)
+                m.p[i] += step(rng) *
+                          (parameter_info(m.kind, i).role == ParameterRole::angle ? 0.3 : 30.0);
+            if (!feasible(m, card) || !diagonal_wings_fit(m, card))
+                continue;
+            Scaffold s = make_card(card).value;
+            std::vector<FittedMechanism> rows;
+            ASSERT_TRUE(build_mechanism(s, central_fold(s), m, "M", rows).ok) << k;
+            const auto sheets = layout_sheets(s, a4);
+            ASSERT_TRUE(sheets.ok) << k << ": " << sheets.diagnostics.front().message;
+            ++laid_out;
+        }
+        EXPECT_GE(laid_out, k == int(MotionKind::diagonal) ? 8 : 20) << k;
+    }
+}
+
+TEST(MotionMechanism, AFloatingLayerMustUnfoldOntoTheCardsSheet)
+{
+    // The off-fold arm found by the test above: its 76.5 mm layer on supports 58.75 mm from the
+    // fold unfolds into a strip 2 (76.5 + 58.75) + 2 tabs of 8 mm = 286.5 mm, over the A4 card's
+    // open sheet (2 × 136.5 = 273 mm): refused, naming the hinge.
+    CardParams card;
+    card.width = 186;
+    card.depth = 136.5;
+    MotionMechanism arm;
+    arm.kind = MotionKind::rotation;
+    arm.p = {64.95, 54.68, 75.50, 6.47, 58.75};
+    const std::string why = infeasibility(arm, card);
+    EXPECT_NE(why.find("hinge"), std::string::npos) << why;
+    EXPECT_NE(why.find("open sheet"), std::string::npos) << why;
+    // With run 25 the layer is 26 mm high: 2 (26 + 58.75) + 16 = 185.5 mm fits.
+    arm.p[2] = 25;
+    EXPECT_EQ(infeasibility(arm, card), "");
+    // A still part's layer with an overhang: the platform, 2 (support + overhang) + 16, is the long
+    // piece. 2 (58.8 + 63.5) + 16 = 260.6 mm fits; 10 mm more overhang (280.6 mm) does not.
+    MotionMechanism layer;
+    layer.kind = MotionKind::stationary;
+    layer.p = {71.7, 53.6, 11.3, 58.8, 63.5, -100};
+    EXPECT_EQ(infeasibility(layer, card), "");
+    layer.p[4] = 73.5;
+    EXPECT_NE(infeasibility(layer, card).find("open sheet"), std::string::npos);
+}
+
 TEST(MotionMechanism, EveryPatchStaysWithinTheCardsReachAcrossTheFold)
 {
     // The premise of the reach floor (reach_floor.hpp): at fold angle θ no paper is seen farther
