@@ -2,8 +2,27 @@
 #include <cmath>
 
 #include "motion/motion_mechanism.hpp"
+#include "popup/model/card.hpp"
 
 namespace popup::motion::testing {
+
+/// The A4-sized card the samples below are drawn for: 210 × 148 mm.
+inline CardParams a4_card()
+{
+    CardParams c;
+    c.width = 210;
+    c.depth = 148;
+    return c;
+}
+
+/// The card PopUp makes for A4 sheets: 186 × 136.5 mm (open, it fills A4 inside the margins).
+inline CardParams card_for_a4_sheets()
+{
+    CardParams c;
+    c.width = 186;
+    c.depth = 136.5;
+    return c;
+}
 
 /// One feasible mechanism of each kind on an A4 card (210 × 148 mm), parameters chosen by hand.
 inline MotionMechanism sample_mechanism(MotionKind kind)

@@ -126,9 +126,7 @@ TEST(CollisionVolume, EveryClosedFormVertexAt1000AnglesLiesInItsPiecesBox)
     // Independent of how the boxes are made: the closed forms sampled 1000 times (the volume
     // samples 17 angles), each vertex, x divided by sin(θ/2), tested against its piece's box in
     // the band holding θ (the box and the padded hull share the samples and the pads).
-    CardParams card;
-    card.width = 210;
-    card.depth = 148;
+    const CardParams card = testing::a4_card();
     std::vector<MotionMechanism> mechanisms = rig_four_mechanisms();
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> scale(0.7, 1.3);

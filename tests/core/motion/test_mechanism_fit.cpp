@@ -25,14 +25,6 @@ ChainTarget target_of(const MotionMechanism& m)
     return t;
 }
 
-CardParams a4()
-{
-    CardParams c;
-    c.width = 210;
-    c.depth = 148;
-    return c;
-}
-
 TEST(MechanismFit, MotionErrorOfAKnownOffsetIsThatOffset)
 {
     // Eq 6.6 by hand: a target shifted by (3, 4) mm everywhere is 5 mm off at every sample.
@@ -49,7 +41,7 @@ TEST(MechanismFit, RecoversTypeAndParametersOfClosedFormPaths)
     for (MotionKind kind : {MotionKind::rotation, MotionKind::vertical, MotionKind::horizontal}) {
         const MotionMechanism truth = testing::sample_mechanism(kind);
         const ChainTarget t = target_of(truth);
-        const auto candidates = fit_candidates(t, a4(), 25);
+        const auto candidates = fit_candidates(t, testing::a4_card(), 25);
         const MotionKind mapped = best_mapping(candidates, t, 2.0, 200.0);
         EXPECT_EQ(mapped, kind) << to_string(kind);
         const Candidate& c = candidates[int(kind)];
@@ -83,7 +75,7 @@ TEST(MechanismFit, RecoversARotationOffTheFold)
         SCOPED_TRACE(side > 0 ? "side_ground" : "side_backdrop");
         const MotionMechanism truth = testing::off_fold_rotation(side);
         const ChainTarget t = target_of(truth);
-        const auto candidates = fit_candidates(t, a4(), 25);
+        const auto candidates = fit_candidates(t, testing::a4_card(), 25);
         EXPECT_EQ(best_mapping(candidates, t, 2.0, 200.0), MotionKind::rotation);
         const Candidate& c = candidates[int(MotionKind::rotation)];
         EXPECT_LT(c.error_mm, 0.05);
@@ -115,7 +107,7 @@ TEST(MechanismFit, SlidingTheArmsVertexAlongItsHingeKeepsThePath)
         const double k = 0.3, l = a.p[1], w = a.p[2];
         const double hinge = side > 0 ? a.p[4] + k * w : a.p[4];
         b.p = {a.p[0] + k * l, (1 - k) * l, (1 - k) * w, a.p[3] + k * w, hinge};
-        ASSERT_EQ(infeasibility(b, a4()), "");
+        ASSERT_EQ(infeasibility(b, testing::a4_card()), "");
         for (int i = 0; i <= 36; ++i) {
             const double theta = M_PI * i / 36;
             const Vec3 d = mechanism_point(b, theta) - mechanism_point(a, theta);
@@ -128,7 +120,7 @@ TEST(MechanismFit, SlidingTheArmsVertexAlongItsHingeKeepsThePath)
 TEST(MechanismFit, HorizontalRunsRatioIsRecovered)
 {
     const MotionMechanism truth = testing::sample_mechanism(MotionKind::horizontal);
-    const auto candidates = fit_candidates(target_of(truth), a4(), 25);
+    const auto candidates = fit_candidates(target_of(truth), testing::a4_card(), 25);
     const MotionMechanism& m = candidates[int(MotionKind::horizontal)].mechanism;
     EXPECT_NEAR(m.p[3] / m.p[2], truth.p[3] / truth.p[2], 0.01);
 }
@@ -137,7 +129,7 @@ TEST(MechanismFit, DiagonalPathIsMappedToTheDiagonalTranslation)
 {
     const MotionMechanism truth = testing::sample_mechanism(MotionKind::diagonal);
     const ChainTarget t = target_of(truth);
-    const auto candidates = fit_candidates(t, a4(), 25);
+    const auto candidates = fit_candidates(t, testing::a4_card(), 25);
     EXPECT_EQ(best_mapping(candidates, t, 2.0, 200.0), MotionKind::diagonal);
     EXPECT_LT(candidates[int(MotionKind::diagonal)].error_mm, 0.01 * 210);
 }
@@ -151,7 +143,7 @@ TEST(MechanismFit, StillChainGoesOnAFloatingLayerAtItsDepth)
         t.s.push_back(k / 10.0);
         t.target.push_back(Vec2(30, 100));
     }
-    const auto candidates = fit_candidates(t, a4(), 25);
+    const auto candidates = fit_candidates(t, testing::a4_card(), 25);
     EXPECT_EQ(best_mapping(candidates, t, 2.0, 200.0), MotionKind::stationary);
     EXPECT_NEAR(mechanism_height(candidates[int(MotionKind::stationary)].mechanism), 15.0, 1e-9);
 }
@@ -164,9 +156,9 @@ TEST(MechanismFit, ADiagonalWhoseClosedSpineReachesPastTheFoldsEndIsStillFitted)
     MotionMechanism truth;
     truth.kind = MotionKind::diagonal;
     truth.p = {40, 60, M_PI / 4, 55, 6, 12, 30, 12};
-    ASSERT_EQ(infeasibility(truth, a4()), "");
+    ASSERT_EQ(infeasibility(truth, testing::a4_card()), "");
     const ChainTarget t = target_of(truth);
-    const auto candidates = fit_candidates(t, a4(), 25);
+    const auto candidates = fit_candidates(t, testing::a4_card(), 25);
     EXPECT_EQ(best_mapping(candidates, t, 2.0, 200.0), MotionKind::diagonal);
     EXPECT_LT(candidates[int(MotionKind::diagonal)].error_mm, 0.5);
 }
@@ -203,7 +195,7 @@ TEST(MechanismFit, AStillChainWhoseLayerDoesNotFitGetsOnlyAMechanismThatHoldsItS
         t.s.push_back(k / 8.0);
         t.target.push_back(Vec2(-110, 195));
     }
-    const auto candidates = fit_candidates(t, a4(), 25);
+    const auto candidates = fit_candidates(t, testing::a4_card(), 25);
     ASSERT_FALSE(std::isfinite(candidates[int(MotionKind::stationary)].error_mm));
     ASSERT_TRUE(std::isfinite(candidates[int(MotionKind::rotation)].error_mm));
     EXPECT_EQ(best_mapping(candidates, t, 2.0, 200.0), MotionKind::stationary);
@@ -238,7 +230,7 @@ TEST(MechanismFit, ALongPathIsFittedOnEveryKthSampleAndScoredOnAll)
         EXPECT_EQ(thin.target[i], t.target[k]);
     }
     EXPECT_EQ(search_target(thin).s.size(), 251u); // short enough already: kept whole
-    const auto candidates = fit_candidates(t, a4(), 25);
+    const auto candidates = fit_candidates(t, testing::a4_card(), 25);
     EXPECT_EQ(best_mapping(candidates, t, 2.0, 200.0), MotionKind::rotation);
     for (const Candidate& c : candidates) {
         if (std::isfinite(c.error_mm)) {

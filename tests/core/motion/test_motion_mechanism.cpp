@@ -27,9 +27,7 @@ struct Built {
 
 Built build(const MotionMechanism& m)
 {
-    CardParams card;
-    card.width = 210;
-    card.depth = 148;
+    const CardParams card = testing::a4_card();
     Built b;
     b.scaffold = make_card(card).value;
     std::vector<FittedMechanism> rows;
@@ -174,9 +172,7 @@ TEST(MotionMechanism, AnOffFoldArmsGluedCreaseKeepsItsTabRoom)
 {
     // The wing glued to the support along the diagonal of its Spine × Run corner: 20°..70° from
     // the support's edges. Spine 40: Run from 40·tan 20° = 14.56 to 40·tan 70° = 109.9 mm.
-    CardParams card;
-    card.width = 210;
-    card.depth = 148;
+    const CardParams card = testing::a4_card();
     for (double side : {1.0, -1.0}) {
         MotionMechanism m = testing::off_fold_rotation(side); // spine 40, run 25
         m.p[3] = 10;                                          // arm under spine²/run
@@ -202,9 +198,7 @@ TEST(MotionMechanism, FeasibleAgreesWithInfeasibility)
 {
     // feasible() is infeasibility() without its words: over random steps from each kind's sample
     // (and the off-fold arm) both answers occur and the two always agree.
-    CardParams card;
-    card.width = 210;
-    card.depth = 148;
+    const CardParams card = testing::a4_card();
     std::mt19937_64 rng(7);
     std::normal_distribution<double> step(0.0, 1.0);
     int yes = 0, no = 0;
@@ -269,29 +263,40 @@ TEST(MotionMechanism, AMergedArmCarriesEachPartWithItsWingAsTheSimulatorDoes)
     }
 }
 
+// m built on the card PopUp makes for A4 lays out on A4 sheets.
+bool lays_out_on_a4(const MotionMechanism& m)
+{
+    Scaffold s = make_card(testing::card_for_a4_sheets()).value;
+    std::vector<FittedMechanism> rows;
+    EXPECT_TRUE(build_mechanism(s, central_fold(s), m, "M", rows).ok);
+    SheetOptions a4;
+    a4.nest.paper = paper_by_name("A4").value;
+    const auto sheets = layout_sheets(s, a4);
+    if (!sheets.ok)
+        ADD_FAILURE() << "does not lay out: " << sheets.diagnostics.front().message;
+    return sheets.ok;
+}
+
 TEST(MotionMechanism, ADiagonalsWingsMustFitTheCardsSheet)
 {
     // PopUp's card for A4 is 186 x 136.5 mm (open, it fills A4 inside the sheets' margins). A
     // diagonal with a 193 mm run at 40.2 deg (found on a long capture) unfolds its two wings into
     // one piece 378 mm long: diagonal_wings_fit says no, and the sheets indeed cannot lay it out
     // on A4. Feasible diagonals drawn at random that it passes all lay out on A4.
-    CardParams card;
-    card.width = 186;
-    card.depth = 136.5;
-    SheetOptions a4;
-    a4.nest.paper = paper_by_name("A4").value;
-    auto lays_out = [&](const MotionMechanism& m) {
-        Scaffold s = make_card(card).value;
-        std::vector<FittedMechanism> rows;
-        EXPECT_TRUE(build_mechanism(s, central_fold(s), m, "M", rows).ok);
-        return layout_sheets(s, a4).ok;
-    };
+    const CardParams card = testing::card_for_a4_sheets();
     MotionMechanism long_run;
     long_run.kind = MotionKind::diagonal;
     long_run.p = {27.45, 193.22, 40.19 * M_PI / 180, 40.72, 10, 12, 16, 12};
     EXPECT_EQ(infeasibility(long_run, card), "");
     EXPECT_FALSE(diagonal_wings_fit(long_run, card));
-    EXPECT_FALSE(lays_out(long_run));
+    {
+        Scaffold built = make_card(card).value;
+        std::vector<FittedMechanism> rows;
+        ASSERT_TRUE(build_mechanism(built, central_fold(built), long_run, "M", rows).ok);
+        SheetOptions a4;
+        a4.nest.paper = paper_by_name("A4").value;
+        EXPECT_FALSE(layout_sheets(built, a4).ok);
+    }
     EXPECT_TRUE(diagonal_wings_fit(sample_mechanism(MotionKind::rotation), card));
     std::mt19937_64 rng(3);
     std::uniform_real_distribution<double> offset(0, 120), run(20, 200), angle(10, 80),
@@ -310,7 +315,8 @@ TEST(MotionMechanism, ADiagonalsWingsMustFitTheCardsSheet)
             continue;
         }
         ++passed;
-        EXPECT_TRUE(lays_out(m)) << "run " << m.p[1] << " angle " << m.p[2] << " spine " << m.p[3];
+        EXPECT_TRUE(lays_out_on_a4(m))
+            << "run " << m.p[1] << " angle " << m.p[2] << " spine " << m.p[3];
     }
     EXPECT_GE(passed, 12);
     EXPECT_GT(refused, 0);
@@ -322,11 +328,7 @@ TEST(MotionMechanism, EveryFeasibleMechanismLaysOutOnTheCardsPaper)
     // kind's are bounded by its ranges. Mechanisms drawn at random around each kind's sample
     // (the off-fold arm on both sides too) that infeasibility and diagonal_wings_fit accept all
     // build and lay out on A4 with the card PopUp sizes to it.
-    CardParams card;
-    card.width = 186;
-    card.depth = 136.5;
-    SheetOptions a4;
-    a4.nest.paper = paper_by_name("A4").value;
+    const CardParams card = testing::card_for_a4_sheets();
     std::mt19937_64 rng(5);
     std::normal_distribution<double> step(0.0, 1.0);
     for (int k = 0; k <= motion_kind_count + 1; ++k) {
@@ -341,11 +343,7 @@ TEST(MotionMechanism, EveryFeasibleMechanismLaysOutOnTheCardsPaper)
                           (parameter_info(m.kind, i).role == ParameterRole::angle ? 0.3 : 30.0);
             if (!feasible(m, card) || !diagonal_wings_fit(m, card))
                 continue;
-            Scaffold s = make_card(card).value;
-            std::vector<FittedMechanism> rows;
-            ASSERT_TRUE(build_mechanism(s, central_fold(s), m, "M", rows).ok) << k;
-            const auto sheets = layout_sheets(s, a4);
-            ASSERT_TRUE(sheets.ok) << k << ": " << sheets.diagnostics.front().message;
+            ASSERT_TRUE(lays_out_on_a4(m)) << "kind " << k;
             ++laid_out;
         }
         EXPECT_GE(laid_out, k == int(MotionKind::diagonal) ? 8 : 20) << k;
@@ -357,9 +355,7 @@ TEST(MotionMechanism, AFloatingLayerMustUnfoldOntoTheCardsSheet)
     // The off-fold arm found by the test above: its 76.5 mm layer on supports 58.75 mm from the
     // fold unfolds into a strip 2 (76.5 + 58.75) + 2 tabs of 8 mm = 286.5 mm, over the A4 card's
     // open sheet (2 × 136.5 = 273 mm): refused, naming the hinge.
-    CardParams card;
-    card.width = 186;
-    card.depth = 136.5;
+    const CardParams card = testing::card_for_a4_sheets();
     MotionMechanism arm;
     arm.kind = MotionKind::rotation;
     arm.p = {64.95, 54.68, 75.50, 6.47, 58.75};
@@ -384,12 +380,7 @@ TEST(MotionMechanism, EveryPatchStaysWithinTheCardsReachAcrossTheFold)
     // The premise of the reach floor (reach_floor.hpp): at fold angle θ no paper is seen farther
     // than depth·sin(θ/2) from the fold. The simulator's poses of every patch of each sample
     // design, pages included, at 37 angles (independent of the closed forms) ...
-    const CardParams card = [] {
-        CardParams c;
-        c.width = 210;
-        c.depth = 148;
-        return c;
-    }();
+    const CardParams card = testing::a4_card();
     std::vector<double> angles;
     for (int k = 0; k <= 36; ++k)
         angles.push_back(M_PI * k / 36);

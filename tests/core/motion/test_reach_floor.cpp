@@ -4,17 +4,10 @@
 #include <cmath>
 
 #include "motion/reach_floor.hpp"
+#include "motion_fixtures.hpp"
 
 namespace popup::motion {
 namespace {
-
-CardParams a4()
-{
-    CardParams card;
-    card.width = 210;
-    card.depth = 148;
-    return card;
-}
 
 TEST(ReachFloor, APartFarFromTheFoldCannotBeFollowedWhileTheCardIsNearlyClosed)
 {
@@ -23,11 +16,11 @@ TEST(ReachFloor, APartFarFromTheFoldCannotBeFollowedWhileTheCardIsNearlyClosed)
     ChainTarget t;
     t.s = {0.0, 0.5, 1.0};
     t.target = {Vec2(-100, 50), Vec2(-100, 60), Vec2(-100, 70)};
-    EXPECT_NEAR(reach_floor_mm(t, a4()), 100 / std::sqrt(3.0), 1e-9);
+    EXPECT_NEAR(reach_floor_mm(t, testing::a4_card()), 100 / std::sqrt(3.0), 1e-9);
     // At 30° (s = 1/6) the card reaches 148·sin 15° = 38.305 mm: 61.695 mm short.
     t.s = {1.0 / 6};
     t.target = {Vec2(100, 0)};
-    EXPECT_NEAR(reach_floor_mm(t, a4()), 100 - 148 * std::sin(M_PI / 12), 1e-9);
+    EXPECT_NEAR(reach_floor_mm(t, testing::a4_card()), 100 - 148 * std::sin(M_PI / 12), 1e-9);
 }
 
 TEST(ReachFloor, APathTheCardAlwaysReachesHasNoFloor)
@@ -39,8 +32,8 @@ TEST(ReachFloor, APathTheCardAlwaysReachesHasNoFloor)
         t.s.push_back(s);
         t.target.push_back(Vec2(140 * std::sin(M_PI * s / 2), 400.0 * k));
     }
-    EXPECT_EQ(reach_floor_mm(t, a4()), 0.0);
-    EXPECT_EQ(reach_floor_mm(ChainTarget{}, a4()), 0.0);
+    EXPECT_EQ(reach_floor_mm(t, testing::a4_card()), 0.0);
+    EXPECT_EQ(reach_floor_mm(ChainTarget{}, testing::a4_card()), 0.0);
 }
 
 } // namespace
