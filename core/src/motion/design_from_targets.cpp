@@ -461,8 +461,10 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
             }
             // Only a mechanism that follows the chain closer than its printed part is worth room.
             if (free && state_cost(p, trial) < state_cost(p, state) &&
-                carried_error(trial.slots[i], p.chains[j]) < printed_error(p, j) - 1e-9)
+                carried_error(trial.slots[i], p.chains[j]) < printed_error(p, j) - 1e-9) {
                 state = trial;
+                reasons.erase(j); // moving again: print_pointless's reason no longer holds
+            }
         }
         for (int i = 0; i < int(state.slots.size()); ++i) {
             Slot& s = state.slots[i];
