@@ -3,10 +3,10 @@
 #include <string>
 #include <vector>
 
-#include "popup/fitting/fit_design.hpp"
 #include "popup/mechanisms/floating_layer.hpp"
 #include "popup/mechanisms/mechanism.hpp"
 #include "popup/model/card.hpp"
+#include "popup/model/designed_card.hpp"
 
 namespace popup::motion {
 

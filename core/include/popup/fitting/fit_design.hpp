@@ -8,6 +8,7 @@
 #include "popup/fitting/model_mesh.hpp"
 #include "popup/model/cancel_flag.hpp"
 #include "popup/model/card.hpp"
+#include "popup/model/designed_card.hpp"
 #include "popup/model/result.hpp"
 #include "popup/model/scaffold.hpp"
 #include "popup/sheets/sheet_layout.hpp"
@@ -51,34 +52,6 @@ struct FittedPrimitive {
     std::vector<Vec3> corners; ///< 8 for a rectangular prism, 6 for a triangular one
     std::string host;          ///< base patch pair it stands on
     int inliers = 0;
-};
-
-/// One mechanism of the result: what a FreeCAD feature of `type` needs to be made.
-struct FittedMechanism {
-    std::string type; ///< core generator kind: "box_fold", "step_fold", "v_fold", "tent_fold"
-    std::string name; ///< its name; offered pairs are "<name>.<part>"
-    std::string host; ///< "central fold" or "<other name>.<part>"
-    std::map<std::string, double> parameters; ///< params struct field -> value (mm, radians)
-    std::string primitive;                    ///< what it maps, e.g. "rectangular prism 2"
-    double coverage_error = 0.0;              ///< thesis eq. 5.1 for its primitive
-};
-
-/// A mechanism the pipeline left out or changed, and why.
-struct FitRepair {
-    std::string mechanism;
-    std::string action; ///< "dropped", "trimmed", "remapped", "replaced" (by the bulk box)
-    std::string reason;
-};
-
-/// A principal part's outline from the model (§5.1.3): what popupwb.profiles.set_profile stores.
-struct FittedProfile {
-    std::string mechanism; ///< B1, T1...
-    std::string part;      ///< TG, L, riser, slope_ground...
-    Loop2 outer;           ///< the profiled patch's outline in the part's profile frame (mm)
-    std::vector<Loop2> holes;
-    Vec2 reference = Vec2::Zero(); ///< the part's size as generated (extent along u, v; mm)
-    double area = 0.0;             ///< mm², of the profiled patch
-    double area_before = 0.0;      ///< mm², of the part as generated
 };
 
 /// One depth layer of a box fold's front or top (§5.1.3) and what became of it.

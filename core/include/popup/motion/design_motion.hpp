@@ -5,8 +5,11 @@
 #include <utility>
 #include <vector>
 
-#include "popup/fitting/fit_design.hpp"
 #include "popup/model/cancel_flag.hpp"
+#include "popup/model/card.hpp"
+#include "popup/model/designed_card.hpp"
+#include "popup/model/result.hpp"
+#include "popup/model/scaffold.hpp"
 #include "popup/motion/motion_targets.hpp"
 
 namespace popup {

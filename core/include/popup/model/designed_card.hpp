@@ -1,0 +1,41 @@
+#pragma once
+// What an automatic design hands the workbench, whichever pipeline made it (a model's fit or an
+// animation's motion): the mechanisms to build, the changes made on the way, the parts' outlines.
+// Below both pipelines, so motion does not include fitting's driver.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "popup/model/profile.hpp"
+
+namespace popup {
+
+/// One mechanism of the result: what a FreeCAD feature of `type` needs to be made.
+struct FittedMechanism {
+    std::string type; ///< core generator kind: "box_fold", "step_fold", "v_fold", "tent_fold"
+    std::string name; ///< its name; offered pairs are "<name>.<part>"
+    std::string host; ///< "central fold" or "<other name>.<part>"
+    std::map<std::string, double> parameters; ///< params struct field -> value (mm, radians)
+    std::string primitive;                    ///< what it maps, e.g. "rectangular prism 2"
+    double coverage_error = 0.0;              ///< thesis eq. 5.1 for its primitive
+};
+
+/// A mechanism the pipeline left out or changed, and why.
+struct FitRepair {
+    std::string mechanism;
+    std::string action; ///< "dropped", "trimmed", "remapped", "replaced" (by the bulk box)
+    std::string reason;
+};
+
+/// A principal part's outline from the model (§5.1.3): what popupwb.profiles.set_profile stores.
+struct FittedProfile {
+    std::string mechanism; ///< B1, T1...
+    std::string part;      ///< TG, L, riser, slope_ground...
+    Loop2 outer;           ///< the profiled patch's outline in the part's profile frame (mm)
+    std::vector<Loop2> holes;
+    Vec2 reference = Vec2::Zero(); ///< the part's size as generated (extent along u, v; mm)
+    double area = 0.0;             ///< mm², of the profiled patch
+    double area_before = 0.0;      ///< mm², of the part as generated
+};
+
+} // namespace popup
