@@ -16,7 +16,7 @@ DEBS := cmake make g++ pkg-config freecad \
 	libpolyclipping-dev libpng-dev libjpeg62-turbo-dev python3-pil python3-svgwrite python3-reportlab python3-matplotlib python3-pypdf librecad \
 	xvfb xauth clang-format black patch clang-14 libclang-rt-14-dev llvm-14
 
-.PHONY: all deps build test demo bench lint format install install-dev clean fuzz asan
+.PHONY: all deps build test demo bench lint format install install-dev clean fuzz asan layers
 
 all: build
 
@@ -62,6 +62,11 @@ fuzz: deps $(BUILD)/CMakeCache.txt
 # The core, the bindings and the C++ and Python suites under ASan + UBSan (docs/RELIABILITY.md).
 asan: deps
 	$(PYTHON) tools/run_asan.py --build $(ASAN_BUILD) --jobs $(JOBS)
+
+# The layers drawn from the code's includes and imports (tools/layers.py, docs/DESIGN.md "Layers"):
+# out/layers.png, and every arrow that runs back up or circle, if any (exit 1).
+layers:
+	$(PYTHON) tools/layers.py --png out/layers.png
 
 lint: deps
 	clang-format --dry-run --Werror $$(git ls-files '*.cpp' '*.hpp')

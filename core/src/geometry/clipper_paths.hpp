@@ -4,7 +4,7 @@
 // stay within its fast 30-bit range.
 #include <polyclipping/clipper.hpp>
 
-#include "popup/model/patch.hpp"
+#include "popup/geometry/vectors.hpp"
 
 namespace popup {
 

@@ -6,7 +6,7 @@
 #include <memory>
 #include <vector>
 
-#include "popup/model/patch.hpp"
+#include "popup/geometry/vectors.hpp"
 
 namespace popup {
 

@@ -4,7 +4,7 @@
 #include <optional>
 #include <vector>
 
-#include "popup/model/patch.hpp"
+#include "popup/geometry/vectors.hpp"
 
 namespace popup {
 

@@ -1,6 +1,6 @@
 #pragma once
 // Plain 2D polygon helpers shared by validation and the enclosure check (no CGAL, no OCCT).
-#include "popup/model/patch.hpp"
+#include "popup/geometry/vectors.hpp"
 
 namespace popup {
 

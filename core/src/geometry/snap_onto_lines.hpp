@@ -6,7 +6,7 @@
 #include <array>
 #include <vector>
 
-#include "popup/model/patch.hpp"
+#include "popup/geometry/vectors.hpp"
 
 namespace popup {
 

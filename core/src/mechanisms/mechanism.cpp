@@ -6,21 +6,6 @@
 
 namespace popup {
 
-void range_error(Diagnostics& errors, const std::string& mechanism, const std::string& parameter,
-                 double value, const std::string& unit, const std::string& range)
-{
-    std::ostringstream m;
-    m << mechanism << ": " << parameter << " = " << value << (unit.empty() ? "" : " ") << unit
-      << ", must be " << range;
-    errors.push_back(
-        Diagnostic::error(DiagnosticCode::bad_parameter, m.str(), about_parameter(parameter)));
-}
-
-double shortest_fold(const Scaffold& scaffold)
-{
-    return 1e-5 * std::max(scaffold.size(), 1.0);
-}
-
 void check_part_sizes(const Scaffold& scaffold, const std::string& mechanism,
                       std::initializer_list<std::pair<const char*, double>> lengths,
                       Diagnostics& errors)

@@ -7,7 +7,6 @@
 #include "../geometry/clipper_paths.hpp"
 #include "../geometry/segment_in_region.hpp"
 #include "../geometry/snap_onto_lines.hpp"
-#include "popup/mechanisms/mechanism.hpp"
 
 namespace popup {
 

@@ -2,8 +2,6 @@
 
 #include <cmath>
 
-#include "popup/mechanisms/mechanism.hpp"
-
 namespace popup {
 
 Result<Scaffold> make_card(const CardParams& p)

@@ -1,6 +1,8 @@
 #include "popup/model/diagnostic_code.hpp"
 #include "popup/model/result.hpp"
 
+#include <sstream>
+
 namespace popup {
 
 const char* to_string(DiagnosticCode code)
@@ -52,6 +54,16 @@ bool has_errors(const Diagnostics& diagnostics)
         if (d.severity == Severity::error)
             return true;
     return false;
+}
+
+void range_error(Diagnostics& errors, const std::string& mechanism, const std::string& parameter,
+                 double value, const std::string& unit, const std::string& range)
+{
+    std::ostringstream m;
+    m << mechanism << ": " << parameter << " = " << value << (unit.empty() ? "" : " ") << unit
+      << ", must be " << range;
+    errors.push_back(
+        Diagnostic::error(DiagnosticCode::bad_parameter, m.str(), about_parameter(parameter)));
 }
 
 } // namespace popup

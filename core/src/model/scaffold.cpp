@@ -54,6 +54,11 @@ double Scaffold::size() const
     return box.isEmpty() ? 0.0 : box.diagonal().norm();
 }
 
+double shortest_fold(const Scaffold& scaffold)
+{
+    return 1e-5 * std::max(scaffold.size(), 1.0);
+}
+
 namespace {
 
 constexpr double kLargestCoordinate = 1e6; // mm

@@ -1,12 +1,9 @@
 #pragma once
-#include <Eigen/Core>
 #include <Eigen/Geometry>
 
-namespace popup {
+#include "popup/geometry/vectors.hpp"
 
-using Vec2 = Eigen::Vector2d;
-using Vec3 = Eigen::Vector3d;
-using Mat3 = Eigen::Matrix3d;
+namespace popup {
 
 /// Rigid motion x -> rotation * x + translation, mapping design-state world coordinates (mm) to
 /// world coordinates at some fold angle.

@@ -46,19 +46,11 @@ void check_flat_host(const std::string& mechanism, const BasePatchPair& host,
 void check_run(Diagnostics& errors, const std::string& mechanism, const std::string& parameter,
                double value, double limit, const std::string& side, bool inclusive = false);
 
-/// The shortest fold a mechanism may make on `scaffold` (mm): 1e-5 of the model's size, ten times
-/// the simulator's tolerance. Shorter, a fold's direction is lost in round-off.
-double shortest_fold(const Scaffold& scaffold);
-
 /// Adds a named error for each positive length (parameter name, mm) below shortest_fold: a part
 /// that small passes its own range but vanishes (nested mechanisms whose fitted defaults shrink
 /// with each host).
 void check_part_sizes(const Scaffold& scaffold, const std::string& mechanism,
                       std::initializer_list<std::pair<const char*, double>> lengths,
                       Diagnostics& errors);
-
-/// Adds the named error "NAME: PARAM = VALUE mm, must be RANGE".
-void range_error(Diagnostics& errors, const std::string& mechanism, const std::string& parameter,
-                 double value, const std::string& unit, const std::string& range);
 
 } // namespace popup

@@ -12,9 +12,6 @@ const char* to_string(PatchRole role);
 /// Parses a role name; returns false for an unknown name.
 bool parse_patch_role(const std::string& name, PatchRole& role);
 
-using Loop3 = std::vector<Vec3>;
-using Loop2 = std::vector<Vec2>;
-
 /// A planar polygon of paper. Loops are stored in design-state world coordinates (mm); the
 /// local 2D frame (origin, u, v, normal = u x v) is derived from them.
 struct Patch {

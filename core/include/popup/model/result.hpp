@@ -63,6 +63,10 @@ using Diagnostics = std::vector<Diagnostic>;
 /// True when any diagnostic has severity error.
 bool has_errors(const Diagnostics& diagnostics);
 
+/// Adds the named error "NAME: PARAM = VALUE mm, must be RANGE".
+void range_error(Diagnostics& errors, const std::string& mechanism, const std::string& parameter,
+                 double value, const std::string& unit, const std::string& range);
+
 /// A value plus the diagnostics gathered while computing it. `ok` is false when the value must
 /// not be trusted (the diagnostics then say why).
 template <class T> struct Result {

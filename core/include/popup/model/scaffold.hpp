@@ -66,6 +66,10 @@ struct Scaffold {
     double size() const;
 };
 
+/// The shortest fold a mechanism may make on `scaffold` (mm): 1e-5 of the model's size, ten times
+/// the simulator's tolerance. Shorter, a fold's direction is lost in round-off.
+double shortest_fold(const Scaffold& scaffold);
+
 /// Checks the scaffold's own consistency (ids, planarity, finite numbers, hinges lying on both
 /// patches, base patches present) and derives every patch frame. Errors name the item.
 Result<Scaffold> validate_scaffold(Scaffold scaffold);
