@@ -8,7 +8,7 @@
 
 #include "binding_support.hpp"
 #include "popup/io/sheet_json.hpp"
-#include "popup/sheets/sheet_layout.hpp"
+#include "popup/sheets/sheet_set.hpp"
 
 namespace py = pybind11;
 using namespace popup;

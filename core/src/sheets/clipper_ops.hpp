@@ -4,7 +4,7 @@
 
 #include <polyclipping/clipper.hpp>
 
-#include "popup/sheets/sheet_layout.hpp"
+#include "popup/sheets/sheet_set.hpp"
 
 namespace popup::sheets {
 

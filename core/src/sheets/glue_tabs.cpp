@@ -1,6 +1,6 @@
 #include "glue_tabs.hpp"
 
-#include "popup/sheets/sheet_layout.hpp"
+#include "popup/sheets/sheet_set.hpp"
 
 #include <algorithm>
 #include <array>

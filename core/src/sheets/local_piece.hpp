@@ -4,7 +4,7 @@
 #include <map>
 #include <vector>
 
-#include "popup/sheets/sheet_layout.hpp"
+#include "popup/sheets/sheet_set.hpp"
 #include "popup/sheets/unfold_piece.hpp"
 
 namespace popup::sheets {

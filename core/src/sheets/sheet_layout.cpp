@@ -12,6 +12,7 @@
 #include "glue_tabs.hpp"
 #include "local_piece.hpp"
 #include "piece_outline.hpp"
+#include "place_on_sheet.hpp"
 #include "popup/sheets/pieces.hpp"
 #include "popup/sheets/verify_sheets.hpp"
 #include "popup/simulation/simulate_fold.hpp"
@@ -40,43 +41,6 @@ void check_range(Diagnostics& errors, const std::string& name, double value, dou
                                            name + " = " + number(value) + ", must be " + range,
                                            about_parameter(name)));
 }
-
-// Quarter turns are exact, so placed creases stay exactly on the placed patch edges.
-Mat3 quarter_turn(double degrees)
-{
-    const double c = std::round(std::cos(degrees * M_PI / 180.0) * 1e12) / 1e12;
-    const double s = std::round(std::sin(degrees * M_PI / 180.0) * 1e12) / 1e12;
-    Mat3 r;
-    r << c, -s, 0, s, c, 0, 0, 0, 1;
-    return r;
-}
-
-struct SheetPlacement {
-    Mat3 rotation;
-    Vec2 translation;
-    Vec2 operator()(const Vec2& p) const
-    {
-        return rotation.topLeftCorner<2, 2>() * p + translation;
-    }
-    Loop2 operator()(const Loop2& loop) const
-    {
-        Loop2 out;
-        for (const Vec2& p : loop)
-            out.push_back((*this)(p));
-        return out;
-    }
-    std::vector<Region> operator()(const std::vector<Region>& regions) const
-    {
-        std::vector<Region> out;
-        for (const Region& r : regions) {
-            Region placed{(*this)(r.outer), {}};
-            for (const Loop2& h : r.holes)
-                placed.holes.push_back((*this)(h));
-            out.push_back(placed);
-        }
-        return out;
-    }
-};
 
 double loop_length(const Loop2& loop)
 {
@@ -137,6 +101,137 @@ std::string assembly_text(const SheetSet& set, const SheetPiece& piece,
     return t.str();
 }
 
+// Pieces in assembly order, each laid flat in its own frame; `position` maps a patch id to its
+// piece. False, with `r` failed, when a printed side names no piece or a piece cannot be laid
+// flat.
+bool lay_pieces_flat(const Scaffold& s, const SheetOptions& options, Result<SheetSet>& r,
+                     std::vector<LocalPiece>& pieces, std::map<int, int>& position)
+{
+    const SheetSet& set = r.value;
+    auto& notes = r.value.diagnostics;
+    const std::vector<std::vector<int>> groups = cut_pieces(s);
+    const std::vector<int> order = assembly_order(s, groups, notes);
+    for (const auto& [id, side] : options.printed_sides) {
+        const bool known = id.size() > 1 && id[0] == 'P' &&
+                           id.find_first_not_of("0123456789", 1) == std::string::npos &&
+                           std::stoul(id.substr(1)) >= 1 &&
+                           std::stoul(id.substr(1)) <= order.size();
+        if (!known) {
+            r.fail(DiagnosticCode::bad_option,
+                   "printed side of " + id + ": there is no such piece; the pieces are P1 to P" +
+                       std::to_string(order.size()),
+                   about_parameter("printed_sides"));
+            return false;
+        }
+    }
+    for (int g : order) {
+        stop_if_cancelled(options.cancel, "the sheet layout");
+        const auto side = options.printed_sides.find("P" + std::to_string(pieces.size() + 1));
+        const bool back = side != options.printed_sides.end() && side->second == PrintedSide::back;
+        Result<LocalPiece> flat = lay_flat(s, groups[g], 1e-6 * std::max(set.card_size, 1.0), back);
+        if (!flat.ok) {
+            r.fail_with(flat.diagnostics);
+            return false;
+        }
+        report_self_overlap(s, flat.value, notes);
+        for (int id : groups[g])
+            position[id] = int(pieces.size());
+        pieces.push_back(std::move(flat.value));
+    }
+    return true;
+}
+
+// One sweep of the design serves the fold directions, the round trip and the stack height.
+Result<FoldSweep> sweep_design(const Scaffold& s, const SheetOptions& options, Diagnostics& notes)
+{
+    const std::vector<double> angles = sweep_angles(s, options.round_trip_angles);
+    SimulationOptions simulation;
+    simulation.cancel = options.cancel;
+    Result<FoldSweep> designed = simulate_fold(s, angles, simulation);
+    // A card whose fold never completes cannot be assembled into one that closes: an error here,
+    // where the simulator alone only warns.
+    for (const Diagnostic& d : designed.diagnostics)
+        if (d.code == DiagnosticCode::motion_locked)
+            notes.push_back(Diagnostic::error(d.code, "the fold never completes: " + d.message,
+                                              {d.patches, d.parameter, d.angle_deg}));
+    return designed;
+}
+
+// Patches of two pieces glued face to face get no tab.
+void report_glue_without_tab(const Scaffold& s, const std::map<int, int>& position,
+                             Diagnostics& notes)
+{
+    for (const Glue& g : s.glue)
+        if (position.at(g.patch_a) != position.at(g.patch_b))
+            notes.push_back(Diagnostic::warning(
+                DiagnosticCode::glue_without_tab,
+                "patches " + std::to_string(g.patch_a) + " and " + std::to_string(g.patch_b) +
+                    " are glued face to face: no tab is drawn for them",
+                about_patches({g.patch_a, g.patch_b})));
+}
+
+// Each piece's slots, cut outline (checked for the kerf and die cutting) and labels; its largest
+// cut region is the shape the nesting places.
+std::vector<NestShape> cut_and_label(const Scaffold& s, std::vector<LocalPiece>& pieces,
+                                     const SheetOptions& options, Diagnostics& notes)
+{
+    std::vector<NestShape> shapes;
+    for (size_t k = 0; k < pieces.size(); ++k) {
+        LocalPiece& piece = pieces[k];
+        const std::string id = "P" + std::to_string(k + 1);
+        add_slit_slots(s, piece);
+        cut_outline(piece, options.kerf);
+        if (piece.cut_nominal.size() > 1)
+            notes.push_back(Diagnostic::error(
+                DiagnosticCode::piece_falls_apart,
+                id + " falls apart into " + std::to_string(piece.cut_nominal.size()) +
+                    " parts when cut: a slit or hole crosses it from edge to edge",
+                about_patches(piece.flat.patches)));
+        check_openings_survive_kerf(piece, id, options.kerf, notes);
+        check_die_cutting(piece, id, options, notes);
+        add_labels(piece, id, options.fold_hints);
+        const Region* largest = &piece.cut.front();
+        for (const Region& region : piece.cut)
+            if (std::abs(loop_area(region.outer)) > std::abs(loop_area(largest->outer)))
+                largest = &region;
+        shapes.push_back({"piece " + id, largest->outer, largest->holes});
+    }
+    return shapes;
+}
+
+// Every piece after the card is glued on in turn: its joins with the pieces before it.
+void add_assembly_steps(SheetSet& set)
+{
+    for (size_t k = 1; k < set.pieces.size(); ++k) {
+        AssemblyStep step{int(k), {}, {}};
+        for (const GlueTab& t : set.pieces[k].tabs)
+            if (size_t(t.target_piece) < k)
+                step.joins.push_back({t.code, int(k), t.target_piece, t.front});
+        for (const GlueArea& g : set.pieces[k].glue)
+            if (size_t(g.tab_piece) < k)
+                step.joins.push_back({g.code, g.tab_piece, int(k), g.front});
+        step.text = assembly_text(set, set.pieces[k], step.joins);
+        set.assembly.push_back(std::move(step));
+    }
+}
+
+// The round trip reads the sheets as a cutting file holds them, the way `popup verify` does.
+void check_round_trip(const Scaffold& s, const SheetOptions& options, SheetSet& set)
+{
+    auto& notes = set.diagnostics;
+    VerifyOptions check;
+    check.printed_sides = options.printed_sides;
+    check.angles = options.round_trip_angles;
+    check.cancel = options.cancel;
+    Result<RoundTrip> trip = verify_sheets(s, draw_sheets(set), check);
+    set.round_trip = trip.value;
+    set.round_trip.ok = trip.ok && trip.value.ok;
+    for (const Diagnostic& d : trip.diagnostics)
+        if (d.severity == Severity::error)
+            notes.push_back(Diagnostic::error(d.code, "round trip: " + d.message,
+                                              {d.patches, d.parameter, d.angle_deg}));
+}
+
 } // namespace
 
 const char* to_string(PrintedSide side)
@@ -193,81 +288,17 @@ Result<SheetSet> layout_sheets(const Scaffold& input, const SheetOptions& option
     set.paper_thickness = s.paper_thickness;
     auto& notes = set.diagnostics;
 
-    // Pieces in assembly order, each laid flat in its own frame.
-    const std::vector<std::vector<int>> groups = cut_pieces(s);
-    const std::vector<int> order = assembly_order(s, groups, notes);
     std::vector<LocalPiece> pieces;
     std::map<int, int> position;
-    for (const auto& [id, side] : options.printed_sides) {
-        const bool known = id.size() > 1 && id[0] == 'P' &&
-                           id.find_first_not_of("0123456789", 1) == std::string::npos &&
-                           std::stoul(id.substr(1)) >= 1 &&
-                           std::stoul(id.substr(1)) <= order.size();
-        if (!known) {
-            r.fail(DiagnosticCode::bad_option,
-                   "printed side of " + id + ": there is no such piece; the pieces are P1 to P" +
-                       std::to_string(order.size()),
-                   about_parameter("printed_sides"));
-            return r;
-        }
-    }
-    for (int g : order) {
-        stop_if_cancelled(options.cancel, "the sheet layout");
-        const auto side = options.printed_sides.find("P" + std::to_string(pieces.size() + 1));
-        const bool back = side != options.printed_sides.end() && side->second == PrintedSide::back;
-        Result<LocalPiece> flat = lay_flat(s, groups[g], 1e-6 * std::max(set.card_size, 1.0), back);
-        if (!flat.ok) {
-            r.fail_with(flat.diagnostics);
-            return r;
-        }
-        report_self_overlap(s, flat.value, notes);
-        for (int id : groups[g])
-            position[id] = int(pieces.size());
-        pieces.push_back(std::move(flat.value));
-    }
-    // One sweep of the design serves the fold directions, the round trip and the stack height.
-    const std::vector<double> angles = sweep_angles(s, options.round_trip_angles);
-    SimulationOptions simulation;
-    simulation.cancel = options.cancel;
-    const Result<FoldSweep> designed = simulate_fold(s, angles, simulation);
-    // A card whose fold never completes cannot be assembled into one that closes: an error here,
-    // where the simulator alone only warns.
-    for (const Diagnostic& d : designed.diagnostics)
-        if (d.code == DiagnosticCode::motion_locked)
-            notes.push_back(Diagnostic::error(d.code, "the fold never completes: " + d.message,
-                                              {d.patches, d.parameter, d.angle_deg}));
+    if (!lay_pieces_flat(s, options, r, pieces, position))
+        return r;
+    const Result<FoldSweep> designed = sweep_design(s, options, notes);
     const BendSamples bends = sample_bends(s, designed.value.states);
     for (LocalPiece& piece : pieces)
         classify_folds(s, piece, bends, notes);
     add_glue_tabs(s, pieces, position, bends, options, notes);
-    for (const Glue& g : s.glue)
-        if (position.at(g.patch_a) != position.at(g.patch_b))
-            notes.push_back(Diagnostic::warning(
-                DiagnosticCode::glue_without_tab,
-                "patches " + std::to_string(g.patch_a) + " and " + std::to_string(g.patch_b) +
-                    " are glued face to face: no tab is drawn for them",
-                about_patches({g.patch_a, g.patch_b})));
-    std::vector<NestShape> shapes;
-    for (size_t k = 0; k < pieces.size(); ++k) {
-        LocalPiece& piece = pieces[k];
-        const std::string id = "P" + std::to_string(k + 1);
-        add_slit_slots(s, piece);
-        cut_outline(piece, options.kerf);
-        if (piece.cut_nominal.size() > 1)
-            notes.push_back(Diagnostic::error(
-                DiagnosticCode::piece_falls_apart,
-                id + " falls apart into " + std::to_string(piece.cut_nominal.size()) +
-                    " parts when cut: a slit or hole crosses it from edge to edge",
-                about_patches(piece.flat.patches)));
-        check_openings_survive_kerf(piece, id, options.kerf, notes);
-        check_die_cutting(piece, id, options, notes);
-        add_labels(piece, id, options.fold_hints);
-        const Region* largest = &piece.cut.front();
-        for (const Region& region : piece.cut)
-            if (std::abs(loop_area(region.outer)) > std::abs(loop_area(largest->outer)))
-                largest = &region;
-        shapes.push_back({"piece " + id, largest->outer, largest->holes});
-    }
+    report_glue_without_tab(s, position, notes);
+    const std::vector<NestShape> shapes = cut_and_label(s, pieces, options, notes);
 
     stop_if_cancelled(options.cancel, "the sheet layout");
     Result<Nesting> nesting = nest_shapes(shapes, options.nest);
@@ -280,57 +311,8 @@ Result<SheetSet> layout_sheets(const Scaffold& input, const SheetOptions& option
     set.shelf_sheet_count = shelves.ok ? shelves.value.sheet_count : 0;
     std::vector<Pose> to_sheet(s.patches.size());
     for (size_t k = 0; k < pieces.size(); ++k) {
-        const LocalPiece& local = pieces[k];
-        const Placement& at = nesting.value.placements[k];
-        const SheetPlacement place{quarter_turn(at.rotation_deg), at.translation};
-        SheetPiece piece;
-        piece.id = "P" + std::to_string(k + 1);
-        piece.printed_side = local.printed_back ? PrintedSide::back : PrintedSide::front;
-        piece.sheet = at.sheet;
-        piece.rotation = at.rotation_deg;
-        const Patch& root = *s.find_patch(local.flat.patches.front());
-        // Design state → the root's plane → its 2D frame (z up = printed side) → the sheet.
-        Pose frame;
-        frame.rotation.row(0) = root.u.transpose();
-        const double turned = local.printed_back ? -1.0 : 1.0; // turned over about u
-        frame.rotation.row(1) = turned * root.v.transpose();
-        frame.rotation.row(2) = turned * root.normal.transpose();
-        frame.translation = -(frame.rotation * root.origin);
-        const Pose onto{place.rotation, Vec3(at.translation.x(), at.translation.y(), 0.0)};
-        for (size_t i = 0; i < local.flat.patches.size(); ++i) {
-            const int id = local.flat.patches[i];
-            const Patch& patch = *s.find_patch(id);
-            FlatPatch fp{id, patch.name, place(local.flat.outlines[i]), {}};
-            for (const Loop2& h : local.flat.holes[i])
-                fp.holes.push_back(place(h));
-            const Pose& pose = to_sheet[s.patch_index(id)] =
-                local.flat.unfold[i].then(frame).then(onto);
-            // (u, v) -> origin + u e_u + v e_v -> the sheet plane (z = 0 there).
-            fp.to_sheet.col(0) = (pose.rotation * patch.u).head<2>();
-            fp.to_sheet.col(1) = (pose.rotation * patch.v).head<2>();
-            fp.to_sheet.col(2) = pose.apply(patch.origin).head<2>();
-            piece.patches.push_back(std::move(fp));
-        }
-        piece.cut = place(local.cut);
-        piece.cut_nominal = place(local.cut_nominal);
-        for (FoldLine f : local.folds) {
-            f.from = place(f.from);
-            f.to = place(f.to);
-            piece.folds.push_back(f);
-        }
-        for (GlueTab t : local.tabs) {
-            t.polygon = place(t.polygon);
-            piece.tabs.push_back(t);
-        }
-        for (GlueArea g : local.glue) {
-            g.polygon = place(g.polygon);
-            piece.glue.push_back(g);
-        }
-        for (SheetLabel l : local.labels) {
-            l.position = place(l.position);
-            l.angle = upright(l.angle + at.rotation_deg);
-            piece.labels.push_back(l);
-        }
+        SheetPiece piece = place_on_sheet(s, pieces[k], nesting.value.placements[k],
+                                          "P" + std::to_string(k + 1), to_sheet);
         for (const Region& region : piece.cut) {
             set.cut_length += loop_length(region.outer);
             for (const Loop2& h : region.holes)
@@ -338,29 +320,8 @@ Result<SheetSet> layout_sheets(const Scaffold& input, const SheetOptions& option
         }
         set.pieces.push_back(std::move(piece));
     }
-    for (size_t k = 1; k < set.pieces.size(); ++k) {
-        AssemblyStep step{int(k), {}, {}};
-        for (const GlueTab& t : set.pieces[k].tabs)
-            if (size_t(t.target_piece) < k)
-                step.joins.push_back({t.code, int(k), t.target_piece, t.front});
-        for (const GlueArea& g : set.pieces[k].glue)
-            if (size_t(g.tab_piece) < k)
-                step.joins.push_back({g.code, g.tab_piece, int(k), g.front});
-        step.text = assembly_text(set, set.pieces[k], step.joins);
-        set.assembly.push_back(std::move(step));
-    }
-    // The round trip reads the sheets as a cutting file holds them, the way `popup verify` does.
-    VerifyOptions check;
-    check.printed_sides = options.printed_sides;
-    check.angles = options.round_trip_angles;
-    check.cancel = options.cancel;
-    Result<RoundTrip> trip = verify_sheets(s, draw_sheets(set), check);
-    set.round_trip = trip.value;
-    set.round_trip.ok = trip.ok && trip.value.ok;
-    for (const Diagnostic& d : trip.diagnostics)
-        if (d.severity == Severity::error)
-            notes.push_back(Diagnostic::error(d.code, "round trip: " + d.message,
-                                              {d.patches, d.parameter, d.angle_deg}));
+    add_assembly_steps(set);
+    check_round_trip(s, options, set);
     const auto& states = designed.value.states;
     if (designed.ok && !states.empty() && states.back().angle == 0.0)
         set.stack_height = stack_height(s, set, to_sheet, states.back().poses);

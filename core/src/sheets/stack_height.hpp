@@ -1,7 +1,7 @@
 #pragma once
 #include <vector>
 
-#include "popup/sheets/sheet_layout.hpp"
+#include "popup/sheets/sheet_set.hpp"
 
 namespace popup::sheets {
 

@@ -2,7 +2,7 @@
 #include <string>
 #include <vector>
 
-#include "popup/sheets/sheet_layout.hpp"
+#include "popup/sheets/sheet_set.hpp"
 
 namespace popup {
 

@@ -1,20 +1,12 @@
 #pragma once
-#include <map>
-#include <string>
 #include <vector>
 
-#include "popup/model/cancel_flag.hpp"
 #include "popup/model/result.hpp"
 #include "popup/model/scaffold.hpp"
 #include "popup/sheets/sheet_drawing.hpp"
+#include "popup/sheets/verify_options.hpp"
 
 namespace popup {
-
-struct VerifyOptions {
-    std::map<std::string, PrintedSide> printed_sides; ///< as the sheets were written with
-    int angles = 13; ///< fold angles sampled from the design angle to closed, ≥ 2
-    const CancelFlag* cancel = nullptr; ///< set from another thread: verify throws Cancelled
-};
 
 /// Proves cutting files against their design using only what the files hold. The CUT loops,
 /// moved in by half the kerf, give each piece; its piece label (P1, …) names it. The fold lines

@@ -207,168 +207,190 @@ int DrawnPiece::face_at(const Vec2& q) const
     return -1;
 }
 
+namespace {
+
+// A drawing that cannot be read at all: no CUT loop, a bad kerf, a loop or line that is
+// degenerate, crosses itself or lies beyond ±1e6 mm.
+void check_readable(const SheetDrawing& d, Result<std::vector<DrawnPiece>>& r)
+{
+    const std::string file = d.name.empty() ? "the drawing" : d.name;
+    if (d.cut.empty())
+        r.fail(DiagnosticCode::drawing_unusable, file + ": no loop on the CUT layer");
+    if (!std::isfinite(d.kerf) || d.kerf < 0.0 || d.kerf > 2.0)
+        r.fail(DiagnosticCode::drawing_unusable,
+               file + ": kerf = " + std::to_string(d.kerf) + ", must be 0 to 2 mm",
+               about_parameter("kerf"));
+    for (const Loop2& l : d.cut)
+        if (l.size() < 3 || !finite_loop(l))
+            r.fail(DiagnosticCode::drawing_unusable,
+                   file + ": a CUT loop has " + std::to_string(l.size()) +
+                       (finite_loop(l) ? " points, needs three or more"
+                                       : " points and a coordinate that is not finite or "
+                                         "lies beyond ±1e6 mm"));
+        else if (const auto at = first_loop_crossing({l}))
+            r.fail(DiagnosticCode::drawing_unusable, file + ": a CUT loop crosses itself at " +
+                                                         where(*at) +
+                                                         ": the paper it encloses is not defined");
+    for (const Loop2& l : d.glue)
+        if (l.size() < 3 || !finite_loop(l))
+            r.fail(DiagnosticCode::drawing_unusable,
+                   file + ": a GLUE area needs three or more points within ±1e6 mm");
+    for (const DrawnFold& f : d.folds)
+        if (!finite_loop({f.from, f.to}) || (f.to - f.from).norm() < 1e-6)
+            r.fail(DiagnosticCode::drawing_unusable,
+                   file + ": a fold line at " + where(f.from) +
+                       " has no length, or a coordinate that is not finite or lies beyond "
+                       "±1e6 mm");
+    for (const DrawnText& t : d.labels)
+        if (!finite_loop({t.position}))
+            r.fail(DiagnosticCode::drawing_unusable,
+                   file + ": label '" + t.text +
+                       "' has a position that is not finite or lies beyond ±1e6 mm");
+}
+
+// The glue areas' codes among the texts on the piece; the texts no area takes stay the piece's.
+void assign_glue_codes(DrawnPiece& piece, const std::vector<const DrawnText*>& texts)
+{
+    // A glue area's code is printed inside it; areas on the paper's two faces may
+    // overlap, and a code inside several is the smallest one's (a larger area's code
+    // is printed clear of the smaller areas on it). Each area takes the nearest of its
+    // codes to its middle; then, of the texts no area took, the nearest inside it.
+    std::vector<int> smallest(texts.size(), -1);
+    for (size_t i = 0; i < texts.size(); ++i)
+        for (size_t k = 0; k < piece.glue.size(); ++k)
+            if (point_in_polygon(piece.glue[k].polygon, texts[i]->position) &&
+                (smallest[i] < 0 ||
+                 std::abs(loop_area(piece.glue[k].polygon)) <
+                     std::abs(loop_area(piece.glue[size_t(smallest[i])].polygon))))
+                smallest[i] = int(k);
+    std::vector<bool> taken(texts.size(), false);
+    std::vector<int> code_of(piece.glue.size(), -1);
+    for (size_t k = 0; k < piece.glue.size(); ++k)
+        for (size_t i = 0; i < texts.size(); ++i)
+            if (smallest[i] == int(k) &&
+                (code_of[k] < 0 ||
+                 (texts[i]->position - mean(piece.glue[k].polygon)).norm() <
+                     (texts[size_t(code_of[k])]->position - mean(piece.glue[k].polygon)).norm()))
+                code_of[k] = int(i);
+    for (int i : code_of)
+        if (i >= 0)
+            taken[size_t(i)] = true;
+    for (size_t k = 0; k < piece.glue.size(); ++k) {
+        DrawnGlue& g = piece.glue[k];
+        int nearest = code_of[k];
+        for (size_t i = 0; i < texts.size() && code_of[k] < 0; ++i)
+            if (!taken[i] && point_in_polygon(g.polygon, texts[i]->position) &&
+                (nearest < 0 || (texts[i]->position - mean(g.polygon)).norm() <
+                                    (texts[size_t(nearest)]->position - mean(g.polygon)).norm()))
+                nearest = int(i);
+        if (nearest < 0)
+            continue;
+        taken[size_t(nearest)] = true;
+        const std::string& text = texts[size_t(nearest)]->text;
+        const std::string back = " (back)";
+        g.back = text.size() > back.size() &&
+                 text.compare(text.size() - back.size(), back.size(), back) == 0;
+        g.code = g.back ? text.substr(0, text.size() - back.size()) : text;
+    }
+    for (size_t i = 0; i < texts.size(); ++i)
+        if (!taken[i])
+            piece.texts.push_back(*texts[i]);
+}
+
+// The pieces of one drawing: each cut region with its one piece label, the folds, glue areas
+// and texts inside it (each entity to the innermost region around it), split into faces.
+void read_pieces(const SheetDrawing& d, std::map<std::string, std::string>& seen,
+                 Diagnostics& findings, std::vector<DrawnPiece>& pieces)
+{
+    const std::string file = d.name.empty() ? "the drawing" : d.name;
+    std::vector<Region> regions = nominal_regions(d.cut, d.kerf);
+    // Each entity belongs to the innermost piece around it: a small piece may be nested in
+    // a large one's hole, and a slit's slot may sit on a fold.
+    std::vector<double> areas;
+    for (const Region& r : regions)
+        areas.push_back(std::abs(loop_area(r.outer)));
+    auto owner = [&](const Vec2& q) {
+        int best = -1;
+        for (size_t i = 0; i < regions.size(); ++i)
+            if (point_in_polygon(regions[i].outer, q) && (best < 0 || areas[i] < areas[best]))
+                best = int(i);
+        return best;
+    };
+    for (size_t index = 0; index < regions.size(); ++index) {
+        Region& region = regions[index];
+        std::vector<std::string> ids;
+        for (const DrawnText& t : d.labels)
+            if (std::regex_match(t.text, piece_label) && owner(t.position) == int(index))
+                ids.push_back(t.text);
+        const Vec2 at = interior_point(region);
+        const int self = int(index);
+        const bool bare = std::none_of(d.folds.begin(), d.folds.end(),
+                                       [&](const DrawnFold& f) {
+                                           return owner(0.5 * (f.from + f.to)) == self;
+                                       }) &&
+                          std::none_of(d.labels.begin(), d.labels.end(), [&](const DrawnText& t) {
+                              return owner(t.position) == self;
+                          });
+        if (ids.empty() && bare) { // a scrap that carries nothing a maker needs
+            std::ostringstream m;
+            m.precision(3);
+            m << file << ": a scrap of " << areas[index] << " mm² around " << where(at)
+              << " carries no label, fold or glue area: left out";
+            findings.push_back(Diagnostic::warning(DiagnosticCode::unlabelled_piece, m.str()));
+            continue;
+        }
+        if (ids.size() != 1) {
+            findings.push_back(Diagnostic::error(
+                DiagnosticCode::unlabelled_piece,
+                file + ": the cut piece around " + where(at) + " carries " +
+                    (ids.empty() ? std::string("no piece label (P1, P2, …)")
+                                 : std::to_string(ids.size()) + " piece labels")));
+            continue;
+        }
+        if (seen.count(ids[0])) {
+            findings.push_back(Diagnostic::error(DiagnosticCode::unlabelled_piece,
+                                                 file + ": piece label " + ids[0] +
+                                                     " is on two cut pieces (" + seen[ids[0]] +
+                                                     " and " + where(at) + ")"));
+            continue;
+        }
+        seen[ids[0]] = file + " " + where(at);
+        DrawnPiece piece;
+        piece.id = ids[0];
+        piece.drawing = file;
+        piece.outline = region;
+        for (const DrawnFold& f : d.folds)
+            if (owner(0.5 * (f.from + f.to)) == self)
+                piece.folds.push_back(f);
+        for (const Loop2& g : d.glue)
+            if (owner(interior_point({g, {}})) == self)
+                piece.glue.push_back({g, "", false});
+        std::vector<const DrawnText*> texts;
+        for (const DrawnText& t : d.labels)
+            if (t.text != piece.id && owner(t.position) == self)
+                texts.push_back(&t);
+        assign_glue_codes(piece, texts);
+        piece.faces = split_faces(piece.outline, piece.folds);
+        pieces.push_back(std::move(piece));
+    }
+}
+
+} // namespace
+
 Result<std::vector<DrawnPiece>> read_drawn_pieces(const std::vector<SheetDrawing>& drawings,
                                                   Diagnostics& findings)
 {
     Result<std::vector<DrawnPiece>> r;
     if (drawings.empty())
         r.fail(DiagnosticCode::drawing_unusable, "no drawing to verify");
-    for (const SheetDrawing& d : drawings) {
-        const std::string file = d.name.empty() ? "the drawing" : d.name;
-        if (d.cut.empty())
-            r.fail(DiagnosticCode::drawing_unusable, file + ": no loop on the CUT layer");
-        if (!std::isfinite(d.kerf) || d.kerf < 0.0 || d.kerf > 2.0)
-            r.fail(DiagnosticCode::drawing_unusable,
-                   file + ": kerf = " + std::to_string(d.kerf) + ", must be 0 to 2 mm",
-                   about_parameter("kerf"));
-        for (const Loop2& l : d.cut)
-            if (l.size() < 3 || !finite_loop(l))
-                r.fail(DiagnosticCode::drawing_unusable,
-                       file + ": a CUT loop has " + std::to_string(l.size()) +
-                           (finite_loop(l) ? " points, needs three or more"
-                                           : " points and a coordinate that is not finite or "
-                                             "lies beyond ±1e6 mm"));
-            else if (const auto at = first_loop_crossing({l}))
-                r.fail(DiagnosticCode::drawing_unusable,
-                       file + ": a CUT loop crosses itself at " + where(*at) +
-                           ": the paper it encloses is not defined");
-        for (const Loop2& l : d.glue)
-            if (l.size() < 3 || !finite_loop(l))
-                r.fail(DiagnosticCode::drawing_unusable,
-                       file + ": a GLUE area needs three or more points within ±1e6 mm");
-        for (const DrawnFold& f : d.folds)
-            if (!finite_loop({f.from, f.to}) || (f.to - f.from).norm() < 1e-6)
-                r.fail(DiagnosticCode::drawing_unusable,
-                       file + ": a fold line at " + where(f.from) +
-                           " has no length, or a coordinate that is not finite or lies beyond "
-                           "±1e6 mm");
-        for (const DrawnText& t : d.labels)
-            if (!finite_loop({t.position}))
-                r.fail(DiagnosticCode::drawing_unusable,
-                       file + ": label '" + t.text +
-                           "' has a position that is not finite or lies beyond ±1e6 mm");
-    }
+    for (const SheetDrawing& d : drawings)
+        check_readable(d, r);
     if (!r.ok)
         return r;
 
     std::map<std::string, std::string> seen; // piece id → where
-    for (const SheetDrawing& d : drawings) {
-        const std::string file = d.name.empty() ? "the drawing" : d.name;
-        std::vector<Region> regions = nominal_regions(d.cut, d.kerf);
-        // Each entity belongs to the innermost piece around it: a small piece may be nested in
-        // a large one's hole, and a slit's slot may sit on a fold.
-        std::vector<double> areas;
-        for (const Region& r : regions)
-            areas.push_back(std::abs(loop_area(r.outer)));
-        auto owner = [&](const Vec2& q) {
-            int best = -1;
-            for (size_t i = 0; i < regions.size(); ++i)
-                if (point_in_polygon(regions[i].outer, q) && (best < 0 || areas[i] < areas[best]))
-                    best = int(i);
-            return best;
-        };
-        for (size_t index = 0; index < regions.size(); ++index) {
-            Region& region = regions[index];
-            std::vector<std::string> ids;
-            for (const DrawnText& t : d.labels)
-                if (std::regex_match(t.text, piece_label) && owner(t.position) == int(index))
-                    ids.push_back(t.text);
-            const Vec2 at = interior_point(region);
-            const int self = int(index);
-            const bool bare =
-                std::none_of(
-                    d.folds.begin(), d.folds.end(),
-                    [&](const DrawnFold& f) { return owner(0.5 * (f.from + f.to)) == self; }) &&
-                std::none_of(d.labels.begin(), d.labels.end(),
-                             [&](const DrawnText& t) { return owner(t.position) == self; });
-            if (ids.empty() && bare) { // a scrap that carries nothing a maker needs
-                std::ostringstream m;
-                m.precision(3);
-                m << file << ": a scrap of " << areas[index] << " mm² around " << where(at)
-                  << " carries no label, fold or glue area: left out";
-                findings.push_back(Diagnostic::warning(DiagnosticCode::unlabelled_piece, m.str()));
-                continue;
-            }
-            if (ids.size() != 1) {
-                findings.push_back(Diagnostic::error(
-                    DiagnosticCode::unlabelled_piece,
-                    file + ": the cut piece around " + where(at) + " carries " +
-                        (ids.empty() ? std::string("no piece label (P1, P2, …)")
-                                     : std::to_string(ids.size()) + " piece labels")));
-                continue;
-            }
-            if (seen.count(ids[0])) {
-                findings.push_back(Diagnostic::error(DiagnosticCode::unlabelled_piece,
-                                                     file + ": piece label " + ids[0] +
-                                                         " is on two cut pieces (" + seen[ids[0]] +
-                                                         " and " + where(at) + ")"));
-                continue;
-            }
-            seen[ids[0]] = file + " " + where(at);
-            DrawnPiece piece;
-            piece.id = ids[0];
-            piece.drawing = file;
-            piece.outline = region;
-            for (const DrawnFold& f : d.folds)
-                if (owner(0.5 * (f.from + f.to)) == self)
-                    piece.folds.push_back(f);
-            for (const Loop2& g : d.glue)
-                if (owner(interior_point({g, {}})) == self)
-                    piece.glue.push_back({g, "", false});
-            std::vector<const DrawnText*> texts;
-            for (const DrawnText& t : d.labels)
-                if (t.text != piece.id && owner(t.position) == self)
-                    texts.push_back(&t);
-            // A glue area's code is printed inside it; areas on the paper's two faces may
-            // overlap, and a code inside several is the smallest one's (a larger area's code
-            // is printed clear of the smaller areas on it). Each area takes the nearest of its
-            // codes to its middle; then, of the texts no area took, the nearest inside it.
-            std::vector<int> smallest(texts.size(), -1);
-            for (size_t i = 0; i < texts.size(); ++i)
-                for (size_t k = 0; k < piece.glue.size(); ++k)
-                    if (point_in_polygon(piece.glue[k].polygon, texts[i]->position) &&
-                        (smallest[i] < 0 ||
-                         std::abs(loop_area(piece.glue[k].polygon)) <
-                             std::abs(loop_area(piece.glue[size_t(smallest[i])].polygon))))
-                        smallest[i] = int(k);
-            std::vector<bool> taken(texts.size(), false);
-            std::vector<int> code_of(piece.glue.size(), -1);
-            for (size_t k = 0; k < piece.glue.size(); ++k)
-                for (size_t i = 0; i < texts.size(); ++i)
-                    if (smallest[i] == int(k) &&
-                        (code_of[k] < 0 ||
-                         (texts[i]->position - mean(piece.glue[k].polygon)).norm() <
-                             (texts[size_t(code_of[k])]->position - mean(piece.glue[k].polygon))
-                                 .norm()))
-                        code_of[k] = int(i);
-            for (int i : code_of)
-                if (i >= 0)
-                    taken[size_t(i)] = true;
-            for (size_t k = 0; k < piece.glue.size(); ++k) {
-                DrawnGlue& g = piece.glue[k];
-                int nearest = code_of[k];
-                for (size_t i = 0; i < texts.size() && code_of[k] < 0; ++i)
-                    if (!taken[i] && point_in_polygon(g.polygon, texts[i]->position) &&
-                        (nearest < 0 ||
-                         (texts[i]->position - mean(g.polygon)).norm() <
-                             (texts[size_t(nearest)]->position - mean(g.polygon)).norm()))
-                        nearest = int(i);
-                if (nearest < 0)
-                    continue;
-                taken[size_t(nearest)] = true;
-                const std::string& text = texts[size_t(nearest)]->text;
-                const std::string back = " (back)";
-                g.back = text.size() > back.size() &&
-                         text.compare(text.size() - back.size(), back.size(), back) == 0;
-                g.code = g.back ? text.substr(0, text.size() - back.size()) : text;
-            }
-            for (size_t i = 0; i < texts.size(); ++i)
-                if (!taken[i])
-                    piece.texts.push_back(*texts[i]);
-            piece.faces = split_faces(piece.outline, piece.folds);
-            r.value.push_back(std::move(piece));
-        }
-    }
+    for (const SheetDrawing& d : drawings)
+        read_pieces(d, seen, findings, r.value);
     return r;
 }
 
