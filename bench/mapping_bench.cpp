@@ -8,7 +8,8 @@
 #include <cmath>
 #include <limits>
 
-#include "motion/mechanism_fit.hpp"
+#include "motion/chain_mapping.hpp"
+#include "motion/motion_kinematics.hpp"
 
 namespace {
 

@@ -8,6 +8,8 @@
 #include <cmath>
 
 #include "motion/motion_annealing.hpp"
+#include "motion/motion_kinematics.hpp"
+#include "motion/motion_parameters.hpp"
 
 namespace {
 

@@ -36,16 +36,22 @@ std::vector<int> cycle_from(const std::vector<Bone>& bones, int start)
     return {};
 }
 
-} // namespace
-
-Result<Animation> check_animation(Animation animation)
-{
-    Result<Animation> result;
-    const std::string& source = animation.source;
-    auto refuse = [&](DiagnosticCode code, const std::string& why, const std::string& about) {
+// Fails `result`, naming the animation, the reason and what it is about; false, so that a check
+// can return it.
+struct Refusal {
+    Result<Animation>& result;
+    const std::string& source;
+    bool operator()(DiagnosticCode code, const std::string& why, const std::string& about) const
+    {
         result.fail(code, "animation " + source + ": " + why, about_parameter(about));
-        return result;
-    };
+        return false;
+    }
+};
+
+// Bones: parents in range, no cycle, parents before their children.
+bool check_skeleton(const Animation& animation, const Refusal& refuse)
+{
+    const std::string& source = animation.source;
     const int n = int(animation.bones.size());
     if (n == 0)
         return refuse(DiagnosticCode::bad_animation, "it has no bones", source);
@@ -80,7 +86,14 @@ Result<Animation> check_animation(Animation animation)
                               std::to_string(animation.bones[b].parent) +
                               "); parents must come first",
                           animation.bones[b].name);
+    return true;
+}
 
+// Frames: at least two, at finite ascending times, each a rigid transform per bone.
+bool check_frames(const Animation& animation, const Refusal& refuse)
+{
+    const std::string& source = animation.source;
+    const int n = int(animation.bones.size());
     const int frames = animation.frames();
     if (frames == 0)
         return refuse(DiagnosticCode::no_animation, "it has no frames (no animation)", source);
@@ -131,9 +144,15 @@ Result<Animation> check_animation(Animation animation)
                               animation.bones[b].name);
         }
     }
+    return true;
+}
 
-    // The joints' extent over every frame, as check_model bounds a model's: a root jumping to
-    // 1e30 would shrink the character on the card to a point (parents precede their children).
+// The joints' extent over every frame, as check_model bounds a model's: a root jumping to
+// 1e30 would shrink the character on the card to a point (parents precede their children).
+bool check_extent(const Animation& animation, const Refusal& refuse)
+{
+    const int n = int(animation.bones.size());
+    const int frames = animation.frames();
     Eigen::AlignedBox3d joints;
     for (int f = 0; f < frames; ++f) {
         std::vector<Eigen::Isometry3d> global(n);
@@ -150,7 +169,13 @@ Result<Animation> check_animation(Animation animation)
             << " units over its frames, must be in 1e-6..1e6";
         return refuse(DiagnosticCode::bad_animation, why.str(), "local");
     }
+    return true;
+}
 
+// Bind transforms: one per bone (identity when none are given), finite.
+bool check_bind(Animation& animation, const Refusal& refuse)
+{
+    const int n = int(animation.bones.size());
     if (animation.bind_inverse.empty())
         animation.bind_inverse.assign(n, Eigen::Isometry3d::Identity());
     if (int(animation.bind_inverse.size()) != n)
@@ -164,7 +189,14 @@ Result<Animation> check_animation(Animation animation)
                           "bone " + animation.bones[b].name +
                               " has a NaN or infinite bind transform",
                           animation.bones[b].name);
+    return true;
+}
 
+// The skin: a valid mesh with weights to existing bones summing to 1 per vertex, or neither.
+bool check_skin(Animation& animation, const Refusal& refuse)
+{
+    const std::string& source = animation.source;
+    const int n = int(animation.bones.size());
     if (animation.mesh.vertices.empty()) {
         if (!animation.skin.empty())
             return refuse(DiagnosticCode::bad_animation,
@@ -176,8 +208,8 @@ Result<Animation> check_animation(Animation animation)
             animation.mesh.source = source;
         Result<ModelMesh> mesh = check_model(animation.mesh);
         if (!mesh.ok) {
-            result.fail_with(mesh.diagnostics);
-            return result;
+            refuse.result.fail_with(mesh.diagnostics);
+            return false;
         }
         const size_t vertices = animation.mesh.vertices.size();
         if (animation.skin.size() != vertices)
@@ -216,6 +248,19 @@ Result<Animation> check_animation(Animation animation)
                               "skin");
         }
     }
+    return true;
+}
+
+} // namespace
+
+Result<Animation> check_animation(Animation animation)
+{
+    Result<Animation> result;
+    const Refusal refuse{result, animation.source};
+    if (!check_skeleton(animation, refuse) || !check_frames(animation, refuse) ||
+        !check_extent(animation, refuse) || !check_bind(animation, refuse) ||
+        !check_skin(animation, refuse))
+        return result;
     result.value = std::move(animation);
     return result;
 }

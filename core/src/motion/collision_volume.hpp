@@ -2,7 +2,7 @@
 #include <array>
 #include <vector>
 
-#include "motion_mechanism.hpp"
+#include "mechanism_parts.hpp"
 
 namespace popup::motion {
 

@@ -1,5 +1,8 @@
 #pragma once
-#include "popup/motion/design_motion.hpp"
+#include <atomic>
+
+#include "popup/model/cancel_flag.hpp"
+#include "popup/motion/motion_types.hpp"
 
 namespace popup::motion {
 
@@ -9,9 +12,5 @@ namespace popup::motion {
 Result<MotionResult> design_from_targets(const MotionTargets& targets, const MotionOptions& options,
                                          const CancelFlag* cancel = nullptr,
                                          std::atomic<double>* progress = nullptr);
-
-/// h_max of the floating layers: options.layer_height_max, or 25 mm on an A4 card (210 × 148.5
-/// mm per page pair) scaled by √(card area / A4's).
-double layer_height_max(const MotionOptions& options);
 
 } // namespace popup::motion

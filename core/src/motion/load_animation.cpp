@@ -139,44 +139,31 @@ void collect(const aiNode* node, int parent_node, std::vector<const aiNode*>& no
         collect(node->mChildren[c], me, nodes, parents);
 }
 
-void read_with_assimp(const std::string& path, Read& out)
-{
-    Assimp::Importer importer;
-    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
-                                aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    // BVH has no mesh: assimp would make one that draws the skeleton.
-    importer.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);
-    // FBX: one node per bone, not helper nodes for each pivot ("$AssimpFbx$_Rotation").
-    importer.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, false);
-    const aiScene* scene = importer.ReadFile(
-        path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
-    if (!scene) {
-        out.why = std::string("assimp could not read it: ") + importer.GetErrorString();
-        return;
-    }
-    if (!scene->mRootNode) {
-        out.why = "assimp read no node hierarchy";
-        return;
-    }
-    if (scene->mNumAnimations == 0 || !scene->mAnimations[0] ||
-        scene->mAnimations[0]->mNumChannels == 0) {
-        out.code = "no_animation";
-        out.why = "it has no animation (no keyframe channels)";
-        return;
-    }
-    const aiAnimation* clip = scene->mAnimations[0];
-    const double ticks_per_second = clip->mTicksPerSecond > 0 ? clip->mTicksPerSecond : 25.0;
-
+/// The scene's node tree (parents before children) and which nodes are the animation's bones.
+struct SceneBones {
     std::vector<const aiNode*> nodes;
     std::vector<int> node_parent;
+    std::map<std::string, int> node_named;     ///< the first node of each name
+    std::vector<const aiNodeAnim*> channel_of; ///< per node, its keyframe channel or none
+    std::vector<int> bone_of;                  ///< per node, its bone or -1
+    std::vector<int> node_of_bone;             ///< per bone, its node
+};
+
+/// The node tree and its bones (written to animation.bones, parents first).
+SceneBones scene_bones(const aiScene* scene, const aiAnimation* clip, Animation& animation)
+{
+    SceneBones s;
+    std::vector<const aiNode*>& nodes = s.nodes;
+    std::vector<int>& node_parent = s.node_parent;
     collect(scene->mRootNode, -1, nodes, node_parent);
-    std::map<std::string, int> node_named;
+    std::map<std::string, int>& node_named = s.node_named;
     for (size_t i = 0; i < nodes.size(); ++i)
         node_named.emplace(nodes[i]->mName.C_Str(), int(i)); // the first of a repeated name
 
     // Bones: animated nodes, skin bones, their ancestors, and the childless nodes below an
     // animated one (BVH end sites).
-    std::vector<const aiNodeAnim*> channel_of(nodes.size(), nullptr);
+    std::vector<const aiNodeAnim*>& channel_of = s.channel_of;
+    channel_of.assign(nodes.size(), nullptr);
     std::vector<char> is_bone(nodes.size(), 0), animated_below(nodes.size(), 0);
     for (unsigned c = 0; c < clip->mNumChannels; ++c) {
         auto it = node_named.find(clip->mChannels[c]->mNodeName.C_Str());
@@ -200,21 +187,25 @@ void read_with_assimp(const std::string& path, Read& out)
     for (int i = int(nodes.size()) - 1; i >= 0; --i)
         if (is_bone[i] && node_parent[i] >= 0)
             is_bone[node_parent[i]] = 1;
-    std::vector<int> bone_of(nodes.size(), -1);
-    Animation& animation = out.animation;
-    animation.source = path;
+    std::vector<int>& bone_of = s.bone_of;
+    bone_of.assign(nodes.size(), -1);
     for (size_t i = 0; i < nodes.size(); ++i)
         if (is_bone[i]) {
             bone_of[i] = int(animation.bones.size());
             const int p = node_parent[i];
             animation.bones.push_back({nodes[i]->mName.C_Str(), p >= 0 ? bone_of[p] : -1});
         }
-    std::vector<int> node_of_bone;
+    std::vector<int>& node_of_bone = s.node_of_bone;
     for (size_t i = 0; i < nodes.size(); ++i)
         if (is_bone[i])
             node_of_bone.push_back(int(i));
-    const int n = int(node_of_bone.size());
 
+    return s;
+}
+
+/// The frames' times in ticks: every key time of every channel, nearly equal ones merged.
+std::vector<double> frame_ticks_of(const aiAnimation* clip)
+{
     // Frames: every key time of every channel.
     std::set<double> ticks;
     for (unsigned c = 0; c < clip->mNumChannels; ++c) {
@@ -230,9 +221,19 @@ void read_with_assimp(const std::string& path, Read& out)
     for (double t : ticks)
         if (frame_ticks.empty() || t - frame_ticks.back() > 1e-6 * std::max(1.0, std::abs(t)))
             frame_ticks.push_back(t);
-    for (double t : frame_ticks)
-        animation.frame_times_s.push_back(t / ticks_per_second);
 
+    return frame_ticks;
+}
+
+/// Each frame's local transforms into animation.local; returns the bones' global transforms at the
+/// first frame (affine: the skin's scale is read from them).
+std::vector<Affine> read_frames(const SceneBones& s, const std::vector<double>& frame_ticks,
+                                Animation& animation)
+{
+    const std::vector<const aiNode*>& nodes = s.nodes;
+    const std::vector<const aiNodeAnim*>& channel_of = s.channel_of;
+    const std::vector<int>& node_of_bone = s.node_of_bone;
+    const int n = int(node_of_bone.size());
     // Global affine transforms per frame, made rigid (a rig's uniform scale, as FBX's 0.01
     // armature, goes into the bones' positions and the mesh, not their transforms).
     std::vector<Affine> rest(n);
@@ -261,6 +262,19 @@ void read_with_assimp(const std::string& path, Read& out)
             global_at_first = global;
     }
 
+    return global_at_first;
+}
+
+/// The skinned mesh into animation.mesh, .skin and .bind_inverse.
+void read_skin(const aiScene* scene, const SceneBones& s,
+               const std::vector<Affine>& global_at_first, const std::string& path,
+               Animation& animation)
+{
+    const std::vector<const aiNode*>& nodes = s.nodes;
+    const std::vector<int>& node_parent = s.node_parent;
+    const std::map<std::string, int>& node_named = s.node_named;
+    const std::vector<int>& bone_of = s.bone_of;
+    const int n = int(s.node_of_bone.size());
     // The skinned mesh: vertices scaled to the bones' units, offsets made rigid.
     animation.bind_inverse.assign(n, Eigen::Isometry3d::Identity());
     std::vector<char> bind_set(n, 0);
@@ -358,6 +372,44 @@ void read_with_assimp(const std::string& path, Read& out)
                                           offset + int(face.mIndices[2])});
         }
     }
+}
+
+void read_with_assimp(const std::string& path, Read& out)
+{
+    Assimp::Importer importer;
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
+                                aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    // BVH has no mesh: assimp would make one that draws the skeleton.
+    importer.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);
+    // FBX: one node per bone, not helper nodes for each pivot ("$AssimpFbx$_Rotation").
+    importer.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, false);
+    const aiScene* scene = importer.ReadFile(
+        path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
+    if (!scene) {
+        out.why = std::string("assimp could not read it: ") + importer.GetErrorString();
+        return;
+    }
+    if (!scene->mRootNode) {
+        out.why = "assimp read no node hierarchy";
+        return;
+    }
+    if (scene->mNumAnimations == 0 || !scene->mAnimations[0] ||
+        scene->mAnimations[0]->mNumChannels == 0) {
+        out.code = "no_animation";
+        out.why = "it has no animation (no keyframe channels)";
+        return;
+    }
+    const aiAnimation* clip = scene->mAnimations[0];
+    const double ticks_per_second = clip->mTicksPerSecond > 0 ? clip->mTicksPerSecond : 25.0;
+
+    Animation& animation = out.animation;
+    animation.source = path;
+    const SceneBones bones = scene_bones(scene, clip, animation);
+    const std::vector<double> frame_ticks = frame_ticks_of(clip);
+    for (double t : frame_ticks)
+        animation.frame_times_s.push_back(t / ticks_per_second);
+    const std::vector<Affine> global_at_first = read_frames(bones, frame_ticks, animation);
+    read_skin(scene, bones, global_at_first, path, animation);
     out.code.clear();
 }
 

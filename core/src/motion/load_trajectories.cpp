@@ -88,7 +88,8 @@ struct Effector {
     std::string field;
 };
 
-Animation animation_of(const json& doc, const std::string& path)
+// The effectors of the document, checked one by one; `index`: each one's position by name.
+std::vector<Effector> effectors_of(const json& doc, std::map<std::string, int>& index)
 {
     if (!doc.is_object())
         throw FieldError{DiagnosticCode::bad_animation, "(top level)",
@@ -112,7 +113,6 @@ Animation animation_of(const json& doc, const std::string& path)
                          "is empty: there is no trajectory"};
 
     std::vector<Effector> effectors;
-    std::map<std::string, int> index;
     for (size_t i = 0; i < list.size(); ++i) {
         const std::string at = "effectors[" + std::to_string(i) + "]";
         const json& e = list[i];
@@ -154,7 +154,13 @@ Animation animation_of(const json& doc, const std::string& path)
         index[effector.name] = int(i);
         effectors.push_back(std::move(effector));
     }
+    return effectors;
+}
 
+// The frame times: the effectors' common frame count at `times` or `frame_rate` (25 per second
+// when neither is given).
+std::vector<double> frame_times(const json& doc, const std::vector<Effector>& effectors)
+{
     // Frames: the longest track sets the count; every track must have it (a fixed root aside).
     const size_t frames = effectors[0].points.size();
     for (const Effector& e : effectors) {
@@ -196,12 +202,14 @@ Animation animation_of(const json& doc, const std::string& path)
         for (size_t f = 0; f < frames; ++f)
             times.push_back(double(f) / rate);
     }
+    return times;
+}
 
-    // Bones, parents first: an effector after the effector it hangs from. A parent chain that
-    // comes back to an effector is a cycle, named in full.
-    Animation animation;
-    animation.source = path;
-    animation.frame_times_s = times;
+// Bones, parents first: an effector after the effector it hangs from. A parent chain that
+// comes back to an effector is a cycle, named in full.
+std::vector<int> parents_first(const std::vector<Effector>& effectors,
+                               const std::map<std::string, int>& index)
+{
     std::vector<int> order, state(effectors.size(), 0); // 0 new, 1 on the path, 2 placed
     std::vector<int> path_names;
     std::function<void(int)> place = [&](int i) {
@@ -232,6 +240,19 @@ Animation animation_of(const json& doc, const std::string& path)
     };
     for (size_t i = 0; i < effectors.size(); ++i)
         place(int(i));
+    return order;
+}
+
+Animation animation_of(const json& doc, const std::string& path)
+{
+    std::map<std::string, int> index;
+    const std::vector<Effector> effectors = effectors_of(doc, index);
+    const std::vector<double> times = frame_times(doc, effectors);
+    const size_t frames = effectors[0].points.size();
+    Animation animation;
+    animation.source = path;
+    animation.frame_times_s = times;
+    const std::vector<int> order = parents_first(effectors, index);
 
     std::vector<int> bone_of(effectors.size(), -1);
     std::vector<int> root_bone_of(effectors.size(), -1);

@@ -1,5 +1,6 @@
 #pragma once
-#include "popup/motion/design_motion.hpp"
+#include "popup/model/cancel_flag.hpp"
+#include "popup/motion/motion_types.hpp"
 
 namespace popup::motion {
 

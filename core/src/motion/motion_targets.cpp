@@ -43,17 +43,21 @@ Mat3 card_axes(const Vec3& view, const Vec3& up)
 /// At most this many frames are skinned to find the character's extent (every k-th frame).
 constexpr int skinned_frames_for_extent = 32;
 
-} // namespace
-
-Result<MotionTargets> motion_targets(const Animation& animation, const MotionView& view,
-                                     const ChainOptions& chain_options)
-{
-    Result<MotionTargets> result;
-    auto refuse = [&](const std::string& option, const std::string& why) {
+// Fails `result` naming the view's option, why, and the option as the subject; false, so that a
+// check can return it.
+struct ViewRefusal {
+    Result<MotionTargets>& result;
+    bool operator()(const std::string& option, const std::string& why) const
+    {
         result.fail(DiagnosticCode::bad_option, "motion view: " + option + " " + why,
                     about_parameter(option));
-        return result;
-    };
+        return false;
+    }
+};
+
+// The view's options and frame range, against the animation's frames.
+bool check_view(const Animation& animation, const MotionView& view, const ViewRefusal& refuse)
+{
     const int frames = animation.frames();
     if (frames < 2 || animation.local.size() != size_t(frames))
         return refuse("animation", "has " + std::to_string(frames) +
@@ -91,6 +95,24 @@ Result<MotionTargets> motion_targets(const Animation& animation, const MotionVie
                       "= " + std::to_string(view.last_frame) + ", must be -1 (the last) or in " +
                           std::to_string(first + 1) + ".." + std::to_string(frames - 1) +
                           " (after first_frame " + std::to_string(first) + ")");
+    return true;
+}
+
+} // namespace
+
+Result<MotionTargets> motion_targets(const Animation& animation, const MotionView& view,
+                                     const ChainOptions& chain_options)
+{
+    Result<MotionTargets> result;
+    if (!check_view(animation, view, ViewRefusal{result}))
+        return result;
+    const int frames = animation.frames();
+    const int first = view.first_frame;
+    const int last = view.last_frame < 0 ? frames - 1 : view.last_frame;
+    auto refuse = [&](const std::string& option, const std::string& why) {
+        ViewRefusal{result}(option, why);
+        return result;
+    };
 
     const Mat3 axes = card_axes(view.view, view.up);
     MotionTargets& targets = result.value;

@@ -1,5 +1,5 @@
 #pragma once
-#include "mechanism_fit.hpp"
+#include "chain_mapping.hpp"
 #include "popup/model/card.hpp"
 
 namespace popup::motion {

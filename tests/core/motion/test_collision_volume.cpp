@@ -1,6 +1,7 @@
 // Collision volumes: every closed-form vertex at 1000 fold angles inside its piece's box (and on
 // its piece's side), the four mechanisms the synthetic rigs are made of (valid together by the
-// simulator) apart, and the depth's size from the boxes' construction.
+// simulator) apart, the depth's size from the boxes' construction, and every patch the
+// generators build, posed by the simulator, inside its volume.
 // The separating-axis test against a brute-force intersection test that shares nothing with it:
 // two convex boxes meet iff a corner of one lies in the other or an edge of one crosses the other
 // (Liang–Barsky clipping of the edge against the other box's slabs).
@@ -9,12 +10,18 @@
 #include <random>
 
 #include "motion/collision_volume.hpp"
+#include "motion/motion_feasibility.hpp"
 #include "motion_fixtures.hpp"
 #include "popup/model/card.hpp"
 #include "popup/simulation/check_validity.hpp"
+#include "popup/simulation/simulate_fold.hpp"
 
 namespace popup::motion {
 namespace {
+
+using testing::build;
+using testing::Built;
+using testing::samples;
 
 OrientedBox random_box(std::mt19937_64& rng)
 {
@@ -262,6 +269,65 @@ TEST(CollisionVolume, CollideAnswersWhetherTheDepthIsPositive)
         }
     EXPECT_GT(yes, 50);
     EXPECT_GT(no, 50);
+}
+
+// Points spread over a posed patch: its outline's vertices and a grid over each triangle of its
+// fan (the patches are convex), so a point of any of the patch's pieces is among them.
+std::vector<Vec3> points_over(const std::vector<Vec3>& outline)
+{
+    std::vector<Vec3> points = outline;
+    constexpr int n = 8;
+    for (std::size_t t = 1; t + 1 < outline.size(); ++t)
+        for (int i = 0; i <= n; ++i)
+            for (int j = 0; i + j <= n; ++j)
+                points.push_back(outline[0] + (outline[t] - outline[0]) * i / double(n) +
+                                 (outline[t + 1] - outline[0]) * j / double(n));
+    return points;
+}
+
+TEST(CollisionVolume, HoldsEverySimulatedPatchOver91Angles)
+{
+    // Every point of every patch, posed by the simulator at 91 angles (x divided by sin(θ/2), the
+    // volume's frame), lies in the box of one piece of its band whose side admits it (side s:
+    // s·x >= 0): the volume and its sides hold the paper the generators build.
+    std::vector<double> angles;
+    for (int k = 0; k <= 90; ++k)
+        angles.push_back(M_PI * k / 90);
+    const VolumeOptions options;
+    for (const auto& [kind, m] : samples()) {
+        const CollisionVolume volume = collision_volume(m, options);
+        ASSERT_EQ(int(volume.bands.size()), options.bands);
+        const std::size_t pieces = volume.sides.size();
+        ASSERT_EQ(volume.aligned.size(), pieces * options.bands);
+        const Built b = build(m);
+        const Result<FoldSweep> sweep = simulate_fold(b.scaffold, angles);
+        ASSERT_TRUE(sweep.ok && sweep.value.complete);
+        int outside = 0, checked = 0;
+        for (const FoldState& state : sweep.value.states) {
+            if (state.angle == 0.0)
+                continue; // flat: the volume's frame, x / sin(θ/2), is a limit there
+            const int band = std::min(options.bands - 1, int(state.angle / (M_PI / options.bands)));
+            const double across = 1.0 / std::sin(state.angle / 2);
+            for (int id : b.patches) {
+                const Patch* patch = b.scaffold.find_patch(id);
+                for (const Vec3& x :
+                     points_over(posed_outline(*patch, state.poses[b.scaffold.patch_index(id)]))) {
+                    ++checked;
+                    const Vec3 mapped(x.x() * across, x.y(), x.z());
+                    bool held = false;
+                    for (std::size_t i = 0; i < pieces && !held; ++i) {
+                        const OrientedBox& box = volume.aligned[band * pieces + i];
+                        held = volume.sides[i] * x.x() >= -1e-9 &&
+                               ((mapped - box.centre).cwiseAbs() - box.half).maxCoeff() <= 1e-9;
+                    }
+                    if (!held)
+                        ++outside;
+                }
+            }
+        }
+        EXPECT_GT(checked, 91 * 3);
+        EXPECT_EQ(outside, 0) << kind;
+    }
 }
 
 } // namespace

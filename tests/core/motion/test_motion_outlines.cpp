@@ -9,6 +9,7 @@
 
 #include "motion/motion_outlines.hpp"
 #include "motion_fixtures.hpp"
+#include "popup/motion/design_motion.hpp"
 #include "popup/simulation/check_validity.hpp"
 
 namespace popup::motion {

@@ -4,6 +4,8 @@
 #include <vector>
 
 #include "motion_mechanism.hpp"
+#include "popup/geometry/pose.hpp"
+#include "popup/model/card.hpp"
 
 namespace popup::motion {
 

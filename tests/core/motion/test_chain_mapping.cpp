@@ -5,7 +5,8 @@
 #include <cmath>
 #include <limits>
 
-#include "motion/mechanism_fit.hpp"
+#include "motion/chain_mapping.hpp"
+#include "motion/motion_feasibility.hpp"
 #include "motion_fixtures.hpp"
 #include "popup/mechanisms/rotation_arm.hpp"
 
@@ -25,7 +26,7 @@ ChainTarget target_of(const MotionMechanism& m)
     return t;
 }
 
-TEST(MechanismFit, MotionErrorOfAKnownOffsetIsThatOffset)
+TEST(ChainMapping, MotionErrorOfAKnownOffsetIsThatOffset)
 {
     // Eq 6.6 by hand: a target shifted by (3, 4) mm everywhere is 5 mm off at every sample.
     const MotionMechanism m = testing::sample_mechanism(MotionKind::rotation);
@@ -35,7 +36,7 @@ TEST(MechanismFit, MotionErrorOfAKnownOffsetIsThatOffset)
     EXPECT_NEAR(motion_error(m, t), 5.0, 1e-12);
 }
 
-TEST(MechanismFit, RecoversTypeAndParametersOfClosedFormPaths)
+TEST(ChainMapping, RecoversTypeAndParametersOfClosedFormPaths)
 {
     const double tolerance = 0.01 * 210; // 1 % of the card size
     for (MotionKind kind : {MotionKind::rotation, MotionKind::vertical, MotionKind::horizontal}) {
@@ -68,7 +69,7 @@ TEST(MechanismFit, RecoversTypeAndParametersOfClosedFormPaths)
 // reach from the wing's far hinge end S, run + arm, and on the ground side |hinge| + run (S on
 // the page), on the backdrop side |hinge|. (Sliding O along O-S, a homothety about S, keeps the
 // tip's (x, y): the five parameters make a one-parameter family of equal paths, MATH.md.)
-TEST(MechanismFit, RecoversARotationOffTheFold)
+TEST(ChainMapping, RecoversARotationOffTheFold)
 {
     const double tolerance = 0.01 * 210;
     for (double side : {1.0, -1.0}) {
@@ -99,7 +100,7 @@ TEST(MechanismFit, RecoversARotationOffTheFold)
 // side the tip does not move at all; on the backdrop side (S on the support) the homothety is
 // followed by a slide down the support, and the tip moves by k·run along z only, unseen from
 // above (docs/MATH.md, A rotation arm on a floating layer's side).
-TEST(MechanismFit, SlidingTheArmsVertexAlongItsHingeKeepsThePath)
+TEST(ChainMapping, SlidingTheArmsVertexAlongItsHingeKeepsThePath)
 {
     for (double side : {1.0, -1.0}) {
         const MotionMechanism a = testing::off_fold_rotation(side);
@@ -117,7 +118,7 @@ TEST(MechanismFit, SlidingTheArmsVertexAlongItsHingeKeepsThePath)
     }
 }
 
-TEST(MechanismFit, HorizontalRunsRatioIsRecovered)
+TEST(ChainMapping, HorizontalRunsRatioIsRecovered)
 {
     const MotionMechanism truth = testing::sample_mechanism(MotionKind::horizontal);
     const auto candidates = fit_candidates(target_of(truth), testing::a4_card(), 25);
@@ -125,7 +126,7 @@ TEST(MechanismFit, HorizontalRunsRatioIsRecovered)
     EXPECT_NEAR(m.p[3] / m.p[2], truth.p[3] / truth.p[2], 0.01);
 }
 
-TEST(MechanismFit, DiagonalPathIsMappedToTheDiagonalTranslation)
+TEST(ChainMapping, DiagonalPathIsMappedToTheDiagonalTranslation)
 {
     const MotionMechanism truth = testing::sample_mechanism(MotionKind::diagonal);
     const ChainTarget t = target_of(truth);
@@ -134,7 +135,7 @@ TEST(MechanismFit, DiagonalPathIsMappedToTheDiagonalTranslation)
     EXPECT_LT(candidates[int(MotionKind::diagonal)].error_mm, 0.01 * 210);
 }
 
-TEST(MechanismFit, StillChainGoesOnAFloatingLayerAtItsDepth)
+TEST(ChainMapping, StillChainGoesOnAFloatingLayerAtItsDepth)
 {
     ChainTarget t;
     t.weight = 1;
@@ -148,7 +149,7 @@ TEST(MechanismFit, StillChainGoesOnAFloatingLayerAtItsDepth)
     EXPECT_NEAR(mechanism_height(candidates[int(MotionKind::stationary)].mechanism), 15.0, 1e-9);
 }
 
-TEST(MechanismFit, ADiagonalWhoseClosedSpineReachesPastTheFoldsEndIsStillFitted)
+TEST(ChainMapping, ADiagonalWhoseClosedSpineReachesPastTheFoldsEndIsStillFitted)
 {
     // tools/make_animations.py's diagonal (rig_diagonal): closed, its standing spine lies down
     // past O towards y < 0 for the default start values, which were refused unpolished. The
@@ -163,7 +164,7 @@ TEST(MechanismFit, ADiagonalWhoseClosedSpineReachesPastTheFoldsEndIsStillFitted)
     EXPECT_LT(candidates[int(MotionKind::diagonal)].error_mm, 0.5);
 }
 
-TEST(MechanismFit, APathTwoMechanismsMakeEquallyGoesToTheSimplerOne)
+TEST(ChainMapping, APathTwoMechanismsMakeEquallyGoesToTheSimplerOne)
 {
     // Hand-made candidates: the diagonal (8 parameters) beats the vertical translation (4) by
     // 1e-7 mm, far below the tie of 1e-4 of a 200 mm diagonal (0.02 mm); a real difference of
@@ -183,7 +184,7 @@ TEST(MechanismFit, APathTwoMechanismsMakeEquallyGoesToTheSimplerOne)
     EXPECT_EQ(best_mapping(c, t, 2.0, 200.0), MotionKind::diagonal);
 }
 
-TEST(MechanismFit, AStillChainWhoseLayerDoesNotFitGetsOnlyAMechanismThatHoldsItStill)
+TEST(ChainMapping, AStillChainWhoseLayerDoesNotFitGetsOnlyAMechanismThatHoldsItStill)
 {
     // A still point 110 mm across the fold, 15 mm from the card's top edge (rig_four's body):
     // its floating layer's end panels (support up to 0.4 of the depth) stick out of the closed
@@ -210,7 +211,7 @@ TEST(MechanismFit, AStillChainWhoseLayerDoesNotFitGetsOnlyAMechanismThatHoldsItS
     EXPECT_EQ(best_mapping(c, t, 2.0, 200.0), MotionKind::stationary);
 }
 
-TEST(MechanismFit, ALongPathIsFittedOnEveryKthSampleAndScoredOnAll)
+TEST(ChainMapping, ALongPathIsFittedOnEveryKthSampleAndScoredOnAll)
 {
     // 4001 samples of a known rotation with a 1 mm wobble along the fold (a capture's jitter):
     // the fits see every 16th sample and the last (ceil(4000/255) = 16: 251 samples), and each

@@ -1,0 +1,67 @@
+#pragma once
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "popup/model/card.hpp"
+#include "popup/model/designed_card.hpp"
+#include "popup/model/result.hpp"
+#include "popup/model/scaffold.hpp"
+#include "popup/motion/motion_targets.hpp"
+
+// The options and the result of design_motion, below its driver and its stages.
+
+namespace popup {
+
+/// What the maker chooses for an animated pop-up (thesis §6.2–6.4).
+struct MotionOptions {
+    MotionView view;
+    ChainOptions chains;
+    double motion_weight = 85.0;   ///< w_m of eq 6.5
+    double depth_weight = 15.0;    ///< w_d of eq 6.5
+    double collision_weight = 1e5; ///< w_c of eq 6.8
+    long iterations = 4000;        ///< annealing iterations per search chain
+    int search_chains = 2;         ///< independent annealing runs (one per core), best kept
+    /// h_max (mm): the highest floating layer; <= 0: 25 mm on an A4 card, scaled to the card.
+    double layer_height_max = 0.0;
+    std::uint64_t seed = 1;
+    bool outlines = true; ///< moving and stationary patches take the character's outline
+};
+
+/// One chain of the result, as report.json lists it.
+struct ChainReport {
+    std::string name;
+    std::string mapping; ///< "vertical", "diagonal", "horizontal", "rotation", "stationary"
+    std::vector<std::string> mechanisms; ///< names of the mechanisms that carry it
+    double error = 0.0;    ///< E_m (eq 6.6) divided by the character's diagonal on the card
+    double error_mm = 0.0; ///< E_m in mm
+    /// The lowest E_m any mechanism on the card could reach (the reach floor: the target beyond
+    /// what the card shows across the fold while nearly closed), / the diagonal, and in mm
+    double floor = 0.0;
+    double floor_mm = 0.0;
+    double weight = 0.0;        ///< v_j
+    std::string status;         ///< "animated", "merged" or "stationary"
+    std::string reason;         ///< why merged or stationary; empty when animated as mapped
+    std::vector<double> s;      ///< the samples of its path
+    std::vector<Vec2> target;   ///< card (x, y) of the end effector at each s
+    std::vector<Vec2> achieved; ///< card (x, y) of the mechanism's point at each s
+};
+
+struct MotionResult {
+    CardParams card;
+    MotionTargets targets;
+    std::vector<FittedMechanism> mechanisms; ///< hosts before the mechanisms they carry
+    std::vector<FittedProfile> profiles;
+    std::vector<ChainReport> chains;
+    Scaffold scaffold;           ///< card plus mechanisms at the design state (180°)
+    bool valid = false;          ///< the simulator's full validity check passed on `scaffold`
+    double weighted_error = 0.0; ///< Σ v_j E_m(j) / diagonal
+    double weighted_floor = 0.0; ///< Σ v_j floor(j): no design on this card scores lower
+    long iterations = 0;         ///< annealing iterations run (all search chains)
+    double cost = 0.0;           ///< eq 6.5 of the returned state
+    std::vector<std::pair<std::string, double>> timings_s; ///< stage -> seconds, in order
+    Diagnostics diagnostics;
+};
+
+} // namespace popup

@@ -1,0 +1,68 @@
+#include "map_chains.hpp"
+
+#include <cmath>
+
+namespace popup::motion {
+
+namespace {
+
+// True when every chain has the same depth D (eq 6.7): one chain, or a character without depth
+// (a planar skeleton). D then says nothing about which part is nearer, and E_d = |D − H| would
+// only push the mechanisms with a height (v-box, diagonal, floating layer) away from the flat
+// ones whatever the path (docs/DESIGN.md, Depth term without depth).
+bool depths_all_equal(const std::vector<ChainTarget>& chains)
+{
+    for (const ChainTarget& c : chains)
+        if (std::abs(c.depth - chains.front().depth) > 1e-9)
+            return false;
+    return true;
+}
+
+} // namespace
+
+double layer_height_max(const MotionOptions& o)
+{
+    if (o.layer_height_max > 0)
+        return o.layer_height_max;
+    return 25.0 * std::sqrt(o.view.card_width * o.view.card_depth / (210.0 * 148.5));
+}
+
+MotionDesign map_chains(const MotionTargets& targets, const MotionOptions& o,
+                        const CardParams& card, const CancelFlag* cancel,
+                        std::atomic<double>* progress)
+{
+    MotionDesign d;
+    AnnealProblem& p = d.problem;
+    p.card = card;
+    p.diagonal = targets.diagonal_mm;
+    p.h_max = layer_height_max(o);
+    p.motion_weight = o.motion_weight;
+    p.depth_weight = o.depth_weight;
+    p.collision_weight = o.collision_weight;
+    std::vector<MotionKind>& mapped = d.mapped;
+    // The search scores every k-th sample of a long path (search_target); the report, all.
+    std::vector<ChainTarget>& full_chains = d.full_chains;
+    for (std::size_t j = 0; j < targets.chains.size(); ++j) {
+        stop_if_cancelled(cancel, "design_motion: mapping");
+        ChainTarget c;
+        c.name = targets.chains[j].name;
+        c.s = targets.paths[j].s;
+        c.target = targets.paths[j].effector;
+        c.weight = targets.chains[j].weight;
+        c.depth = targets.paths[j].depth;
+        full_chains.push_back(c);
+        p.chains.push_back(search_target(c));
+        p.candidates.push_back(fit_candidates(c, card, p.h_max));
+        mapped.push_back(best_mapping(p.candidates.back(), c, 0.01 * p.diagonal, p.diagonal));
+        if (progress)
+            progress->store(0.2 * double(j + 1) / targets.chains.size());
+    }
+    for (MotionKind kind : mapped)
+        p.still.push_back(kind == MotionKind::stationary);
+    prepare_alike(p);
+    if (depths_all_equal(p.chains))
+        p.depth_weight = 0.0; // D is undefined (0.5 for all): E_d would only charge height
+    return d;
+}
+
+} // namespace popup::motion
