@@ -143,7 +143,7 @@ def _format_report(report_dict):
     with _stdout_to_stderr():
         _import_freecad()
         try:
-            from popupwb.validity import format_report
+            from popupwb.validity.report_text import format_report
         except ImportError as e:
             raise InputError(f"cannot import popupwb.validity ({e}); use --json")
     return format_report(report_dict)

@@ -145,12 +145,12 @@ def design_document(cli, name):
 def build_and_check(stages, build):
     """build() (a design with a .card) timed as `document`, its card checked as `check`;
     returns (design, the check's dict)."""
-    from popupwb import validity
+    from popupwb.validity.check import run_check
 
     with stages.stage("document", "building the card's features"):
         design = build()
     with stages.stage("check", "checking the card's validity"):
-        checked = validity.run_check(design.card)
+        checked = run_check(design.card)
     return design, checked
 
 

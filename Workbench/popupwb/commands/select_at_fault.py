@@ -12,7 +12,7 @@ import FreeCAD
 import FreeCADGui
 
 from popupwb import card_scaffold
-from popupwb.validity import offending_patches
+from popupwb.validity.report_text import offending_patches
 
 
 def at_fault(sheet):
