@@ -20,7 +20,7 @@ import collections
 import hashlib
 import math
 
-from popupwb import profiles
+from popupwb.profiles import cutting, storage
 
 CARD_TYPE = "PopUp::Card"
 CENTRAL_FOLD = "central fold"  # popupcore.central_fold(card).name
@@ -144,7 +144,7 @@ def design_key(card):
         parts.append(
             (obj.Name, obj.Label, obj.Proxy.TYPE, obj.Host.Name, obj.HostPair)
             + tuple(_proxy(obj).parameter_values(obj))
-            + (profiles.key_of(obj),)
+            + (storage.key_of(obj),)
         )
     return tuple(parts)
 
@@ -349,9 +349,9 @@ def build(card):
         built.patches[obj.Name] = list(parts.patches)
         built.offered[obj.Name] = list(parts.offered)
         built.parts[obj.Name] = parts
-        built.sizes[obj.Name] = profiles.part_sizes(scaffold, obj.Label, set(parts.patches))
+        built.sizes[obj.Name] = cutting.part_sizes(scaffold, obj.Label, set(parts.patches))
         try:
-            profiles.apply_profiles(obj, scaffold, built.sizes[obj.Name])
+            cutting.apply_profiles(obj, scaffold, built.sizes[obj.Name])
         except ValueError as error:
             # The mechanism stays as generated so what stands on it still builds; the card is
             # not valid while this error stands (validity counts built.errors).

@@ -75,7 +75,7 @@ def host_of(fitted, card, made):
 def store_profiles(profiles, made):
     """Each outline the core fitted (FittedProfile) goes on its feature, so the card rebuilds the
     same profiled patches (validity and sheets use them)."""
-    from popupwb.profiles import set_profile
+    from popupwb.profiles.editing import set_profile
 
     for fitted in profiles:
         obj = made.get(fitted.mechanism)

@@ -19,9 +19,10 @@ import contextlib
 import math
 
 
-from popupwb import card_scaffold, profiles
+from popupwb import card_scaffold
 from popupwb.features.no_stale_shape import clears_shape_on_error
 from popupwb.features.one_line_errors import one_line_errors
+from popupwb.profiles import editing, storage
 from popupwb.stateless_proxy import StatelessProxy
 from popupwb.view_provider_by_name import attach_view_provider
 
@@ -117,7 +118,7 @@ class MechanismFeature(StatelessProxy):
                 obj.addProperty("App::PropertyDistance", name, self.GROUP, doc)
                 obj.setEditorMode(name, 1)
                 obj.setPropertyStatus(name, "Output")
-        profiles.add_properties(obj)
+        storage.add_properties(obj)
         if "Version" not in have:
             obj.addProperty(
                 "App::PropertyString", "Version", "Base", "Version of this object's properties"
@@ -194,7 +195,7 @@ class MechanismFeature(StatelessProxy):
         if (
             prop in ("Host", "HostPair", "Label")
             or prop in {p.name for p in self.PARAMETERS}
-            or prop in profiles.PROPERTIES
+            or prop in storage.PROPERTIES
         ):
             # Every mechanism after this one may move, and the card's verdict is for another design:
             # recompute the card, and through the Card links all its mechanisms.
@@ -220,8 +221,8 @@ class MechanismFeature(StatelessProxy):
         if obj.ProfileSketch is None or not part or obj.Card is None:
             return
         try:
-            if profiles.stored(obj).get(part, {}).get("reference") is None:
-                profiles.record_reference(obj, part, card_scaffold.for_card(obj.Card))
+            if storage.stored(obj).get(part, {}).get("reference") is None:
+                editing.record_reference(obj, part, card_scaffold.for_card(obj.Card))
         except ValueError:
             pass  # a broken Profiles property: execute() reports it
 
