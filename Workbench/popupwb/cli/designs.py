@@ -24,7 +24,7 @@ Design = collections.namedtuple(
 
 def _design_objects(doc):
     """The Scaffold and PopUpCard objects of `doc`, in document order."""
-    from popupwb.card_scaffold import is_card
+    from popupwb.model.card_scaffold import is_card
     from popupwb.features.scaffold_feature import is_scaffold
 
     return [obj for obj in doc.Objects if is_scaffold(obj) or is_card(obj)]
@@ -50,7 +50,7 @@ def _select_cards(path, objects, card):
 def _card_design(path, card, several, with_model=False):
     """The assembled scaffold of a PopUpCard and its mechanisms; a part that does not build makes
     the input unusable (the message is the feature's error)."""
-    from popupwb.card_scaffold import for_card, stray_features
+    from popupwb.model.card_scaffold import for_card, stray_features
     from popupwb.features.cutting_sheet import card_prints_artwork
     from popupwb.patch_titles import titles_of_card
 

@@ -174,7 +174,7 @@ def _write_design(args, result, model, options, stages, files, say):
     from popupwb.fitting.preview import scaffold_outlines, write_preview
 
     with steps.design_document("PopUpFit") as doc:
-        from popupwb import card_scaffold
+        from popupwb.model import card_scaffold
         from popupwb.fitting.design_from_fit import build_design
 
         design, checked = steps.build_and_check(

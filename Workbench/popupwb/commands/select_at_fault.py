@@ -11,7 +11,7 @@ and happens only on failure.
 import FreeCAD
 import FreeCADGui
 
-from popupwb import card_scaffold
+from popupwb.model import card_scaffold
 from popupwb.validity.report_text import offending_patches
 
 

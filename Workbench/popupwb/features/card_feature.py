@@ -10,7 +10,7 @@ import time
 
 import FreeCAD
 
-from popupwb import card_scaffold
+from popupwb.model import card_scaffold
 from popupwb.features.no_stale_shape import clears_shape_on_error
 from popupwb.features.one_line_errors import one_line_errors
 from popupwb.features.property_adder import add_validity_outputs, property_adder

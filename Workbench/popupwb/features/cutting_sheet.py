@@ -27,7 +27,8 @@ import json
 
 import FreeCAD
 
-from popupwb import card_scaffold, progress
+from popupwb import progress
+from popupwb.model import card_scaffold
 from popupwb.features.one_line_errors import one_line_errors
 from popupwb.features.property_adder import property_adder
 from popupwb.validity.check import add_build_problems

@@ -1,8 +1,8 @@
 """MechanismFeature: base of the pop-up mechanism features (tent, step, v-fold, box fold...).
 
 A mechanism stands on a base patch pair (HostPair) offered by its Host: the card's central fold or
-a pair a box fold offers. Its parameters are properties; the card's scaffold (popupwb.card_scaffold)
-calls the popupcore generator with them, and execute() shows this mechanism's own patches of the
+a pair a box fold offers. Its parameters are properties; the card's scaffold
+(popupwb.model.card_scaffold) calls the popupcore generator with them, and execute() shows this mechanism's own patches of the
 card posed at the card's FoldAngle. A parameter the generator refuses puts only this feature (and
 what is nested on it) in error, with the core's message naming the property, and empties its
 shape: no stale patches on screen. The card shows only its pages, so these are the only faces of
@@ -19,10 +19,10 @@ import contextlib
 import math
 
 
-from popupwb import card_scaffold
 from popupwb.features.no_stale_shape import clears_shape_on_error
 from popupwb.features.one_line_errors import one_line_errors
-from popupwb.profiles import editing, storage
+from popupwb.model import card_scaffold, profile_storage
+from popupwb.profiles import editing
 from popupwb.stateless_proxy import StatelessProxy
 from popupwb.view_provider_by_name import attach_view_provider
 
@@ -118,7 +118,7 @@ class MechanismFeature(StatelessProxy):
                 obj.addProperty("App::PropertyDistance", name, self.GROUP, doc)
                 obj.setEditorMode(name, 1)
                 obj.setPropertyStatus(name, "Output")
-        storage.add_properties(obj)
+        profile_storage.add_properties(obj)
         if "Version" not in have:
             obj.addProperty(
                 "App::PropertyString", "Version", "Base", "Version of this object's properties"
@@ -195,7 +195,7 @@ class MechanismFeature(StatelessProxy):
         if (
             prop in ("Host", "HostPair", "Label")
             or prop in {p.name for p in self.PARAMETERS}
-            or prop in storage.PROPERTIES
+            or prop in profile_storage.PROPERTIES
         ):
             # Every mechanism after this one may move, and the card's verdict is for another design:
             # recompute the card, and through the Card links all its mechanisms.
@@ -221,7 +221,7 @@ class MechanismFeature(StatelessProxy):
         if obj.ProfileSketch is None or not part or obj.Card is None:
             return
         try:
-            if storage.stored(obj).get(part, {}).get("reference") is None:
+            if profile_storage.stored(obj).get(part, {}).get("reference") is None:
                 editing.record_reference(obj, part, card_scaffold.for_card(obj.Card))
         except ValueError:
             pass  # a broken Profiles property: execute() reports it

@@ -1,14 +1,14 @@
 """Profiles of mechanism features: outlines cut into their patches (docs/DESIGN.md, Profiles).
-storage.py what a mechanism stores, cutting.py the profiles cut into the card's scaffold,
-editing.py the maker's edits. `popupwb.profiles.set_profile(...)` and `set_profile_sketch(...)` are
+editing.py the maker's edits; what a mechanism stores (model/profile_storage.py) and the profiles
+cut into the card's scaffold (model/profile_cutting.py) are the model's, below the features. `popupwb.profiles.set_profile(...)` and `set_profile_sketch(...)` are
 the calls the commands echo and macros use."""
 
-from popupwb.profiles.cutting import apply_profiles, fitted_outline, part_size, part_sizes
+from popupwb.model.profile_cutting import apply_profiles, fitted_outline, part_size, part_sizes
 from popupwb.profiles.editing import clear_profile_sketch, outline_area, profile_parts
 from popupwb.profiles.editing import record_reference, set_profile, set_profile_sketch
 from popupwb.profiles.editing import sketches_of
-from popupwb.profiles.storage import DEFLECTION, MODES, PROPERTIES, add_properties, key_of
-from popupwb.profiles.storage import profiles_of, sketch_loops, stored, write_stored
+from popupwb.model.profile_storage import DEFLECTION, MODES, PROPERTIES, add_properties, key_of
+from popupwb.model.profile_storage import profiles_of, sketch_loops, stored, write_stored
 
 __all__ = [
     "apply_profiles",

@@ -3,7 +3,7 @@ Clip or Scale mode) or unlinked, the reference size Scale mode scales from, and 
 be drawn for (the parts of a mechanism, the sketches of a document). The caller recomputes.
 """
 
-from popupwb.profiles.storage import MODES, sketch_loops, stored, write_stored
+from popupwb.model.profile_storage import MODES, sketch_loops, stored, write_stored
 
 
 def record_reference(obj, part, built):
@@ -21,7 +21,7 @@ def record_reference(obj, part, built):
 def set_profile(obj, part, outer, holes=(), reference=None):
     """Stores an outline for `part` of mechanism `obj` (profile frame, mm); the reference size
     defaults to the part's current size. The caller recomputes."""
-    from popupwb import card_scaffold
+    from popupwb.model import card_scaffold
 
     profiles = stored(obj)
     entry = {"outer": [tuple(map(float, q)) for q in outer]}
@@ -43,7 +43,7 @@ def sketches_of(doc):
 def profile_parts(obj):
     """{part: (w, h)} of the principal parts of mechanism `obj` that take a profile, as its card
     builds them now; ValueError naming obj when it does not build (its parts are unknown then)."""
-    from popupwb import card_scaffold
+    from popupwb.model import card_scaffold
 
     built = card_scaffold.for_card(card_scaffold.root_card(obj))
     if obj.Name in built.errors and obj.Name not in built.sizes:

@@ -17,7 +17,7 @@ import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtGui
 
-from popupwb import card_scaffold
+from popupwb.model import card_scaffold
 from popupwb.taskpanels.mechanism_panel import in_error
 
 SPEEDS = (("Slow", 1.5), ("Normal", 3.0), ("Fast", 6.0))  # degrees per frame of PopUp_Animate

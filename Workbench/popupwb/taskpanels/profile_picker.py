@@ -11,7 +11,8 @@ ProfilePanel) owns the undo transaction and the recompute.
 import FreeCAD
 from PySide import QtCore, QtGui
 
-from popupwb.profiles import editing, storage
+from popupwb.model import profile_storage
+from popupwb.profiles import editing
 
 NO_SKETCH = "(none)"
 ERROR_STYLE = "color: #b00000;"
@@ -50,7 +51,7 @@ class ProfilePicker:
 
         self.mode = QtGui.QComboBox()
         self.mode.setObjectName("ProfileMode")
-        self.mode.addItems(storage.MODES)
+        self.mode.addItems(profile_storage.MODES)
         self.mode.setCurrentIndex(max(self.mode.findText(obj.ProfileMode), 0))
         self.mode.setToolTip(
             "After a dimension edit: Clip keeps the outline in mm and clips it to the part, "
@@ -151,7 +152,7 @@ class ProfilePicker:
             self.message.setText("No sketch: the parts keep the outline their mechanism gives.")
             return
         try:
-            outer, holes = storage.sketch_loops(self.obj, sketch)
+            outer, holes = profile_storage.sketch_loops(self.obj, sketch)
         except ValueError as error:  # the sketch was edited since it was picked
             self.message.setStyleSheet(ERROR_STYLE)
             self.message.setText(str(error))

@@ -20,7 +20,8 @@ def run_check(obj, samples=181, clearance=0.0):
     """
     import FreeCAD
 
-    from popupwb import card_scaffold, progress
+    from popupwb import progress
+    from popupwb.model import card_scaffold
 
     try:
         if card_scaffold.is_card(obj):
@@ -68,7 +69,7 @@ def add_build_problems(report, card, built):
     """Adds to a check_validity report dict of `card` (built: card_scaffold.for_card(card)) a
     design_error finding per mechanism that does not build and per stray PopUp feature; any such
     problem makes the card invalid. Its patches were left out of what the core checked."""
-    from popupwb import card_scaffold
+    from popupwb.model import card_scaffold
 
     problems = list(built.errors.values()) + card_scaffold.stray_features(card.Document)
     for message in problems:
@@ -81,7 +82,8 @@ def _check_card(card, samples, clearance):
     """The card's whole scaffold; mechanisms that do not build are findings of their own."""
     import FreeCAD
 
-    from popupwb import card_scaffold, patch_titles, progress
+    from popupwb import patch_titles, progress
+    from popupwb.model import card_scaffold
     from popupwb.core import popupcore
 
     built = card_scaffold.for_card(card)

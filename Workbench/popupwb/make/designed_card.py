@@ -19,7 +19,7 @@ import math
 
 import numpy as np
 
-from popupwb import card_scaffold
+from popupwb.model import card_scaffold
 from popupwb.mechanism_registry import by_core_kind
 
 

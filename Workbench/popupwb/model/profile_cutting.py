@@ -1,9 +1,9 @@
 """Profiles cut into a mechanism's patches: card_scaffold.build applies them right after each
 generator call, so validity, the shown shape and the cutting sheets all use the profiled patches
-(storage.py says what a mechanism stores; Scale mode scales from each part's size as generated).
+(profile_storage.py says what a mechanism stores; Scale mode scales from each part's size as generated).
 """
 
-from popupwb.profiles.storage import profiles_of
+from popupwb.model.profile_storage import profiles_of
 
 
 def part_size(scaffold, patch_id):
