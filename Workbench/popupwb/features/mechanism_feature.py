@@ -207,12 +207,12 @@ class MechanismFeature(StatelessProxy):
     def drop_stale_verdict(card, built):
         """An edited ProfileSketch changes the design through this mechanism, without touching
         the card: its verdict, for the design before, is dropped here as the card would."""
-        from popupwb.validity import verdict
+        from popupwb.model import validity_state
 
         checked = getattr(card, "CheckedDesign", None)
         if checked is not None and checked != built.digest:
-            if getattr(card, "Validity", verdict.NOT_CHECKED) != verdict.NOT_CHECKED:
-                verdict.record_verdict(card, verdict.NOT_CHECKED)
+            if getattr(card, "Validity", validity_state.NOT_CHECKED) != validity_state.NOT_CHECKED:
+                validity_state.record_verdict(card, validity_state.NOT_CHECKED)
 
     def remember_profile_reference(self, obj):
         """The sketch's part without a reference size gets its current one: Scale mode scales

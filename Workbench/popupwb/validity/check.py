@@ -1,12 +1,12 @@
 """The validity check of Scaffold and PopUpCard objects: runs popupcore.check_validity on the
-object's design, records the verdict (verdict.py) and prints the report (report_text.py).
+object's design, records the verdict (model/validity_state.py) and prints the report (report_text.py).
 
 FreeCAD and popupcore are imported when a check runs.
 """
 
 from popupwb.validity.report_text import design_error, format_diagnostic, format_report
 from popupwb.validity.report_text import offending_patches
-from popupwb.validity.verdict import INVALID, VALID, record_verdict
+from popupwb.model.validity_state import INVALID, VALID, record_verdict
 
 
 def run_check(obj, samples=181, clearance=0.0):
