@@ -48,4 +48,5 @@ class PopUpWorkbench(FreeCADGui.Workbench):
 
 
 FreeCADGui.addWorkbench(PopUpWorkbench())
-import popupwb.preferences_page  # noqa: E402,F401 -- adds Edit › Preferences › PopUp
+import popupwb.gui.preferences_page  # noqa: E402,F401 -- adds Edit › Preferences › PopUp
+import popupwb.gui.progress_dialog  # noqa: E402,F401 -- progress.run's dialog with Cancel

@@ -20,7 +20,8 @@ sys.path.append("/usr/lib/freecad-python3/lib")
 
 import FreeCAD  # noqa: E402
 
-from popupwb import card_scaffold, make  # noqa: E402
+from popupwb import make  # noqa: E402
+from popupwb.model import card_scaffold  # noqa: E402
 from popupwb.core import popupcore  # noqa: E402
 
 

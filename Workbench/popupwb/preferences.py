@@ -7,7 +7,7 @@ set, else ~/.config/FreeCAD/user.cfg (FreeCAD 0.20 on Linux). `popup` reads the 
 FreeCAD.ParamGet, headless. A preference that is not set means PopUp's built-in default: the
 core's for the layout options and the paper thickness, layer_style.SheetStyle's for the layers,
 DEFAULTS below for the rest; so no default is written twice, and a newer default reaches a user
-who never changed it. The page (preferences_page.py) removes a value set back to its default.
+who never changed it. The page (gui/preferences_page.py) removes a value set back to its default.
 
 read() needs FreeCAD only to find the file; without FreeCAD it gives the built-in defaults.
 """

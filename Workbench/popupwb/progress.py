@@ -26,6 +26,8 @@ Work that measures its own progress (popupcore.design_motion's MotionProgress) p
                  cancel=progress.CANCEL_FLAG, progress=meter, fraction=lambda: meter.value)
 
 Headless (no GUI, or called off the main thread) run() is a plain call and Steps never cancels.
+The dialog itself is popupwb.gui.progress_dialog's, which FreeCAD's GUI registers here as `dialogs`
+when it loads the workbench (InitGui.py): this module imports neither Qt nor FreeCADGui.
 
 FreeCAD's own FreeCAD.Base.ProgressIndicator (start(text, steps), next(canAbort), stop()) is not
 used: it only advances when the main thread calls next(), which it cannot do while the main
@@ -48,6 +50,10 @@ FRACTION_STEPS = 1000  # the bar's range when it follows a fraction
 # Stands for "a fresh popupcore.CancelFlag that Cancel sets" among a call's keyword arguments.
 CANCEL_FLAG = object()
 
+# The GUI's progress dialogs (popupwb.gui.progress_dialog.ProgressDialogs), registered when the GUI
+# loads the workbench; None headless.
+dialogs = None
+
 
 class Cancelled(Exception):
     """The user pressed Cancel; the message says what was cancelled."""
@@ -65,15 +71,7 @@ def _gui_thread():
     """True in the GUI's main thread, where a dialog can be shown."""
     if threading.current_thread() is not threading.main_thread():
         return False
-    try:
-        import FreeCAD
-
-        if not FreeCAD.GuiUp:
-            return False
-        from PySide import QtGui
-    except ImportError:
-        return False
-    return QtGui.QApplication.instance() is not None
+    return dialogs is not None and dialogs.can_show()
 
 
 class _Worker(threading.Thread):
@@ -113,10 +111,7 @@ class Steps:
 
     def __exit__(self, *exc):
         if self.dialog is not None:
-            # Deleted now: deleteLater would wait for the outermost event loop when this runs
-            # inside a recompute or another wait.
-            self.dialog.hide()
-            self.dialog.setParent(None)
+            dialogs.close(self.dialog)
             self.dialog = None
         return False
 
@@ -160,38 +155,20 @@ class Steps:
     # --- the dialog -------------------------------------------------------------------------
 
     def _poll(self):
-        from PySide import QtCore
-
         if self.dialog is None:
             if (time.monotonic() - self.started) * 1000.0 < SHOW_AFTER_MS:
                 return  # short work: no dialog, and no events (no input reaches the document)
             self._show()
         if self.fraction is not None:
             self.dialog.setValue(self._fraction_value())
-        # The dialog is application modal: only its Cancel button takes input.
-        QtCore.QCoreApplication.processEvents(QtCore.QEventLoop.AllEvents, 50)
+        dialogs.process_events()
         if self.dialog.wasCanceled():
             cancelled.append(self.label)
             raise Cancelled(cancelled_message(self.label))
 
     def _show(self):
-        import FreeCADGui
-        from PySide import QtCore, QtGui
-
-        window = FreeCADGui.getMainWindow()
-        dialog = QtGui.QProgressDialog(self.label, "Cancel", 0, self.count, window)
-        dialog.setObjectName(DIALOG_NAME)
-        dialog.setWindowTitle("PopUp")
-        dialog.setWindowModality(QtCore.Qt.ApplicationModal)
-        dialog.setAutoClose(False)
-        dialog.setAutoReset(False)
-        dialog.setMinimumDuration(0)
-        dialog.setMinimumWidth(360)
-        dialog.setValue(
-            self._fraction_value() if self.fraction is not None else min(self.done, self.count)
-        )
-        dialog.show()
-        self.dialog = dialog
+        value = self._fraction_value() if self.fraction is not None else min(self.done, self.count)
+        self.dialog = dialogs.show(self.label, self.count, value)
         shown.append(self.label)
 
     def _fraction_value(self):

@@ -83,7 +83,8 @@ def click_cancel_later(ms, out):
 
 
 def run():
-    from popupwb import card_scaffold, progress
+    from popupwb import progress
+    from popupwb.model import card_scaffold
     from popupwb.commands import animate
     from popupwb.features.cutting_sheet import is_cutting_sheet
     from popupwb.taskpanels import card_panel, mechanism_panel
@@ -118,7 +119,7 @@ def run():
     # The slider: FoldAngle and the shape follow. The pages open symmetrically: at 90° each leans
     # 45°, so the card is Depth * cos 45° high; flat open (180°) only the box stands up, Height
     # high.
-    from popupwb.card_scaffold import assembled_shape
+    from popupwb.model.card_scaffold import assembled_shape
 
     result["z_at_180"] = assembled_shape(card).BoundBox.ZLength
     start = time.perf_counter()

@@ -121,14 +121,14 @@ def overlay_nodes():
 
 
 def spans(card):
-    from popupwb import card_scaffold
+    from popupwb.model import card_scaffold
 
     built = card_scaffold.for_card(card)
     return {name: [p.sweep_from, p.sweep_to, p.host] for name, p in built.parts.items()}
 
 
 def run():
-    from popupwb import card_scaffold
+    from popupwb.model import card_scaffold
     from popupwb.commands import GROUPS
     from popupwb.taskpanels import mechanism_panel
 

@@ -62,7 +62,8 @@ def frame_box(scaffold, patch):
 
 
 def run():
-    from popupwb import card_scaffold, profiles
+    from popupwb import profiles
+    from popupwb.model import card_scaffold
     from popupwb.commands import create_cutting_sheet, from_model
     from popupwb.features.cutting_sheet import export_cutting_sheet
     from popupwb.taskpanels import profile_panel

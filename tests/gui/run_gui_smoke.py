@@ -60,7 +60,7 @@ BODY = r"""
 
 def mechanisms():
     # The card commands, the task panel, the validity check and the animation.
-    from popupwb import card_scaffold
+    from popupwb.model import card_scaffold
     from popupwb.commands import animate, check_validity
     from popupwb.taskpanels import mechanism_panel
     from popupwb.viewproviders.patch_colours import OFFENDING
@@ -273,7 +273,7 @@ def macro_replay():
     out["lines"] = echoed
 
     def summary(document):
-        from popupwb import card_scaffold
+        from popupwb.model import card_scaffold
 
         objects = [o for o in document.Objects if hasattr(o, "Proxy") and o.Proxy is not None]
         return {

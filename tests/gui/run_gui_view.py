@@ -121,7 +121,7 @@ def view_of(doc):
 
 
 def open_headless_files():
-    from popupwb import card_scaffold
+    from popupwb.model import card_scaffold
     from popupwb.sheets.techdraw_pages import page_objects, pages_of
 
     for key in ("demo", "script"):
@@ -155,7 +155,8 @@ def open_headless_files():
 
 
 def one_object_per_thing():
-    from popupwb import card_scaffold, make
+    from popupwb import make
+    from popupwb.model import card_scaffold
 
     doc = FreeCAD.newDocument("Once")
     card = make.make_card(doc, width=240.0, depth=140.0, name="Card")

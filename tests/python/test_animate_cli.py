@@ -267,7 +267,7 @@ def test_sheets_that_cannot_be_laid_out_are_reported_not_a_crash(tmp_path, user_
     import types
 
     from popupwb import cli
-    from popupwb import cli_design_steps as steps
+    from popupwb.cli import design_steps as steps
     from popupwb.core import popupcore
     from popupwb.fitting.fit_run import Stages
 
@@ -278,7 +278,7 @@ def test_sheets_that_cannot_be_laid_out_are_reported_not_a_crash(tmp_path, user_
     said, report = [], {"valid": True}
     files = {"design": design}
     args = types.SimpleNamespace(out=str(tmp_path / "out"))
-    status = steps.write_sheets(args, cli, "A4", report, files, Stages(), said.append)
+    status = steps.write_sheets(args, "A4", report, files, Stages(), said.append)
     assert status == cli.EXIT_INVALID
     assert "does not fit the printable area 190.0 x 277.0 mm of A4" in report["sheets_error"]
     assert any("no cutting sheets" in line for line in said)

@@ -61,7 +61,7 @@ def test_sheets_of_truck_and_l_building_have_no_errors(name, model_files, tmp_pa
 
 def _rebuild_all(freecad, path, alignment, min_part_mm):
     """[(model, seed, error)] for every fitted design of `path` that FreeCAD cannot rebuild."""
-    from popupwb import card_scaffold
+    from popupwb.model import card_scaffold
     from popupwb.fitting import fit_run
     from popupwb.fitting.design_from_fit import build_design
 

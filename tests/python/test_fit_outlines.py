@@ -76,7 +76,8 @@ def test_the_box_sides_take_the_wheel_arches(truck_fit):
 
 def test_the_design_carries_the_profiles_and_rebuilds_them(truck_fit, freecad):
     out, _, report = truck_fit
-    from popupwb import card_scaffold, profiles
+    from popupwb import profiles
+    from popupwb.model import card_scaffold
 
     doc = freecad.openDocument(os.path.join(str(out), "design.FCStd"))
     try:

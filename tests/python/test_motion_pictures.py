@@ -19,7 +19,7 @@ BONE_MM = 60.0
 
 @pytest.fixture
 def scaffold(doc):
-    from popupwb import card_scaffold
+    from popupwb.model import card_scaffold
     from popupwb.core import popupcore
     from popupwb.motion.design_from_motion import build_design
 

@@ -13,7 +13,7 @@ SCRIPT = r"""
 import json, os, sys
 import FreeCAD
 import popupwb.make as make
-from popupwb import card_scaffold
+from popupwb.model import card_scaffold
 
 def state(obj):
     return {"state": list(obj.State), "status": obj.getStatusString()}

@@ -39,7 +39,7 @@ def _overlapping_card(doc):
 
 
 def _ids_by_name(card):
-    from popupwb import card_scaffold
+    from popupwb.model import card_scaffold
 
     return {p.name: p.id for p in card_scaffold.for_card(card).scaffold.patches}
 
@@ -91,7 +91,8 @@ def test_popup_check_prints_the_maker_names(tmp_path, user_home):
 @pytest.mark.parametrize("index", range(9))
 def test_every_part_the_core_builds_has_a_title(doc, index):
     """Drift guard: a part code the core adds without a title here would show as a bare code."""
-    from popupwb import card_scaffold, mechanism_registry, make, patch_titles
+    from popupwb import mechanism_registry, make, patch_titles
+    from popupwb.model import card_scaffold
 
     mechanism = mechanism_registry.MECHANISMS[index]
     card = make.make_card(doc, preset="A4")

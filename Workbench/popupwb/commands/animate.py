@@ -9,7 +9,7 @@ import FreeCAD
 import FreeCADGui
 
 import popupwb
-from popupwb import card_scaffold
+from popupwb.model import card_scaffold
 from popupwb.commands.selection import SelectionError, selected_card
 
 COMMAND_ID = "PopUp_Animate"

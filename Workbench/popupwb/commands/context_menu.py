@@ -5,7 +5,7 @@ is added."""
 import FreeCAD
 import FreeCADGui
 
-from popupwb import card_scaffold
+from popupwb.model import card_scaffold
 from popupwb import commands as c
 
 

@@ -5,7 +5,8 @@ import FreeCAD
 import FreeCADGui
 
 import popupwb
-from popupwb import card_scaffold, preferences
+from popupwb import preferences
+from popupwb.model import card_scaffold
 from popupwb.commands.echoed_python import run_echoed
 
 COMMAND_ID = "PopUp_Card"

@@ -5,7 +5,8 @@ import FreeCAD
 import FreeCADGui
 
 import popupwb
-from popupwb import card_scaffold, preferences, progress
+from popupwb import preferences, progress
+from popupwb.model import card_scaffold
 from popupwb.features.cutting_sheet import has_layout, is_cutting_sheet
 from popupwb.commands.echoed_python import object_expression, run_echoed
 from popupwb.commands.select_at_fault import select_at_fault

@@ -5,7 +5,7 @@ document's only card."""
 import FreeCAD
 import FreeCADGui
 
-from popupwb import card_scaffold
+from popupwb.model import card_scaffold
 from popupwb.commands.echoed_python import object_expression, run_echoed
 from popupwb.commands.selection import SelectionError, selected_host
 from popupwb.mechanism_registry import COMMAND_IDS, by_command

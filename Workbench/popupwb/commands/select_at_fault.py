@@ -11,8 +11,8 @@ and happens only on failure.
 import FreeCAD
 import FreeCADGui
 
-from popupwb import card_scaffold
-from popupwb.validity import offending_patches
+from popupwb.model import card_scaffold
+from popupwb.validity.report_text import offending_patches
 
 
 def at_fault(sheet):

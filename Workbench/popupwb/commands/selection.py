@@ -4,7 +4,7 @@ message saying what to select when nothing fits. Every command that reads the se
 
 import FreeCADGui
 
-from popupwb import card_scaffold
+from popupwb.model import card_scaffold
 from popupwb.features.cutting_sheet import is_cutting_sheet
 from popupwb.features.scaffold_feature import is_scaffold
 

@@ -9,7 +9,8 @@ import FreeCAD
 import FreeCADGui
 
 import popupwb
-from popupwb import card_scaffold, profiles
+from popupwb.model import card_scaffold
+from popupwb.profiles import editing
 from popupwb.commands.selection import SelectionError, selected_objects
 
 COMMAND_ID = "PopUp_SetProfile"
@@ -43,9 +44,9 @@ def selected_mechanism_and_sketch(doc):
     mechanisms = [o for o in selected if card_scaffold.is_mechanism(o)]
     if not mechanisms:
         raise SelectionError("select a mechanism and the Sketcher sketch of its profile")
-    sketches = [o for o in selected if o in profiles.sketches_of(doc)]
+    sketches = [o for o in selected if o in editing.sketches_of(doc)]
     if not sketches:
-        sketches = profiles.sketches_of(doc)
+        sketches = editing.sketches_of(doc)
         if len(sketches) != 1:
             sketches = []  # none or several: the panel's Sketch box asks
     return mechanisms[0], (sketches[0] if sketches else None)

@@ -10,11 +10,11 @@ import time
 
 import FreeCAD
 
-from popupwb import card_scaffold, validity
 from popupwb.features.no_stale_shape import clears_shape_on_error
 from popupwb.features.one_line_errors import one_line_errors
 from popupwb.features.property_adder import add_validity_outputs, property_adder
 from popupwb.features.signed_lengths import SIGNED, make_signed
+from popupwb.model import card_scaffold, validity_state
 from popupwb.stateless_proxy import StatelessProxy
 from popupwb.view_provider_by_name import attach_view_provider
 
@@ -91,8 +91,8 @@ class PopUpCard(StatelessProxy):
                 mode=1,
                 output=True,
             )
-            obj.Validity = validity.VALIDITY_STATES
-            obj.Validity = validity.verdict_of_old_file(obj)
+            obj.Validity = validity_state.VALIDITY_STATES
+            obj.Validity = validity_state.verdict_of_old_file(obj)
         add(
             "App::PropertyString",
             "CheckedDesign",
@@ -142,9 +142,9 @@ class PopUpCard(StatelessProxy):
         built = card_scaffold.for_card(obj)
         if built.card_error:
             raise ValueError(built.card_error)
-        if obj.CheckedDesign != built.digest and obj.Validity != validity.NOT_CHECKED:
+        if obj.CheckedDesign != built.digest and obj.Validity != validity_state.NOT_CHECKED:
             # The verdict belongs to another design.
-            validity.record_verdict(obj, validity.NOT_CHECKED)
+            validity_state.record_verdict(obj, validity_state.NOT_CHECKED)
         try:
             # Its pages only: each mechanism shows its own patches.
             shape = built.own_shape(obj.Name, angle, thickness)

@@ -27,9 +27,11 @@ import json
 
 import FreeCAD
 
-from popupwb import card_scaffold, progress, validity
+from popupwb import progress
+from popupwb.model import card_scaffold
 from popupwb.features.one_line_errors import one_line_errors
 from popupwb.features.property_adder import property_adder
+from popupwb.validity.check import add_build_problems
 from popupwb.sheets.sheet_options import SHEET_OPTIONS, defaults, sides_text
 from popupwb.stateless_proxy import StatelessProxy
 from popupwb.view_provider_by_name import attach_view_provider
@@ -249,7 +251,7 @@ class CuttingSheet(StatelessProxy):
             raise self._error(obj, f"the validity check cannot run: {error}") from error
         # A mechanism that does not build (a damaged file's Host loop, say) is left out of the
         # scaffold: the card is not valid, however well the rest folds.
-        validity.add_build_problems(report, obj.Card, built)
+        add_build_problems(report, obj.Card, built)
         not_valid = not_valid_of(add_titles(report, titles_of_card(obj.Card, built)))
         if not_valid is not None and not obj.Force:
             # The first finding, unless it is already the reason (all verdicts passed).
@@ -373,7 +375,7 @@ def property_message(error, obj):
 
 def diagnostic_line(diagnostic):
     """A sheet set diagnostic as one line: "warning: code: message"."""
-    from popupwb.validity import format_diagnostic
+    from popupwb.validity.report_text import format_diagnostic
 
     return f"{diagnostic['severity']}: {format_diagnostic(diagnostic)}"
 

@@ -1,8 +1,8 @@
 """MechanismFeature: base of the pop-up mechanism features (tent, step, v-fold, box fold...).
 
 A mechanism stands on a base patch pair (HostPair) offered by its Host: the card's central fold or
-a pair a box fold offers. Its parameters are properties; the card's scaffold (popupwb.card_scaffold)
-calls the popupcore generator with them, and execute() shows this mechanism's own patches of the
+a pair a box fold offers. Its parameters are properties; the card's scaffold
+(popupwb.model.card_scaffold) calls the popupcore generator with them, and execute() shows this mechanism's own patches of the
 card posed at the card's FoldAngle. A parameter the generator refuses puts only this feature (and
 what is nested on it) in error, with the core's message naming the property, and empties its
 shape: no stale patches on screen. The card shows only its pages, so these are the only faces of
@@ -19,9 +19,10 @@ import contextlib
 import math
 
 
-from popupwb import card_scaffold, profiles
 from popupwb.features.no_stale_shape import clears_shape_on_error
 from popupwb.features.one_line_errors import one_line_errors
+from popupwb.model import card_scaffold, profile_storage
+from popupwb.profiles import editing
 from popupwb.stateless_proxy import StatelessProxy
 from popupwb.view_provider_by_name import attach_view_provider
 
@@ -117,7 +118,7 @@ class MechanismFeature(StatelessProxy):
                 obj.addProperty("App::PropertyDistance", name, self.GROUP, doc)
                 obj.setEditorMode(name, 1)
                 obj.setPropertyStatus(name, "Output")
-        profiles.add_properties(obj)
+        profile_storage.add_properties(obj)
         if "Version" not in have:
             obj.addProperty(
                 "App::PropertyString", "Version", "Base", "Version of this object's properties"
@@ -194,7 +195,7 @@ class MechanismFeature(StatelessProxy):
         if (
             prop in ("Host", "HostPair", "Label")
             or prop in {p.name for p in self.PARAMETERS}
-            or prop in profiles.PROPERTIES
+            or prop in profile_storage.PROPERTIES
         ):
             # Every mechanism after this one may move, and the card's verdict is for another design:
             # recompute the card, and through the Card links all its mechanisms.
@@ -206,12 +207,12 @@ class MechanismFeature(StatelessProxy):
     def drop_stale_verdict(card, built):
         """An edited ProfileSketch changes the design through this mechanism, without touching
         the card: its verdict, for the design before, is dropped here as the card would."""
-        from popupwb import validity
+        from popupwb.model import validity_state
 
         checked = getattr(card, "CheckedDesign", None)
         if checked is not None and checked != built.digest:
-            if getattr(card, "Validity", validity.NOT_CHECKED) != validity.NOT_CHECKED:
-                validity.record_verdict(card, validity.NOT_CHECKED)
+            if getattr(card, "Validity", validity_state.NOT_CHECKED) != validity_state.NOT_CHECKED:
+                validity_state.record_verdict(card, validity_state.NOT_CHECKED)
 
     def remember_profile_reference(self, obj):
         """The sketch's part without a reference size gets its current one: Scale mode scales
@@ -220,8 +221,8 @@ class MechanismFeature(StatelessProxy):
         if obj.ProfileSketch is None or not part or obj.Card is None:
             return
         try:
-            if profiles.stored(obj).get(part, {}).get("reference") is None:
-                profiles.record_reference(obj, part, card_scaffold.for_card(obj.Card))
+            if profile_storage.stored(obj).get(part, {}).get("reference") is None:
+                editing.record_reference(obj, part, card_scaffold.for_card(obj.Card))
         except ValueError:
             pass  # a broken Profiles property: execute() reports it
 

@@ -1,5 +1,5 @@
 """A popupcore.FitResult as FreeCAD features: the card and its mechanism features as
-popupwb.designed_card builds them (shared with the motion designs), and the source model on the
+popupwb.make.designed_card builds them (shared with the motion designs), and the source model on the
 card (a Mesh feature in the card's frame, the file it came from and the matrix that put it there).
 """
 
@@ -7,7 +7,7 @@ import collections
 
 import numpy as np
 
-from popupwb.designed_card import add_property, build_card, freecad_matrix, property_values
+from popupwb.make.designed_card import add_property, build_card, freecad_matrix, property_values
 
 # The card carries the link to the model it was fitted to, and the matrix that put it there.
 SOURCE_GROUP = "Source model"

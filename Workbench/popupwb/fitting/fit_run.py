@@ -1,5 +1,6 @@
-"""The stages of a design from a model, in order and timed, shared by `popup fit` (cli.py) and the
-PopUp_FromModel command: read, clean, fit (popupcore), build the card's features, check, measure.
+"""The stages of a design from a model, in order and timed, shared by `popup fit` (cli/fit.py) and
+the PopUp_FromModel command: read, clean, fit (popupcore), build the card's features, check,
+measure.
 
 Each stage is one function; Stages records (stage, seconds) and says what it starts through a
 `say(text)` callable (stderr for the CLI, the report view in the GUI). Bad input is ValueError

@@ -30,7 +30,7 @@ def is_shape_object(obj):
 
 
 def _is_popup_object(obj):
-    from popupwb import card_scaffold
+    from popupwb.model import card_scaffold
 
     return card_scaffold.is_card(obj) or card_scaffold.is_mechanism(obj)
 

@@ -2,7 +2,7 @@
 
 import FreeCAD
 
-from popupwb import card_scaffold
+from popupwb.model import card_scaffold
 from popupwb.features.cutting_sheet import CUSTOM, OPTIONS, PAPERS, CuttingSheet
 from popupwb.sheets.sheet_options import defaults, option_named, parse_sides, sides_text
 from popupwb.view_provider_by_name import view_provider_class

@@ -5,12 +5,12 @@ Keyword parameters are the popupcore field names (foot, run_ground, hinge_angle.
 names (Foot, RunGround, HingeAngle...); lengths in mm, angles in degrees as in FreeCAD. Parameters
 left out start fitted to the host pair (its hinge length and depths), or at the property defaults
 when the host does not build; without an Offset, a mechanism joining others on the pair is placed
-in its largest free span (popupwb.placement), with a warning when there is none.
+in its largest free span (popupwb.model.placement), with a warning when there is none.
 """
 
 import FreeCAD
 
-from popupwb import card_scaffold, placement
+from popupwb.model import card_scaffold, placement
 from popupwb.mechanism_registry import MECHANISMS
 from popupwb.view_provider_by_name import view_provider_class
 

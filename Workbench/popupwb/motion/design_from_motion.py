@@ -1,5 +1,5 @@
 """A popupcore.MotionResult as FreeCAD features: the card and its motion-mechanism features as
-popupwb.designed_card builds them (shared with the shape designs of popup fit), each mechanism
+popupwb.make.designed_card builds them (shared with the shape designs of popup fit), each mechanism
 marked with the chain it moves, and the card linked to its animation: the file's path, the frame
 range and the matrix from the file's units to the card, and, for a skinned character, a Mesh
 feature of the character posed at the last frame (the open card's pose, thesis §6.4) in the
@@ -14,7 +14,7 @@ import os
 
 import numpy as np
 
-from popupwb.designed_card import add_property, build_card, freecad_matrix
+from popupwb.make.designed_card import add_property, build_card, freecad_matrix
 
 ANIMATION_GROUP = "Source animation"
 CHAIN_GROUP = "Motion"

@@ -1,4 +1,4 @@
-"""The stages of an animated pop-up, shared by `popup animate` (cli_animate.py) and the
+"""The stages of an animated pop-up, shared by `popup animate` (cli/animate.py) and the
 PopUp_FromAnimation command: read the animation, set the options, design (popupcore.design_motion,
 with progress and Cancel), then the FreeCAD card, its check, the plot and the movie.
 

@@ -30,19 +30,17 @@ import contextlib
 import logging
 import math
 import os
-from dataclasses import dataclass, field
-from typing import List, Optional, Tuple
+from dataclasses import dataclass
+from typing import List
 
 import ezdxf
 from ezdxf.math import Vec3
 
 from popupwb.readable_file import unreadable
 
+from .drawn_sheet import Drawing, DrawnFoldLine, DrawnLabel, DxfReadError, Point
 from .dxf_writer import KERF_PROPERTY
 from .layer_style import SheetStyle
-
-Point = Tuple[float, float]
-Loop = List[Point]
 
 CHAIN_TOLERANCE = 1e-6  # mm: two CUT line ends this close are one point
 FLATTEN_TOLERANCE = 1e-3  # mm: largest distance between an arc or curve and its chords
@@ -55,46 +53,6 @@ UNITS_TO_MM = {0: 1.0, 1: 25.4, 2: 304.8, 4: 1.0, 5: 10.0, 6: 1000.0, 8: 25.4e-6
 
 _CUT_TYPES = ("LINE", "ARC", "CIRCLE", "ELLIPSE", "SPLINE", "LWPOLYLINE", "POLYLINE")
 _IGNORED_TYPES = ("HATCH", "SOLID", "POINT", "DIMENSION", "MPOLYGON", "WIPEOUT", "IMAGE")
-
-
-class DxfReadError(ValueError):
-    """A DXF that cannot be read as a cutting file; the message is one line naming the file,
-    the layer and the entity."""
-
-
-@dataclass
-class DrawnFoldLine:
-    start: Point
-    end: Point
-    direction: str  # "mountain" or "valley": its layer
-
-
-@dataclass
-class DrawnLabel:
-    text: str
-    position: Point  # the centre of the text's cap height
-
-
-@dataclass
-class Drawing:
-    """What one cutting file holds, in mm: the fields of popupcore.SheetDrawing."""
-
-    name: str
-    kerf: float
-    cut: List[Loop] = field(default_factory=list)
-    folds: List[DrawnFoldLine] = field(default_factory=list)
-    glue: List[Loop] = field(default_factory=list)
-    labels: List[DrawnLabel] = field(default_factory=list)
-
-    def to_sheet_drawing(self, popupcore):
-        drawing = popupcore.SheetDrawing()
-        drawing.name = self.name
-        drawing.kerf = self.kerf
-        drawing.cut = self.cut
-        drawing.folds = [popupcore.DrawnFold(f.start, f.end, f.direction) for f in self.folds]
-        drawing.glue = self.glue
-        drawing.labels = [popupcore.DrawnText(t.text, t.position) for t in self.labels]
-        return drawing
 
 
 def sheets_path(path):

@@ -38,7 +38,7 @@ class NotValid:
 
 def not_valid_of(report):
     """NotValid for a validity report dict (ValidityReport.to_dict()), None when it is valid."""
-    from popupwb.validity import format_diagnostic  # FreeCAD-free part of validity.py
+    from popupwb.validity.report_text import format_diagnostic  # FreeCAD-free
 
     if report.get("valid"):
         return None

@@ -17,7 +17,7 @@ import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtGui
 
-from popupwb import card_scaffold
+from popupwb.model import card_scaffold
 from popupwb.taskpanels.mechanism_panel import in_error
 
 SPEEDS = (("Slow", 1.5), ("Normal", 3.0), ("Fast", 6.0))  # degrees per frame of PopUp_Animate
@@ -219,10 +219,11 @@ class CardPanel:
     def check(self):
         """Runs the validity check and lists its findings; returns the report (None when the user
         cancelled it)."""
-        from popupwb import validity
+        from popupwb.validity.check import run_check
+        from popupwb.validity.report_text import format_diagnostic, format_report
 
         self.stop_play()
-        report = validity.run_check(self.card)
+        report = run_check(self.card)
         if report is None:
             self.verdict.setText("Check cancelled: the last verdict stands")
             return None
@@ -231,13 +232,13 @@ class CardPanel:
         self.findings_list.blockSignals(True)
         self.findings_list.clear()
         for diagnostic, targets in self.findings:
-            item = QtGui.QListWidgetItem(validity.format_diagnostic(diagnostic))
+            item = QtGui.QListWidgetItem(format_diagnostic(diagnostic))
             if not targets:
                 item.setToolTip("Nothing to select: the finding is about the whole card")
             self.findings_list.addItem(item)
         self.findings_list.setCurrentRow(-1)
         self.findings_list.blockSignals(False)
-        summary = validity.format_report(report).splitlines()[0]
+        summary = format_report(report).splitlines()[0]
         count = len(report["diagnostics"])
         self.verdict.setText(f"{summary} ({count} finding{'' if count == 1 else 's'})")
         self.verdict.setStyleSheet("color: #206020;" if report["valid"] else "color: #b00000;")

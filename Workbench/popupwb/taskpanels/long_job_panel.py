@@ -122,7 +122,7 @@ class LongJobPanel:
     def _build_card(self, name, build):
         """OK's build: build() in one undo step named after `name`, the card checked, the panel
         closed and the card selected. False keeps the panel open (the status line says why)."""
-        from popupwb import validity
+        from popupwb.validity.check import run_check
 
         self.doc.openTransaction(f"Pop-up from {name}")
         try:
@@ -132,7 +132,7 @@ class LongJobPanel:
             self._say(f"{name}: {error}", error=True)
             return False
         self.doc.commitTransaction()
-        validity.run_check(self.design.card)
+        run_check(self.design.card)
         self._close()
         FreeCADGui.Selection.clearSelection()
         FreeCADGui.Selection.addSelection(self.design.card)

@@ -13,7 +13,7 @@ import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtGui
 
-from popupwb import placement
+from popupwb.model import placement
 from popupwb.taskpanels.span_overlay import SpanOverlay
 
 LIMIT = 1.0e5  # mm or degrees: wide enough for any card, the core judges the real range

@@ -3,7 +3,7 @@ mechanism as its profile (docs/DESIGN.md, Profiles): a Sketch combo (the documen
 none), a Part combo (the parts the mechanism has now: riser, tread, TG, FL...) and a Mode combo
 (Clip or Scale), with a line under them saying what the outline covers or why it is refused.
 
-The picker only changes properties, through profiles.set_profile_sketch, which refuses a sketch
+The picker only changes properties, through editing.set_profile_sketch, which refuses a sketch
 without a closed outline in one line naming it; the panel that holds it (MechanismPanel,
 ProfilePanel) owns the undo transaction and the recompute.
 """
@@ -11,7 +11,8 @@ ProfilePanel) owns the undo transaction and the recompute.
 import FreeCAD
 from PySide import QtCore, QtGui
 
-from popupwb import profiles
+from popupwb.model import profile_storage
+from popupwb.profiles import editing
 
 NO_SKETCH = "(none)"
 ERROR_STYLE = "color: #b00000;"
@@ -37,7 +38,7 @@ class ProfilePicker:
             "base fold from the fold's middle, its y away from the fold (mm)"
         )
         self.sketch.addItem(NO_SKETCH, "")
-        for candidate in profiles.sketches_of(obj.Document):
+        for candidate in editing.sketches_of(obj.Document):
             self.sketch.addItem(candidate.Label, candidate.Name)
         chosen = sketch or getattr(obj, "ProfileSketch", None)
         if chosen is not None:
@@ -50,7 +51,7 @@ class ProfilePicker:
 
         self.mode = QtGui.QComboBox()
         self.mode.setObjectName("ProfileMode")
-        self.mode.addItems(profiles.MODES)
+        self.mode.addItems(profile_storage.MODES)
         self.mode.setCurrentIndex(max(self.mode.findText(obj.ProfileMode), 0))
         self.mode.setToolTip(
             "After a dimension edit: Clip keeps the outline in mm and clips it to the part, "
@@ -80,7 +81,7 @@ class ProfilePicker:
     def refresh_parts(self):
         """Fills the Part combo with the mechanism's parts now (they follow its parameters)."""
         try:
-            sizes = profiles.profile_parts(self.obj)
+            sizes = editing.profile_parts(self.obj)
         except ValueError:
             sizes = {}
         current = self.part.currentText() or getattr(self.obj, "ProfilePart", "")
@@ -127,9 +128,9 @@ class ProfilePicker:
         try:
             if sketch is None:
                 if getattr(self.obj, "ProfileSketch", None) is not None:
-                    profiles.clear_profile_sketch(self.obj)
+                    editing.clear_profile_sketch(self.obj)
             else:
-                profiles.set_profile_sketch(
+                editing.set_profile_sketch(
                     self.obj, sketch, self.part.currentText(), self.mode.currentText()
                 )
         except ValueError as error:
@@ -151,7 +152,7 @@ class ProfilePicker:
             self.message.setText("No sketch: the parts keep the outline their mechanism gives.")
             return
         try:
-            outer, holes = profiles.sketch_loops(self.obj, sketch)
+            outer, holes = profile_storage.sketch_loops(self.obj, sketch)
         except ValueError as error:  # the sketch was edited since it was picked
             self.message.setStyleSheet(ERROR_STYLE)
             self.message.setText(str(error))
@@ -159,7 +160,7 @@ class ProfilePicker:
         self.message.setStyleSheet(OK_STYLE)
         self.message.setText(
             f"{sketch.Label} on {self.obj.ProfilePart} ({self.obj.ProfileMode}): outline "
-            f"{profiles.outline_area(outer, holes):.1f} mm², {len(holes)} hole(s)"
+            f"{editing.outline_area(outer, holes):.1f} mm², {len(holes)} hole(s)"
         )
 
     def text(self):

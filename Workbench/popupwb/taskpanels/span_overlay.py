@@ -1,5 +1,5 @@
 """SpanOverlay: the spans a mechanism and its siblings occupy along their host pair's hinge
-(popupwb.placement), drawn in the 3D view while the mechanism's task panel is open.
+(popupwb.model.placement), drawn in the 3D view while the mechanism's task panel is open.
 
 Each span is a bracket on the hinge, posed with the host pair's ground patch at the card's
 FoldAngle and moved with the card's Placement, labelled with its mechanism and range: orange for
@@ -10,7 +10,7 @@ over the paper. The panel adds it, refreshes it after each change and removes it
 import FreeCAD
 from pivy import coin
 
-from popupwb import card_scaffold, placement
+from popupwb.model import card_scaffold, placement
 from popupwb.taskpanels import scene_overlay
 
 NODE_NAME = "PopUpSpanOverlay"  # scripts and the GUI test find the overlay by this name

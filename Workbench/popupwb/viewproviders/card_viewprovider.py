@@ -8,7 +8,7 @@ from popupwb.viewproviders.restored_visibility import show_by_role
 
 def hosted_on(obj):
     """The mechanisms whose Host is `obj`, in document order."""
-    from popupwb import card_scaffold
+    from popupwb.model import card_scaffold
 
     try:
         objects = obj.Document.Objects

@@ -36,7 +36,7 @@ def highlighted(card, digest):
 def _shown_patches(obj):
     """(patches of the design, ids of the ones `obj` shows in shape order, ids marked red), or None
     when `obj` shows no design (the feature itself reports why)."""
-    from popupwb import card_scaffold
+    from popupwb.model import card_scaffold
     from popupwb.features.scaffold_feature import is_scaffold, scaffold_of
 
     if is_scaffold(obj):
@@ -102,7 +102,7 @@ def colour_after_shape_change(obj):
 
 def colour_card_and_mechanisms(card):
     """Recolours a card and every mechanism of it (after a validity check)."""
-    from popupwb import card_scaffold
+    from popupwb.model import card_scaffold
 
     for obj in [card] + card_scaffold.mechanisms_of(card):
         colour_object(obj)

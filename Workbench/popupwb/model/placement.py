@@ -12,7 +12,7 @@ spans on different pairs never conflict by this rule. Headless.
 import collections
 import dataclasses
 
-from popupwb import card_scaffold
+from popupwb.model import card_scaffold
 
 # A span in mm along a host pair's hinge; `label` names the mechanism that sweeps it.
 Span = collections.namedtuple("Span", "label start end")

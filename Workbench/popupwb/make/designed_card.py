@@ -19,7 +19,7 @@ import math
 
 import numpy as np
 
-from popupwb import card_scaffold
+from popupwb.model import card_scaffold
 from popupwb.mechanism_registry import by_core_kind
 
 
@@ -75,7 +75,7 @@ def host_of(fitted, card, made):
 def store_profiles(profiles, made):
     """Each outline the core fitted (FittedProfile) goes on its feature, so the card rebuilds the
     same profiled patches (validity and sheets use them)."""
-    from popupwb.profiles import set_profile
+    from popupwb.profiles.editing import set_profile
 
     for fitted in profiles:
         obj = made.get(fitted.mechanism)

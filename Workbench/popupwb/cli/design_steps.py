@@ -1,16 +1,25 @@
-"""The steps `popup fit` (cli_fit.py) and `popup animate` (cli_animate.py) share: their common
+"""The steps `popup fit` (fit.py) and `popup animate` (animate.py) share: their common
 flags (--out, --seed, --paper), progress lines on stderr, the checks of the flags and the input
 before any work, the design document built and checked, the report on a run that found no design,
 the cutting sheets written through `popup sheet` itself, and the exit code: 0 a valid design with
-usable sheets, 1 no valid design, 2 unusable input (cli.InputError).
-
-`cli` is the popupwb.cli module that parsed the arguments, handed in so that `python -m
-popupwb.cli` does not load a second copy of it.
+usable sheets, 1 no valid design, 2 unusable input (InputError).
 """
 
 import contextlib
 import os
 import sys
+
+from popupwb.cli import sheet
+from popupwb.cli.common import (
+    EXIT_INVALID,
+    EXIT_VALID,
+    InputError,
+    import_freecad,
+    one_line,
+    read_preferences,
+    stdout_to_stderr,
+)
+from popupwb.readable_file import unreadable
 
 DESIGN_FILE = "design.FCStd"
 REPORT_FILE = "report.json"
@@ -52,12 +61,12 @@ class Say:
 # --- checks before any work -----------------------------------------------------------------
 
 
-def check_seed(args, cli):
+def check_seed(args):
     if args.seed < 0:
-        raise cli.InputError(f"--seed {args.seed}: must be >= 0")
+        raise InputError(f"--seed {args.seed}: must be >= 0")
 
 
-def directions(args, cli, direction, flags):
+def directions(args, direction, flags):
     """The X,Y,Z text of each flag (an attribute of `args`, None when not given) as a direction,
     in the order of `flags`; InputError naming the flag when one is not a direction."""
     try:
@@ -66,25 +75,25 @@ def directions(args, cli, direction, flags):
             for name in flags
         ]
     except ValueError as e:
-        raise cli.InputError(str(e))
+        raise InputError(str(e))
 
 
-def paper_and_card_size(args, cli, card_size_for_paper):
+def paper_and_card_size(args, card_size_for_paper):
     """The paper (--paper, else the preference, else DEFAULT_PAPER) and the largest card on it."""
-    paper = args.paper or cli._preferences().sheet_paper or DEFAULT_PAPER
+    paper = args.paper or read_preferences().sheet_paper or DEFAULT_PAPER
     try:
         return paper, card_size_for_paper(paper)
     except ValueError as e:
-        raise cli.InputError(f"--paper {paper}: {cli._one_line(e)}")
+        raise InputError(f"--paper {paper}: {one_line(e)}")
 
 
 @contextlib.contextmanager
-def core_range_checks(cli):
+def core_range_checks():
     """The core's own range checks of the flags' values, as InputError."""
     try:
         yield
     except ValueError as e:
-        raise cli.InputError(cli._one_line(e))
+        raise InputError(one_line(e))
 
 
 def require_core(popupcore, needed):
@@ -94,47 +103,47 @@ def require_core(popupcore, needed):
             raise RuntimeError(f"popupcore.{name} is missing: rebuild (make build)")
 
 
-def check_out_and_input(args, cli, input_path):
+def check_out_and_input(args, input_path):
     """An --out that is a file, an input that cannot be read: stopped before any work."""
     if os.path.exists(args.out) and not os.path.isdir(args.out):
-        raise cli.InputError(f"--out {args.out}: is a file, not a folder")
-    why = cli.unreadable(input_path)
+        raise InputError(f"--out {args.out}: is a file, not a folder")
+    why = unreadable(input_path)
     if why:
-        raise cli.InputError(why)
+        raise InputError(why)
 
 
-def named(path, error, cli):
+def named(path, error):
     """The error's one line, led by `path` unless it names the file already."""
-    text = cli._one_line(error)
+    text = one_line(error)
     return text if path in text or os.path.basename(path) in text else f"{path}: {text}"
 
 
 # --- the design -----------------------------------------------------------------------------
 
 
-def raise_unless_no_design(error, input_path, cli):
+def raise_unless_no_design(error, input_path):
     """The core's DesignError `no_design_found` is an outcome (exit 1, with a report); any other
     DesignError is the input's fault: InputError naming the file."""
     codes = [d.get("code") for d in getattr(error, "diagnostics", None) or []]
     if "no_design_found" not in codes:
-        raise cli.InputError(named(input_path, error, cli))
+        raise InputError(named(input_path, error))
 
 
-def report_no_design(args, cli, input_path, error, report, files, say):
+def report_no_design(args, input_path, error, report, files, say):
     """The run's end when the core found no design: the report with the core's diagnostics;
     exit 1."""
-    say(f"no valid design: {cli._one_line(error)}")
+    say(f"no valid design: {one_line(error)}")
     report["diagnostics"] = list(getattr(error, "diagnostics", None) or [])
     write_report(args.out, report, files, say)
     print(f"no valid design found for {input_path}; see {files['report']}")
-    return cli.EXIT_INVALID
+    return EXIT_INVALID
 
 
 @contextlib.contextmanager
-def design_document(cli, name):
+def design_document(name):
     """A new FreeCAD document (FreeCAD's chatter sent to stderr), closed at the end."""
-    with cli._stdout_to_stderr():
-        FreeCAD = cli._import_freecad()
+    with stdout_to_stderr():
+        FreeCAD = import_freecad()
         doc = FreeCAD.newDocument(name)
         try:
             yield doc
@@ -145,12 +154,12 @@ def design_document(cli, name):
 def build_and_check(stages, build):
     """build() (a design with a .card) timed as `document`, its card checked as `check`;
     returns (design, the check's dict)."""
-    from popupwb import validity
+    from popupwb.validity.check import run_check
 
     with stages.stage("document", "building the card's features"):
         design = build()
     with stages.stage("check", "checking the card's validity"):
-        checked = validity.run_check(design.card)
+        checked = run_check(design.card)
     return design, checked
 
 
@@ -163,34 +172,32 @@ def save_design(doc, out, files):
 # --- sheets, report, exit code --------------------------------------------------------------
 
 
-def write_sheets(args, cli, paper, report, files, stages, say):
+def write_sheets(args, paper, report, files, stages, say):
     """`popup sheet DIR/design.FCStd --out DIR/sheets --paper PAPER`, through cmd_sheet itself.
     Sheets that cannot be laid out (a piece larger than the paper) are the sheets' error, not
     the run's: said, kept in the report as `sheets_error`, exit 1, the report still written."""
     sheets = os.path.join(args.out, SHEETS_DIR)
     with stages.stage("sheets", f"laying out the cutting sheets on {paper}"):
-        sheet_args = cli.build_parser().parse_args(
-            ["sheet", files["design"], "--out", sheets, "--paper", paper]
-        )
+        sheet_args = sheet.parse_args([files["design"], "--out", sheets, "--paper", paper])
         try:
             status = sheet_args.run(sheet_args)
-        except cli.InputError as e:
-            report["sheets_error"] = cli._one_line(e)
+        except InputError as e:
+            report["sheets_error"] = one_line(e)
             say(f"error: no cutting sheets: {report['sheets_error']}")
-            return cli.EXIT_INVALID
+            return EXIT_INVALID
     files["sheets"] = sheets
     return status
 
 
-def sheets_of_valid_design(args, cli, paper, report, valid, files, stages, say):
+def sheets_of_valid_design(args, paper, report, valid, files, stages, say):
     """The sheets' exit code when the design is `valid`; else 1, with the report's diagnostics
     said on stderr."""
     if valid:
-        return write_sheets(args, cli, paper, report, files, stages, say)
+        return write_sheets(args, paper, report, files, stages, say)
     for d in report.get("diagnostics") or []:
         say(f"{d.get('severity', 'error')}: {d.get('code')}: {d.get('message')}")
     say("no valid design found: no sheets written")
-    return cli.EXIT_INVALID
+    return EXIT_INVALID
 
 
 def write_report(out, report, files, say):
@@ -202,23 +209,23 @@ def write_report(out, report, files, say):
     say(f"wrote {files['report']}")
 
 
-def finish(args, cli, report, status, files, stages, say, print_summary):
+def finish(args, report, status, files, stages, say, print_summary):
     """The report completed (timings, sheets_ok) and written, the summary printed on stdout;
     returns the exit code: the sheets' for a valid design, else 1."""
     from popupwb.fitting.fit_report import timings
 
     report["timings_s"] = timings(stages.timings, stages.total())
-    report["sheets_ok"] = bool(report["valid"] and status == cli.EXIT_VALID)
+    report["sheets_ok"] = bool(report["valid"] and status == EXIT_VALID)
     write_report(args.out, report, files, say)
     print_summary(report, files)
-    if report["valid"] and status != cli.EXIT_VALID and "sheets" in files:
+    if report["valid"] and status != EXIT_VALID and "sheets" in files:
         print(
             "but its cutting sheets have errors (listed above; "
             f"{os.path.join(files['sheets'], 'report.json')})"
         )
     elif report["valid"] and report.get("sheets_error"):
         print(f"but no cutting sheets could be laid out: {report['sheets_error']}")
-    return status if report["valid"] else cli.EXIT_INVALID
+    return status if report["valid"] else EXIT_INVALID
 
 
 def print_written(files, roles):

@@ -20,7 +20,7 @@ import collections
 import hashlib
 import math
 
-from popupwb import profiles
+from popupwb.model import profile_cutting, profile_storage
 
 CARD_TYPE = "PopUp::Card"
 CENTRAL_FOLD = "central fold"  # popupcore.central_fold(card).name
@@ -144,7 +144,7 @@ def design_key(card):
         parts.append(
             (obj.Name, obj.Label, obj.Proxy.TYPE, obj.Host.Name, obj.HostPair)
             + tuple(_proxy(obj).parameter_values(obj))
-            + (profiles.key_of(obj),)
+            + (profile_storage.key_of(obj),)
         )
     return tuple(parts)
 
@@ -158,7 +158,7 @@ class CardScaffold:
     errors            {object name: message} for mechanisms that added nothing
     offered           {object name: [popupcore.BasePatchPair]} for the card and built mechanisms
     parts             {object name: popupcore.MechanismParts} for built mechanisms (their host
-                      pair and swept span, popupwb.placement)
+                      pair and swept span, popupwb.model.placement)
     sizes             {object name: {part: (w, h)}}: each part's extent in its profile frame as
                       generated, before profiles (popupwb.profiles, Scale mode)
     card_error        message when the card itself cannot be built (then nothing is)
@@ -349,9 +349,9 @@ def build(card):
         built.patches[obj.Name] = list(parts.patches)
         built.offered[obj.Name] = list(parts.offered)
         built.parts[obj.Name] = parts
-        built.sizes[obj.Name] = profiles.part_sizes(scaffold, obj.Label, set(parts.patches))
+        built.sizes[obj.Name] = profile_cutting.part_sizes(scaffold, obj.Label, set(parts.patches))
         try:
-            profiles.apply_profiles(obj, scaffold, built.sizes[obj.Name])
+            profile_cutting.apply_profiles(obj, scaffold, built.sizes[obj.Name])
         except ValueError as error:
             # The mechanism stays as generated so what stands on it still builds; the card is
             # not valid while this error stands (validity counts built.errors).

@@ -9,15 +9,16 @@ them).
 Progress goes to stderr, the files written and the verdict to stdout. Exit codes as `popup fit`:
 0 a valid design with usable sheets, 1 no valid design (the report and what could be written say
 what was tried), 2 input that cannot be used (one line naming the file or flag, the value and the
-allowed range). The steps it shares with `popup fit` are in cli_design_steps.py.
+allowed range). The steps it shares with `popup fit` are in design_steps.py.
 """
 
 import math
 import os
 import time
 
-from popupwb import cli_design_steps as steps
-from popupwb.cli_design_steps import DESIGN_FILE, REPORT_FILE, SHEETS_DIR
+from popupwb.cli import design_steps as steps
+from popupwb.cli.common import InputError, import_core, stdout_to_stderr
+from popupwb.cli.design_steps import DESIGN_FILE, REPORT_FILE, SHEETS_DIR
 
 PATHS_FILE = "paths.png"
 MOVIE_FILE = "motion.gif"
@@ -71,6 +72,7 @@ def add_parser(sub):
         help="card mm per file unit (default: the character's projected box fits the card)",
     )
     steps.add_paper_flag(animate)
+    animate.set_defaults(run=run)
     return animate
 
 
@@ -88,30 +90,30 @@ class _Progress:
                 self.next += PROGRESS_STEP
 
 
-def _options(args, cli, motion_run):
+def _options(args, motion_run):
     """The MotionOptions and the paper from the flags; InputError naming the flag."""
-    steps.check_seed(args, cli)
+    steps.check_seed(args)
     if not 1 <= args.iterations <= motion_run.MAX_ITERATIONS:
-        raise cli.InputError(
+        raise InputError(
             f"--iterations {args.iterations}: must be 1 to {motion_run.MAX_ITERATIONS}"
         )
     if args.first_frame is not None and args.first_frame < 0:
-        raise cli.InputError(f"--first-frame {args.first_frame}: must be >= 0")
+        raise InputError(f"--first-frame {args.first_frame}: must be >= 0")
     if args.last_frame is not None and args.last_frame < 0:
-        raise cli.InputError(f"--last-frame {args.last_frame}: must be >= 0")
+        raise InputError(f"--last-frame {args.last_frame}: must be >= 0")
     if (
         args.first_frame is not None
         and args.last_frame is not None
         and args.last_frame <= args.first_frame
     ):
-        raise cli.InputError(
+        raise InputError(
             f"--last-frame {args.last_frame}: must be after --first-frame {args.first_frame}"
         )
     if args.scale is not None and not (math.isfinite(args.scale) and args.scale > 0):
-        raise cli.InputError(f"--scale {args.scale:g}: must be a finite number of mm > 0")
-    view, up = steps.directions(args, cli, motion_run.direction, ("view", "up"))
-    paper, card_size = steps.paper_and_card_size(args, cli, motion_run.card_size_for_paper)
-    with steps.core_range_checks(cli):
+        raise InputError(f"--scale {args.scale:g}: must be a finite number of mm > 0")
+    view, up = steps.directions(args, motion_run.direction, ("view", "up"))
+    paper, card_size = steps.paper_and_card_size(args, motion_run.card_size_for_paper)
+    with steps.core_range_checks():
         options = motion_run.motion_options(
             seed=args.seed,
             iterations=args.iterations,
@@ -125,25 +127,25 @@ def _options(args, cli, motion_run):
     return options, paper
 
 
-def run(args, cli):
-    """The `popup animate` command; `cli` is the popupwb.cli module that parsed `args`."""
+def run(args):
+    """The `popup animate` command."""
     say = steps.Say("animate")
-    popupcore = cli._import_core()
+    popupcore = import_core()
     from popupwb.motion import motion_run
 
     steps.require_core(
         popupcore, ("load_animation", "load_trajectories", "MotionOptions", "design_motion")
     )
-    options, paper = _options(args, cli, motion_run)
-    steps.check_out_and_input(args, cli, args.animation)
+    options, paper = _options(args, motion_run)
+    steps.check_out_and_input(args, args.animation)
 
     stages = motion_run.Stages(say)
     with stages.stage("load", f"reading {args.animation}"):
-        with cli._stdout_to_stderr():
+        with stdout_to_stderr():
             try:
                 animation, what = motion_run.read_animation(args.animation)
             except (ValueError, RuntimeError, OSError) as e:
-                raise cli.InputError(steps.named(args.animation, e, cli))
+                raise InputError(steps.named(args.animation, e))
     say(what)
 
     os.makedirs(args.out, exist_ok=True)
@@ -158,24 +160,24 @@ def run(args, cli):
     try:
         result = motion_run.design(animation, options, on_progress=_Progress(say))
     except popupcore.DesignError as e:
-        steps.raise_unless_no_design(e, args.animation, cli)
+        steps.raise_unless_no_design(e, args.animation)
         report = _report(common, None, None, stages, files)
-        return steps.report_no_design(args, cli, args.animation, e, report, files, say)
+        return steps.report_no_design(args, args.animation, e, report, files, say)
     _add_core_stages(stages, result, time.perf_counter() - started)
     say(
         f"{len(result.chains)} chain(s) on {len(result.mechanisms)} mechanism(s); weighted "
         f"motion error {result.weighted_error:.4f} of the character's diagonal"
     )
 
-    validity = _write_design(args, cli, result, animation, stages, files, say)
+    validity = _write_design(args, result, animation, stages, files, say)
     _write_pictures(args, result, animation, stages, files, say)
     report = _report(common, result, validity, stages, files)
     valid = report["valid"] and result.mechanisms
     if report["valid"] and not result.mechanisms:  # a card with nothing on it is no pop-up
         report["valid"] = False
         say("no mechanism: every chain is printed on the page, nothing stands up")
-    status = steps.sheets_of_valid_design(args, cli, paper, report, valid, files, stages, say)
-    return steps.finish(args, cli, report, status, files, stages, say, _print_summary)
+    status = steps.sheets_of_valid_design(args, paper, report, valid, files, stages, say)
+    return steps.finish(args, report, status, files, stages, say, _print_summary)
 
 
 def _add_core_stages(stages, result, wall_s):
@@ -187,9 +189,9 @@ def _add_core_stages(stages, result, wall_s):
     stages.add([("design_other", max(wall_s - sum(float(t) for _, t in core), 0.0))])
 
 
-def _write_design(args, cli, result, animation, stages, files, say):
+def _write_design(args, result, animation, stages, files, say):
     """Builds, checks and saves the FreeCAD design; returns the check's dict."""
-    with steps.design_document(cli, "PopUpAnimate") as doc:
+    with steps.design_document("PopUpAnimate") as doc:
         from popupwb.motion.design_from_motion import build_design
 
         _, checked = steps.build_and_check(

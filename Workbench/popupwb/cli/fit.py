@@ -7,22 +7,25 @@ Progress goes to stderr, the files written and the verdict to stdout. Exit 0 for
 with usable sheets, 1 when no valid design was found (the report and the document still say what
 was tried), 2 for input that cannot be used (a one-line error naming the file or flag).
 
-cli.py keeps the parser; this module is the command, handed the cli module for its shared helpers
-(InputError, the FreeCAD import, cmd_sheet) so that `python -m popupwb.cli` does not load a
-second copy of it. What it shares with `popup animate` (flags, checks, sheets, report, exit code)
-is in cli_design_steps.py.
+What it shares with `popup animate` (flags, checks, sheets, report, exit code) is in
+design_steps.py.
 """
 
 import math
 import os
 
-from popupwb import cli_design_steps as steps
-from popupwb.cli_design_steps import DESIGN_FILE, REPORT_FILE, SHEETS_DIR
+from popupwb.cli import design_steps as steps
+from popupwb.cli.common import EXIT_INVALID, InputError, import_core, import_freecad
+from popupwb.cli.common import stdout_to_stderr
+from popupwb.cli.design_steps import DESIGN_FILE, REPORT_FILE, SHEETS_DIR
+from popupwb.cli.designs import is_document
 
 PREVIEW_FILE = "preview.png"
 
 
-def add_parser(sub, max_mechanisms):
+def add_parser(sub):
+    from popupwb.fitting.fit_run import MAX_MECHANISMS
+
     fit = sub.add_parser(
         "fit",
         help="design a pop-up from a 3D model: FreeCAD document, report, preview and sheets",
@@ -39,7 +42,7 @@ def add_parser(sub, max_mechanisms):
         type=int,
         default=8,
         metavar="N",
-        help=f"at most this many mechanisms, 1 to {max_mechanisms} (default 8)",
+        help=f"at most this many mechanisms, 1 to {MAX_MECHANISMS} (default 8)",
     )
     steps.add_seed_flag(fit)
     fit.add_argument(
@@ -73,23 +76,24 @@ def add_parser(sub, max_mechanisms):
         metavar="X,Y,Z",
         help="model direction that faces the viewer of the open card (default: from the model)",
     )
+    fit.set_defaults(run=run)
     return fit
 
 
-def _options(args, cli, fit_run):
+def _options(args, fit_run):
     """The FitOptions, the paper and the directions from the flags; InputError naming the flag."""
     if not 1 <= args.max_mechanisms <= fit_run.MAX_MECHANISMS:
-        raise cli.InputError(
+        raise InputError(
             f"--max-mechanisms {args.max_mechanisms}: must be 1 to {fit_run.MAX_MECHANISMS}"
         )
-    steps.check_seed(args, cli)
+    steps.check_seed(args)
     if not (math.isfinite(args.detail) and 0.0 <= args.detail <= 1.0):
-        raise cli.InputError(f"--detail {args.detail:g}: must be from 0 (coarse) to 1 (fine)")
+        raise InputError(f"--detail {args.detail:g}: must be from 0 (coarse) to 1 (fine)")
     if args.min_part is not None and not (math.isfinite(args.min_part) and args.min_part >= 0):
-        raise cli.InputError(f"--min-part {args.min_part:g}: must be a length >= 0 mm")
-    up, facing = steps.directions(args, cli, fit_run.direction, ("up", "facing"))
-    paper, card_size = steps.paper_and_card_size(args, cli, fit_run.card_size_for_paper)
-    with steps.core_range_checks(cli):
+        raise InputError(f"--min-part {args.min_part:g}: must be a length >= 0 mm")
+    up, facing = steps.directions(args, fit_run.direction, ("up", "facing"))
+    paper, card_size = steps.paper_and_card_size(args, fit_run.card_size_for_paper)
+    with steps.core_range_checks():
         options = fit_run.fit_options(
             args.max_mechanisms, args.seed, up, facing, args.detail, card_size
         )
@@ -99,33 +103,33 @@ def _options(args, cli, fit_run):
     return options, paper
 
 
-def run(args, cli):
-    """The `popup fit` command; `cli` is the popupwb.cli module that parsed `args`."""
+def run(args):
+    """The `popup fit` command."""
     say = steps.Say("fit")
-    popupcore = cli._import_core()
+    popupcore = import_core()
     from popupwb.fitting import fit_run
 
     steps.require_core(
         popupcore, ("load_model", "clean_model", "FitOptions", "fit_design", "fit_metrics")
     )
-    options, paper = _options(args, cli, fit_run)
-    steps.check_out_and_input(args, cli, args.model)
+    options, paper = _options(args, fit_run)
+    steps.check_out_and_input(args, args.model)
 
     stages = fit_run.Stages(say)
     with stages.stage("load", f"reading {args.model}"):
-        with cli._stdout_to_stderr():
-            if cli.is_document(args.model):
-                cli._import_freecad()
+        with stdout_to_stderr():
+            if is_document(args.model):
+                import_freecad()
             try:
                 model, what = fit_run.read_model(args.model)
             except (ValueError, RuntimeError, OSError) as e:
-                raise cli.InputError(steps.named(args.model, e, cli))
+                raise InputError(steps.named(args.model, e))
     say(f"{what}: {len(model.vertices)} vertices, {len(model.triangles)} triangles")
     with stages.stage("clean", "cleaning the mesh"):
         try:
             model, repairs = fit_run.clean_model(model)
         except ValueError as e:
-            raise cli.InputError(steps.named(args.model, e, cli))
+            raise InputError(steps.named(args.model, e))
     done = {k: v for k, v in repairs.items() if v and not isinstance(v, bool)}
     if done:
         say("repaired: " + ", ".join(f"{k} {v}" for k, v in sorted(done.items())))
@@ -142,35 +146,35 @@ def run(args, cli):
     try:
         result = fit_run.fit(model, options)
     except popupcore.DesignError as e:
-        steps.raise_unless_no_design(e, args.model, cli)
+        steps.raise_unless_no_design(e, args.model)
         report = _no_design_report(common, stages)
-        return steps.report_no_design(args, cli, args.model, e, report, files, say)
+        return steps.report_no_design(args, args.model, e, report, files, say)
     stages.add(result.timings)
     say(
         f"fitted {len(result.primitives)} primitive(s), {len(result.mechanisms)} mechanism(s); "
         f"{len(result.repairs)} repair(s)"
     )
 
-    design = _write_design(args, cli, result, model, options, stages, files, say)
+    design = _write_design(args, result, model, options, stages, files, say)
     report = _report(common, result, design, stages, files)
     valid = design["validity"]["valid"] and result.valid and result.mechanisms
-    status = steps.sheets_of_valid_design(args, cli, paper, report, valid, files, stages, say)
-    status = steps.finish(args, cli, report, status, files, stages, say, _print_summary)
+    status = steps.sheets_of_valid_design(args, paper, report, valid, files, stages, say)
+    status = steps.finish(args, report, status, files, stages, say, _print_summary)
     if not result.mechanisms:
         print(f"no mechanism could be fitted to {args.model}")
-        return cli.EXIT_INVALID
+        return EXIT_INVALID
     return status
 
 
-def _write_design(args, cli, result, model, options, stages, files, say):
+def _write_design(args, result, model, options, stages, files, say):
     """Builds, checks, measures, saves and previews the FreeCAD design; returns what the report
     needs from it."""
     from popupwb.fitting import fit_run
     from popupwb.fitting.model_source import transformed
     from popupwb.fitting.preview import scaffold_outlines, write_preview
 
-    with steps.design_document(cli, "PopUpFit") as doc:
-        from popupwb import card_scaffold
+    with steps.design_document("PopUpFit") as doc:
+        from popupwb.model import card_scaffold
         from popupwb.fitting.design_from_fit import build_design
 
         design, checked = steps.build_and_check(
