@@ -50,3 +50,4 @@ class PopUpWorkbench(FreeCADGui.Workbench):
 FreeCADGui.addWorkbench(PopUpWorkbench())
 import popupwb.gui.preferences_page  # noqa: E402,F401 -- adds Edit › Preferences › PopUp
 import popupwb.gui.progress_dialog  # noqa: E402,F401 -- progress.run's dialog with Cancel
+import popupwb.viewproviders.patch_colours  # noqa: E402,F401 -- a check's verdict in red faces

@@ -44,32 +44,30 @@ WORKBENCH_FLOORS = {
     "popupwb.core": 1,
     "popupwb.stateless_proxy": 1,
     "popupwb.readable_file": 1,
-    "popupwb.preferences": 1,
-    "popupwb.patch_titles": 2,
-    "popupwb.validity": 2,
-    "popupwb.profiles": 2,
-    "popupwb.card_scaffold": 2,
-    "popupwb.placement": 2,
-    "popupwb.features": 3,
-    "popupwb.mechanism_registry": 4,
-    "popupwb.designed_card": 5,
-    "popupwb.make": 5,
-    "popupwb.document_precheck": 5,
-    "popupwb.printable": 5,
-    "popupwb.sheets": 6,
-    "popupwb.fitting": 7,
-    "popupwb.motion": 7,
-    "popupwb.progress": 7,
-    "popupwb.cli": 8,
-    "popupwb.cli_fit": 8,
-    "popupwb.cli_animate": 8,
-    "popupwb.cli_design_steps": 8,
-    "popupwb.viewproviders": 9,
-    "popupwb.view_provider_by_name": 9,
-    "popupwb.taskpanels": 10,
-    "popupwb.preferences_page": 10,
-    "popupwb.gui": 10,
-    "popupwb.commands": 11,
+    "popupwb.view_provider_by_name": 1,
+    "popupwb.document_precheck": 1,
+    "popupwb.printable": 1,
+    "popupwb.patch_titles": 1,
+    "popupwb.model": 2,
+    "popupwb.progress": 2,
+    "popupwb.validity.report_text": 2,
+    "popupwb.profiles": 3,
+    "popupwb.sheets": 3,
+    "popupwb.features": 4,
+    "popupwb.mechanism_registry": 5,
+    "popupwb.validity": 6,
+    # The cutting sheet is a feature over the sheets pipeline and the check (its module path is
+    # stored in files, so it stays in features/): it and its make_* sit above both.
+    "popupwb.features.cutting_sheet": 7,
+    "popupwb.make": 8,
+    "popupwb.fitting": 9,
+    "popupwb.motion": 10,
+    "popupwb.preferences": 11,
+    "popupwb.cli": 12,
+    "popupwb.gui": 13,
+    "popupwb.taskpanels": 14,
+    "popupwb.viewproviders": 15,
+    "popupwb.commands": 16,
 }
 
 
@@ -78,6 +76,24 @@ def set_root(root):
     global ROOT
     ROOT = os.path.abspath(root)
 
+
+# Arrows known to run back up, each with why it is still there. The check fails on any arrow not
+# listed, and on a listed arrow that is gone (then delete its line): the list only shrinks.
+STILL_OPEN = {
+    (
+        "popupwb.taskpanels.card_panel",
+        "popupwb.commands",
+    ): "the card panel's Play and Cutting sheets buttons run PopUp_Animate's player and "
+    "PopUp_CuttingSheet's action; both belong under gui/ for the commands and the panel to share",
+    (
+        "popupwb.taskpanels.card_panel",
+        "popupwb.commands.animate",
+    ): "(the same)",
+    (
+        "popupwb.taskpanels.card_panel",
+        "popupwb.commands.create_cutting_sheet",
+    ): "(the same)",
+}
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 
@@ -295,7 +311,11 @@ class Wing:
         return counts
 
     def problems(self):
-        lines = [f"{self.title}: arrow runs back up: {a} -> {b}" for a, b in self.upward]
+        lines = [
+            f"{self.title}: arrow runs back up: {a} -> {b}"
+            for a, b in self.upward
+            if (a, b) not in STILL_OPEN
+        ]
         lines += [
             f"{self.title}: arrow between areas of one floor: {a} -> {b}" for a, b in self.sideways
         ]
@@ -359,6 +379,14 @@ def draw(wings, png):
     fig.savefig(png, dpi=90)
 
 
+def stale_exceptions(house):
+    """Listed arrows that no longer run back up: the list must lose them."""
+    upward = {arrow for wing in house for arrow in wing.upward}
+    return [
+        f"fixed, remove from STILL_OPEN: {a} -> {b}" for a, b in STILL_OPEN if (a, b) not in upward
+    ]
+
+
 def wings():
     return [
         Wing("core + bindings (includes)", cpp_arrows(), CORE_FLOORS, "/"),
@@ -374,13 +402,15 @@ def main(argv=None):
     args = parser.parse_args(argv)
     set_root(args.root)
     house = wings()
-    problems = [line for wing in house for line in wing.problems()]
+    problems = [line for wing in house for line in wing.problems()] + stale_exceptions(house)
     if not args.quiet:
         for wing in house:
             print(
                 f"{wing.title}: {len(wing.arrows)} arrows, {len(wing.upward)} back up, "
                 f"{len(wing.circles)} circles"
             )
+        for (a, b), why in STILL_OPEN.items():
+            print(f"still open: {a} -> {b}: {why}")
     for line in problems:
         print(line)
     if args.png:

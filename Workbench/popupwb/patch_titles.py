@@ -6,9 +6,10 @@ per mechanism kind, what each part code is called, so the check's findings read 
 the short id in brackets stays, to search for and to match `popup check --json`. "#5", not "P5":
 P<n> names the cut pieces on the sheets.
 
-titles_of_card() gives {patch id: title} for a card; add_titles() puts them on a report's findings
-(each finding's own "patch_titles"); name_patches() rewrites a message with them. Plain Python,
-except titles_of_card (FreeCAD objects).
+validity.card_titles.titles_of_card() gives {patch id: title} for a card (it needs the document
+and the mechanism registry); add_titles() puts them on a report's findings (each finding's own
+"patch_titles"); name_patches() rewrites a message with them. Plain Python: no FreeCAD, no other
+module of the workbench.
 """
 
 import re
@@ -83,28 +84,6 @@ def part_title(kind, part):
 def title(kind_text, label, part_text):
     """ "Box fold 'BoxFold': top, ground side" """
     return f"{kind_text} '{label}': {part_text}"
-
-
-def titles_of_card(card, built):
-    """{patch id: maker title} of every patch of the card's CardScaffold `built`."""
-    from popupwb import mechanism_registry
-
-    names = {p.id: p.name for p in built.scaffold.patches}
-    titles = {}
-    for obj_name, ids in built.patches.items():
-        obj = card.Document.getObject(obj_name)
-        if obj is None:
-            continue
-        kind = getattr(obj.Proxy, "TYPE", None)
-        mechanism = mechanism_registry.by_type(kind)
-        kind_text = mechanism.menu_text if mechanism else CARD_KIND
-        table_kind = kind if mechanism else CARD_KIND
-        for patch_id in ids:
-            raw = names.get(patch_id, "")
-            prefix = obj.Label + "."
-            part = raw[len(prefix) :] if raw.startswith(prefix) else raw
-            titles[patch_id] = title(kind_text, obj.Label, part_title(table_kind, part))
-    return titles
 
 
 def add_titles(report, titles):

@@ -210,7 +210,7 @@ def _box_model(core):
 
 def test_the_card_gives_back_its_model_in_the_card_frame(doc, core, tetrahedron):
     from popupwb.fitting.design_from_fit import build_design
-    from popupwb.fitting.model_source import card_model
+    from popupwb.model.model_source import card_model
 
     design = build_design(doc, _result(core, [BOX]), tetrahedron)
     design.card.Placement.Base = (100.0, 0.0, 0.0)  # the card moved: the model moves with it

@@ -22,7 +22,7 @@ def test_a_part_solid_becomes_its_mesh_with_placement(doc, core):
     import FreeCAD
     import Part
 
-    from popupwb.fitting.model_source import model_of_object
+    from popupwb.model.model_source import model_of_object
 
     box = doc.addObject("Part::Feature", "Block")
     box.Shape = Part.makeBox(60, 40, 30)
@@ -40,7 +40,7 @@ def test_a_mesh_feature_becomes_its_mesh(doc, core):
     import MeshPart
     import Part
 
-    from popupwb.fitting.model_source import model_of_object
+    from popupwb.model.model_source import model_of_object
 
     obj = doc.addObject("Mesh::Feature", "Ball")
     obj.Mesh = MeshPart.meshFromShape(Shape=Part.makeSphere(10.0), LinearDeflection=0.2)
@@ -55,7 +55,7 @@ def test_a_document_gives_its_top_level_models_and_skips_popup_objects(doc, core
     import Part
 
     from popupwb import make
-    from popupwb.fitting.model_source import model_of_document, top_level_models
+    from popupwb.model.model_source import model_of_document, top_level_models
 
     a = doc.addObject("Part::Feature", "A")
     a.Shape = Part.makeBox(10, 10, 10)
@@ -74,7 +74,7 @@ def test_a_document_gives_its_top_level_models_and_skips_popup_objects(doc, core
 
 
 def test_a_document_without_models_is_named(doc, tmp_path):
-    from popupwb.fitting.model_source import model_of_document
+    from popupwb.model.model_source import model_of_document
 
     path = str(tmp_path / "empty.FCStd")
     doc.saveAs(path)

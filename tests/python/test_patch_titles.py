@@ -93,6 +93,7 @@ def test_every_part_the_core_builds_has_a_title(doc, index):
     """Drift guard: a part code the core adds without a title here would show as a bare code."""
     from popupwb import mechanism_registry, make, patch_titles
     from popupwb.model import card_scaffold
+    from popupwb.validity import card_titles
 
     mechanism = mechanism_registry.MECHANISMS[index]
     card = make.make_card(doc, preset="A4")
@@ -101,7 +102,7 @@ def test_every_part_the_core_builds_has_a_title(doc, index):
     doc.recompute()
     built = card_scaffold.for_card(card)
     assert not built.errors, built.errors
-    titles = patch_titles.titles_of_card(card, built)
+    titles = card_titles.titles_of_card(card, built)
     assert set(titles) == {p.id for p in built.scaffold.patches}
     table = patch_titles.PART_TITLES[mechanism.type_name]
     for patch in built.scaffold.patches[2:]:  # the card's ground and backdrop first

@@ -52,7 +52,7 @@ def _card_design(path, card, several, with_model=False):
     the input unusable (the message is the feature's error)."""
     from popupwb.model.card_scaffold import for_card, stray_features
     from popupwb.features.cutting_sheet import card_prints_artwork
-    from popupwb.patch_titles import titles_of_card
+    from popupwb.validity.card_titles import titles_of_card
 
     built = for_card(card)
     problems = ([built.card_error] if built.card_error else []) + list(built.errors.values())
@@ -72,8 +72,8 @@ def _card_design(path, card, several, with_model=False):
 
 
 def _source_model(path, card):
-    """The model the card was designed from, in card mm, or None (popupwb.fitting.model_source)."""
-    from popupwb.fitting.model_source import card_model
+    """The model the card was designed from, in card mm, or None (popupwb.model.model_source)."""
+    from popupwb.model.model_source import card_model
 
     try:
         return card_model(card)

@@ -170,7 +170,7 @@ def _write_design(args, result, model, options, stages, files, say):
     """Builds, checks, measures, saves and previews the FreeCAD design; returns what the report
     needs from it."""
     from popupwb.fitting import fit_run
-    from popupwb.fitting.model_source import transformed
+    from popupwb.model.model_source import transformed
     from popupwb.fitting.preview import scaffold_outlines, write_preview
 
     with steps.design_document("PopUpFit") as doc:

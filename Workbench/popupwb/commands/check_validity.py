@@ -8,7 +8,7 @@ import FreeCADGui
 
 import popupwb
 from popupwb.model import card_scaffold
-from popupwb.commands.echoed_python import import_echoed, object_expression
+from popupwb.gui.echoed_python import import_echoed, object_expression
 from popupwb.commands.selection import SelectionError, selected_designs
 from popupwb.features.scaffold_feature import is_scaffold
 

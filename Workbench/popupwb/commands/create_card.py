@@ -7,7 +7,7 @@ import FreeCADGui
 import popupwb
 from popupwb import preferences
 from popupwb.model import card_scaffold
-from popupwb.commands.echoed_python import run_echoed
+from popupwb.gui.echoed_python import run_echoed
 
 COMMAND_ID = "PopUp_Card"
 

@@ -8,7 +8,7 @@ import popupwb
 from popupwb import preferences, progress
 from popupwb.model import card_scaffold
 from popupwb.features.cutting_sheet import has_layout, is_cutting_sheet
-from popupwb.commands.echoed_python import object_expression, run_echoed
+from popupwb.gui.echoed_python import object_expression, run_echoed
 from popupwb.commands.select_at_fault import select_at_fault
 from popupwb.commands.selection import SelectionError, selected_card
 

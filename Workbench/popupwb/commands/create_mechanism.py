@@ -6,7 +6,7 @@ import FreeCAD
 import FreeCADGui
 
 from popupwb.model import card_scaffold
-from popupwb.commands.echoed_python import object_expression, run_echoed
+from popupwb.gui.echoed_python import object_expression, run_echoed
 from popupwb.commands.selection import SelectionError, selected_host
 from popupwb.mechanism_registry import COMMAND_IDS, by_command
 

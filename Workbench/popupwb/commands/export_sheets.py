@@ -21,7 +21,7 @@ from popupwb import preferences, progress
 from popupwb.commands.select_at_fault import select_at_fault
 from popupwb.commands.selection import SelectionError, selected_cutting_sheet
 from popupwb.features.cutting_sheet import export_cutting_sheet, has_layout, is_cutting_sheet
-from popupwb.fitting.model_source import has_source_model
+from popupwb.model.model_source import has_source_model
 
 COMMAND_ID = "PopUp_ExportSheets"
 

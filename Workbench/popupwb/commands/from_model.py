@@ -30,7 +30,7 @@ class FromModelCommand:
         return FreeCAD.ActiveDocument is not None and FreeCADGui.Control.activeDialog() is False
 
     def Activated(self):
-        from popupwb.fitting.model_source import top_level_models
+        from popupwb.model.model_source import top_level_models
 
         doc = FreeCAD.ActiveDocument
         selected = selected_objects(doc)
@@ -87,7 +87,7 @@ def add_model_file(doc, path):
     import os
 
     from popupwb.core import popupcore
-    from popupwb.fitting.model_source import add_source_model
+    from popupwb.model.model_source import add_source_model
 
     model = popupcore.load_model(path)
     if doc is None:

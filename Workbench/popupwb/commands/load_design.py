@@ -6,7 +6,7 @@ import FreeCAD
 import FreeCADGui
 
 import popupwb
-from popupwb.commands.echoed_python import run_echoed
+from popupwb.gui.echoed_python import run_echoed
 from popupwb.features.scaffold_feature import is_scaffold
 
 COMMAND_ID = "PopUp_LoadDesign"

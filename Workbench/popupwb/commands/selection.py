@@ -99,7 +99,7 @@ def selected_designs(doc):
 def selected_model(doc):
     """The first selected Mesh::Feature or Part shape (not a PopUp object), else the document's
     only one: what PopUp_FromModel designs a card from."""
-    from popupwb.fitting.model_source import is_model_object, top_level_models
+    from popupwb.model.model_source import is_model_object, top_level_models
 
     for obj in selected_objects(doc):
         if is_model_object(obj):

@@ -237,7 +237,8 @@ class CuttingSheet(StatelessProxy):
         """The card's NotValid (None when the validity check accepts it); raises, leaving the
         feature in error, for a rejected card unless Force is set."""
         from popupwb.core import popupcore
-        from popupwb.patch_titles import add_titles, titles_of_card
+        from popupwb.patch_titles import add_titles
+        from popupwb.validity.card_titles import titles_of_card
         from popupwb.sheets.not_valid_stamp import not_valid_of
 
         try:
@@ -411,11 +412,11 @@ def export_cutting_sheet(obj, folder, style=None):
 
 def sheet_artwork(obj, sheet_set):
     """{patch id: popupcore.PatchArtwork} of the laid-out patches, rendered from the model the
-    card was designed from (fitting.model_source.card_model: the model file while it is there,
+    card was designed from (model_source.card_model: the model file while it is there,
     read through popupcore.load_model, else the mesh the card keeps); None for a card without a
     source model. ValueError naming obj when the layout is out of date or the model cannot be
     rendered."""
-    from popupwb.fitting.model_source import card_model
+    from popupwb.model.model_source import card_model
     from popupwb.sheets.print_artwork import source_model_artwork
 
     card = obj.Card

@@ -1,7 +1,7 @@
-"""Shape from a 3D model (issue 12): the workbench's side of popupcore.fit_design.
+"""Shape from a 3D model: the workbench's side of popupcore.fit_design.
 
-One concept per module: model_source (a ModelMesh from a file, a FreeCAD mesh or shape, and the
-source model placed on the card), design_from_fit (a FitResult as a PopUpCard with mechanism
+One concept per module (where the model comes from is model/model_source.py, below the features:
+the cutting sheet reads it too): design_from_fit (a FitResult as a PopUpCard with mechanism
 features), fit_report (report.json), preview (preview.png) and fit_run (the stages in order, timed,
 shared by `popup fit` and the PopUp_FromModel command).
 """

@@ -51,7 +51,7 @@ def build_design(doc, result, model=None, name="Card", source_file=None):
     from `result` (a popupcore.FitResult); recomputes; returns a FittedDesign. `source_file` is
     the model file, kept on the card for the artwork. The caller checks validity
     (popupwb.validity.run_check(card))."""
-    from popupwb.fitting.model_source import add_source_model
+    from popupwb.model.model_source import add_source_model
 
     card, made = build_card(
         doc, result.card, result.mechanisms, getattr(result, "profiles", ()), name=name

@@ -52,7 +52,7 @@ class Stages:
 def read_model(path):
     """(popupcore.ModelMesh, what was read) of a model file or an .FCStd's meshes and shapes."""
     from popupwb.core import popupcore
-    from popupwb.fitting import model_source
+    from popupwb.model import model_source
 
     if path.lower().endswith(".fcstd"):
         model, labels = model_source.model_of_document(path)

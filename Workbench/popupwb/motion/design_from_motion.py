@@ -68,7 +68,7 @@ def posed_mesh_in_card(animation, frame, animation_to_card):
     """The skinned mesh of `animation` at `frame`, in the card's frame (mm), or None without a
     mesh (BVH, trajectories)."""
     from popupwb.core import popupcore
-    from popupwb.fitting.model_source import in_card_frame
+    from popupwb.model.model_source import in_card_frame
 
     if animation is None or animation.mesh is None:
         return None
@@ -84,7 +84,7 @@ def build_design(doc, result, animation=None, source_file=None, name="Card"):
     given the popupcore.Animation, to its mesh posed at the last frame; recomputes; returns a
     MotionDesign. The caller checks validity (popupwb.validity.run_check(card))."""
     from popupwb.fitting.design_from_fit import link_source
-    from popupwb.fitting.model_source import add_source_model
+    from popupwb.model.model_source import add_source_model
 
     targets = result.targets
     matrix = np.asarray(targets.animation_to_card, dtype=float)

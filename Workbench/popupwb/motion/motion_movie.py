@@ -97,7 +97,7 @@ def character_frames(animation, animation_to_card, first_frame, last_frame, coun
     """[(frame, bone segments [(a, b)] in card mm, mesh triangles Mx3x3 or None)] over the frame
     range, `count` evenly spaced (fractional) frames."""
     from popupwb.core import popupcore
-    from popupwb.fitting.model_source import transformed
+    from popupwb.model.model_source import transformed
 
     matrix = np.asarray(animation_to_card, dtype=float)
     parents = [int(parent) for _, parent in animation.bones]

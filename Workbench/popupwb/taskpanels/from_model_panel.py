@@ -100,7 +100,7 @@ class FromModelPanel(LongJobPanel):
         """Fits with the current settings and draws the prisms; returns the FitResult or None
         (cancelled, or no design: the status line says why)."""
         from popupwb.core import popupcore
-        from popupwb.fitting.model_source import model_of_object
+        from popupwb.model.model_source import model_of_object
 
         self.result = None
         self.overlay.remove()

@@ -67,7 +67,7 @@ class ProfilePanel:
 
     def echo(self):
         """Runs (and so shows and records) the line that sets what the panel set."""
-        from popupwb.commands.echoed_python import import_echoed, object_expression
+        from popupwb.gui.echoed_python import import_echoed, object_expression
 
         obj, sketch = self.obj, self.obj.ProfileSketch
         if sketch is None:

@@ -8,6 +8,11 @@ from popupwb.validity.report_text import design_error, format_diagnostic, format
 from popupwb.validity.report_text import offending_patches
 from popupwb.model.validity_state import INVALID, VALID, record_verdict
 
+# What shows a card's verdict on screen, called as show(card, design digest, offending patch ids):
+# the GUI registers here (viewproviders/patch_colours.py, imported by InitGui.py), so the check
+# runner stays below the view providers and imports no Qt.
+VERDICT_VIEWERS = []
+
 
 def run_check(obj, samples=181, clearance=0.0):
     """Checks a Scaffold's or a PopUpCard's design with popupcore.check_validity.
@@ -80,9 +85,8 @@ def add_build_problems(report, card, built):
 
 def _check_card(card, samples, clearance):
     """The card's whole scaffold; mechanisms that do not build are findings of their own."""
-    import FreeCAD
-
     from popupwb import patch_titles, progress
+    from popupwb.validity import card_titles
     from popupwb.model import card_scaffold
     from popupwb.core import popupcore
 
@@ -98,11 +102,8 @@ def _check_card(card, samples, clearance):
         cancel=progress.CANCEL_FLAG,
     ).to_dict()
     add_build_problems(report, card, built)
-    patch_titles.add_titles(report, patch_titles.titles_of_card(card, built))
+    patch_titles.add_titles(report, card_titles.titles_of_card(card, built))
     card.CheckedDesign = built.digest
-    if FreeCAD.GuiUp:
-        from popupwb.viewproviders import patch_colours
-
-        patch_colours.highlight(card, built.digest, offending_patches(report))
-        patch_colours.colour_card_and_mechanisms(card)
+    for show in VERDICT_VIEWERS:
+        show(card, built.digest, offending_patches(report))
     return report

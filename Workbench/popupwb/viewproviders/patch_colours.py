@@ -21,6 +21,8 @@ OFFENDING = (0.90, 0.10, 0.10)
 
 _HIGHLIGHTS = {}  # (document name, card name) -> (design digest, set of patch ids)
 
+from popupwb.validity import check  # noqa: E402 -- below the view providers
+
 
 def highlight(card, digest, patch_ids):
     """Marks `patch_ids` of `card` red while its design digest is `digest`."""
@@ -106,3 +108,13 @@ def colour_card_and_mechanisms(card):
 
     for obj in [card] + card_scaffold.mechanisms_of(card):
         colour_object(obj)
+
+
+def show_verdict(card, digest, patch_ids):
+    """A check's verdict on screen: the patches its findings name in red, every colour redone."""
+    highlight(card, digest, patch_ids)
+    colour_card_and_mechanisms(card)
+
+
+if show_verdict not in check.VERDICT_VIEWERS:
+    check.VERDICT_VIEWERS.append(show_verdict)
