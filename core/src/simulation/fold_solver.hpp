@@ -1,8 +1,9 @@
 #pragma once
 // Internal: rigid-body kinematics of a scaffold. Every free body has a pose x -> R (x - c) + p
 // (c its design-state centre); hinges are point-coincidence constraints at both hinge ends; the
-// base bodies are driven by the fold angle. Solved per component by damped Gauss-Newton: dense
-// normal equations for small components, a sparse factorisation from kSparseFromBodies bodies.
+// base bodies are driven by the fold angle. Solved per component by damped Gauss-Newton on the
+// equations of fold_equations.hpp: dense normal equations (dense_least_squares) for small
+// components, a sparse factorisation (sparse_least_squares) from kSparseFromBodies bodies.
 #include <array>
 #include <vector>
 

@@ -11,8 +11,8 @@
 
 namespace popup {
 
-/// Not thread-safe per component and thread: each thread keeps a factorisation workspace per
-/// component between calls (the validity check solves on all cores).
+/// Each thread keeps its own factorisation workspace per component between calls (the validity
+/// check solves on all cores): calls from different threads share none.
 class SparseLeastSquares {
 public:
     explicit SparseLeastSquares(const FoldEquations& equations);
