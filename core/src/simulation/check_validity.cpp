@@ -14,6 +14,7 @@
 #include "crossing_test.hpp"
 #include "fold_solver.hpp"
 #include "free_motion.hpp"
+#include "simulate_validated.hpp"
 
 namespace popup {
 
@@ -173,25 +174,22 @@ std::vector<Crossing> find_crossings(const Scaffold& input, const FoldState& sta
     return out;
 }
 
-ValidityReport check_validity(const Scaffold& input, const ValidityOptions& options)
+namespace {
+
+void add_error(ValidityReport& report, DiagnosticCode code, std::string message,
+               DiagnosticSubject about = {})
 {
-    ValidityReport report;
-    Result<Scaffold> checked = validate_scaffold(input);
-    if (!checked.ok) {
-        report.diagnostics = checked.diagnostics;
-        return report;
-    }
-    const Scaffold& s = checked.value;
-    const double size = s.size();
-    report.model_size = size;
-    auto add = [&](DiagnosticCode code, std::string message, DiagnosticSubject about = {}) {
-        report.diagnostics.push_back(Diagnostic::error(code, std::move(message), std::move(about)));
-    };
+    report.diagnostics.push_back(Diagnostic::error(code, std::move(message), std::move(about)));
+}
+
+// False, with the reason in `report`, when an option is out of its range.
+bool options_in_range(const ValidityOptions& options, double size, ValidityReport& report)
+{
     if (options.samples < 2 || options.samples > 100000) {
-        add(DiagnosticCode::bad_option,
-            "samples = " + std::to_string(options.samples) + ", must be 2 to 100000",
-            about_parameter("samples"));
-        return report;
+        add_error(report, DiagnosticCode::bad_option,
+                  "samples = " + std::to_string(options.samples) + ", must be 2 to 100000",
+                  about_parameter("samples"));
+        return false;
     }
     // A gap wider than a twentieth of the card is no clearance any more: patches stand further
     // apart than that only far from each other, and the proximity test loses its meaning.
@@ -200,46 +198,43 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
         std::ostringstream m;
         m << "clearance = " << options.clearance << " mm, must be 0 to " << largest_clearance
           << " mm (5% of the model size)";
-        add(DiagnosticCode::bad_option, m.str(), about_parameter("clearance"));
-        return report;
+        add_error(report, DiagnosticCode::bad_option, m.str(), about_parameter("clearance"));
+        return false;
     }
     if (options.refine_depth < 0 || options.refine_depth > 30) {
-        add(DiagnosticCode::bad_option,
-            "refine_depth = " + std::to_string(options.refine_depth) + ", must be 0 to 30",
-            about_parameter("refine_depth"));
-        return report;
+        add_error(report, DiagnosticCode::bad_option,
+                  "refine_depth = " + std::to_string(options.refine_depth) + ", must be 0 to 30",
+                  about_parameter("refine_depth"));
+        return false;
     }
-    Result<BodyGraph> graph = build_body_graph(s);
-    if (!graph.ok) {
-        report.diagnostics = graph.diagnostics;
-        return report;
-    }
+    return true;
+}
 
-    // Sampled angles from open to closed, with the design state among them.
-    // π·k/(n-1) need not round to π at k = n-1: a sample a hair below the flat design state
-    // would be judged as an open state (stability, crossings) though it is the design state.
-    // Samples within rounding of the design angle are the design angle, exactly.
+// Sampled angles from open to closed, with the design state among them.
+// π·k/(n-1) need not round to π at k = n-1: a sample a hair below the flat design state
+// would be judged as an open state (stability, crossings) though it is the design state.
+// Samples within rounding of the design angle are the design angle, exactly.
+std::vector<double> sample_angles(const Scaffold& s, int samples)
+{
     std::vector<double> angles;
-    for (int k = options.samples - 1; k >= 0; --k) {
-        const double a = M_PI * k / (options.samples - 1);
+    for (int k = samples - 1; k >= 0; --k) {
+        const double a = M_PI * k / (samples - 1);
         angles.push_back(std::abs(a - s.design_angle) < 1e-12 ? s.design_angle : a);
     }
     if (std::none_of(angles.begin(), angles.end(), [&](double a) { return a == s.design_angle; })) {
         angles.push_back(s.design_angle);
         std::sort(angles.rbegin(), angles.rend());
     }
-    SimulationOptions simulation;
-    simulation.cancel = options.cancel;
-    simulation.dense_linear_algebra = options.dense_linear_algebra;
-    // One solver for the sweep and the checks after it; the scaffold is validated already.
-    const FoldSolver solver(s, graph.value, simulation);
-    const Result<FoldSweep> sim = simulate_validated(solver, angles);
-    for (const Diagnostic& d : sim.diagnostics)
-        report.diagnostics.push_back(d);
-    const FoldSweep& sweep = sim.value;
-    report.locked_at = sweep.locked_at;
+    return angles;
+}
 
-    // Foldable: the motion exists from 180° to 0°, stays rigid, and ends flat.
+// Foldable: the motion exists from 180° to 0°, stays rigid, and ends flat. Returns the closed
+// state, if the sweep reached it.
+const FoldState* judge_foldable(const Scaffold& s, const Result<FoldSweep>& sim,
+                                double flat_tolerance, ValidityReport& report)
+{
+    const FoldSweep& sweep = sim.value;
+    const double size = s.size();
     for (const FoldState& st : sweep.states) {
         report.max_hinge_residual = std::max(report.max_hinge_residual, st.hinge_residual);
         report.max_edge_strain = std::max(report.max_edge_strain, st.edge_strain);
@@ -248,7 +243,6 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
     for (const FoldState& st : sweep.states)
         if (st.angle == 0.0)
             closed = &st;
-    const double flat_tolerance = 1e-6 * size;
     if (closed) {
         int worst = -1;
         for (size_t i = 0; i < s.patches.size(); ++i)
@@ -258,11 +252,12 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
                     worst = int(i);
                 }
         if (report.flatness_at_zero > flat_tolerance)
-            add(DiagnosticCode::not_flat_when_closed,
-                describe(s.patches[worst]) + " stands " + millimetres(report.flatness_at_zero) +
-                    " off the page plane when the card is closed (allowed " +
-                    millimetres(flat_tolerance) + ")",
-                about_patches({s.patches[worst].id}, 0.0));
+            add_error(report, DiagnosticCode::not_flat_when_closed,
+                      describe(s.patches[worst]) + " stands " +
+                          millimetres(report.flatness_at_zero) +
+                          " off the page plane when the card is closed (allowed " +
+                          millimetres(flat_tolerance) + ")",
+                      about_patches({s.patches[worst].id}, 0.0));
     }
     const bool branch_ok =
         std::none_of(sim.diagnostics.begin(), sim.diagnostics.end(), [](const Diagnostic& d) {
@@ -271,12 +266,15 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
     report.foldable = sim.ok && sweep.complete && closed &&
                       report.flatness_at_zero <= flat_tolerance &&
                       report.max_hinge_residual <= 1e-9 * size && branch_ok;
-    if (!sim.ok)
-        return report;
+    return closed;
+}
 
-    // Stable: no free motion with the base held still, at every sampled angle strictly between.
-    // Components are independent and each owns its solver buffers: one thread per component,
-    // every sample in turn; the verdicts are merged in sample order.
+// Stable: no free motion with the base held still, at every sampled angle strictly between.
+// Components are independent and each owns its solver buffers: one thread per component,
+// every sample in turn; the verdicts are merged in sample order.
+void judge_stable(const Scaffold& s, const BodyGraph& graph, const FoldSolver& solver,
+                  const FoldSweep& sweep, const CancelFlag* cancel, ValidityReport& report)
+{
     std::vector<size_t> between;
     for (size_t k = 0; k < sweep.states.size(); ++k)
         if (sweep.states[k].angle > 0.0 && sweep.states[k].angle < M_PI)
@@ -285,12 +283,12 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
     tbb::parallel_for(size_t(0), between.size(), [&](size_t k) {
         configurations[k] = solver.configuration(sweep.states[between[k]]);
     });
-    const size_t components = graph.value.components.size();
+    const size_t components = graph.components.size();
     std::vector<std::vector<ComponentMotion>> motions(components);
     tbb::parallel_for(size_t(0), components, [&](size_t c) {
         motions[c].resize(between.size());
         for (size_t k = 0; k < between.size(); ++k) {
-            stop_if_cancelled(options.cancel, kWork);
+            stop_if_cancelled(cancel, kWork);
             motions[c][k] = component_free_motion(solver, int(c), configurations[k]);
         }
     });
@@ -307,22 +305,28 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
             continue;
         if (unstable_samples++ == 0) {
             std::sort(bodies.begin(), bodies.end());
-            const std::vector<int> moving = patches_of_bodies(s, graph.value, bodies);
+            const std::vector<int> moving = patches_of_bodies(s, graph, bodies);
             const FoldState& st = sweep.states[between[k]];
             std::ostringstream names;
             for (size_t i = 0; i < moving.size(); ++i)
                 names << (i ? ", " : "") << describe(*s.find_patch(moving[i]));
-            add(DiagnosticCode::unstable,
-                std::to_string(dimension) + " free motion(s) besides the fold angle at " +
-                    deg(st.angle) + ": " + names.str() + " can move while the base is held still",
-                about_patches(moving, st.angle * 180.0 / M_PI));
+            add_error(report, DiagnosticCode::unstable,
+                      std::to_string(dimension) + " free motion(s) besides the fold angle at " +
+                          deg(st.angle) + ": " + names.str() +
+                          " can move while the base is held still",
+                      about_patches(moving, st.angle * 180.0 / M_PI));
         }
     }
     report.stable = unstable_samples == 0 && !sweep.states.empty();
+}
 
-    // Intersection-free: no transversal cut at a sample and no pass-through between samples.
-    const std::vector<PatchMesh> meshes = mesh_patches(s);
-    const Checker checker{s, graph.value, solver, meshes, flat_tolerance, options.clearance};
+// Intersection-free: no transversal cut at a sample and no pass-through between samples.
+void judge_intersection_free(const Checker& checker, const FoldSweep& sweep,
+                             const ValidityOptions& options, ValidityReport& report)
+{
+    const Scaffold& s = checker.s;
+    const BodyGraph& graph = checker.graph;
+    const std::vector<PatchMesh>& meshes = checker.meshes;
     // Each sample (and the gap before it) is judged on its own, on all cores; only a pair's
     // onset depends on whether it crossed at the sample before, so that is done in order.
     struct PairAtSample {
@@ -330,7 +334,7 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
         double depth;   ///< > 0: crossing at the sample
         double through; ///< > 0: passed through between the previous sample and this one
     };
-    const double margin = flat_tolerance + options.clearance;
+    const double margin = checker.tolerance + options.clearance;
     std::vector<std::vector<PairAtSample>> samples(sweep.states.size());
     tbb::parallel_for(size_t(0), sweep.states.size(), [&](size_t k) {
         stop_if_cancelled(options.cancel, kWork);
@@ -340,7 +344,7 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
         pose_patches(meshes, sweep.states[k], here);
         if (k)
             pose_patches(meshes, sweep.states[k - 1], before);
-        for (const auto& [i, j] : candidate_pairs(here, graph.value.body_of_patch, margin)) {
+        for (const auto& [i, j] : candidate_pairs(here, graph.body_of_patch, margin)) {
             stop_if_cancelled(options.cancel, kWork); // a pair may be refined
             PairAtSample p{i, j, checker.depth(here, i, j), 0.0};
             if (p.depth <= 0.0 && k)
@@ -378,53 +382,99 @@ ValidityReport check_validity(const Scaffold& input, const ValidityOptions& opti
         const Patch& a = s.patches[key.first];
         const Patch& b = s.patches[key.second];
         report.crossings.push_back({a.id, b.id, f.angle, f.depth});
-        add(DiagnosticCode::intersection,
-            describe(a) + " passes through " + describe(b) + " from " + deg(f.angle) +
-                " (deepest " + millimetres(f.depth) + ")",
-            about_patches({a.id, b.id}, f.angle * 180.0 / M_PI));
+        add_error(report, DiagnosticCode::intersection,
+                  describe(a) + " passes through " + describe(b) + " from " + deg(f.angle) +
+                      " (deepest " + millimetres(f.depth) + ")",
+                  about_patches({a.id, b.id}, f.angle * 180.0 / M_PI));
     }
     report.intersection_free = findings.empty() && !sweep.states.empty();
+}
 
-    // Enclosed: when closed, every patch lies inside the base patches' outline.
-    if (closed) {
-        std::vector<Loop2> base;
-        for (int id : {s.ground, s.backdrop}) {
-            const int i = s.patch_index(id);
-            Loop2 loop;
-            for (const Vec3& x : posed_outline(s.patches[i], closed->poses[i]))
-                loop.push_back({x.y(), x.z()});
-            base.push_back(loop);
-        }
-        // Indexed: outlines from models have tens of thousands of vertices.
-        const IndexedLoops base_index[2] = {IndexedLoops({base[0]}), IndexedLoops({base[1]})};
-        report.enclosed = true;
-        for (size_t i = 0; i < s.patches.size(); ++i) {
-            double worst = 0.0;
-            Vec2 where = Vec2::Zero();
-            for (const Vec3& x : posed_outline(s.patches[i], closed->poses[i])) {
-                const Vec2 q(x.y(), x.z());
-                if (base_index[0].contains(q) || base_index[1].contains(q))
-                    continue;
-                const double out = std::min(base_index[0].distance_to_boundary(q),
-                                            base_index[1].distance_to_boundary(q));
-                if (out > worst) {
-                    worst = out;
-                    where = q;
-                }
-            }
-            if (worst > flat_tolerance) {
-                report.enclosed = false;
-                std::ostringstream m;
-                m << describe(s.patches[i]) << " sticks out of the closed card by "
-                  << millimetres(worst) << " at y = " << where.x() << " mm, z = " << where.y()
-                  << " mm";
-                add(DiagnosticCode::not_enclosed, m.str(), about_patches({s.patches[i].id}, 0.0));
-            }
-        }
-    } else {
-        add(DiagnosticCode::enclosure_unknown,
-            "the card never closes, so enclosure cannot be judged");
+// Enclosed: when closed, every patch lies inside the base patches' outline.
+void judge_enclosed(const Scaffold& s, const FoldState* closed, double flat_tolerance,
+                    ValidityReport& report)
+{
+    if (!closed) {
+        add_error(report, DiagnosticCode::enclosure_unknown,
+                  "the card never closes, so enclosure cannot be judged");
+        return;
     }
+    std::vector<Loop2> base;
+    for (int id : {s.ground, s.backdrop}) {
+        const int i = s.patch_index(id);
+        Loop2 loop;
+        for (const Vec3& x : posed_outline(s.patches[i], closed->poses[i]))
+            loop.push_back({x.y(), x.z()});
+        base.push_back(loop);
+    }
+    // Indexed: outlines from models have tens of thousands of vertices.
+    const IndexedLoops base_index[2] = {IndexedLoops({base[0]}), IndexedLoops({base[1]})};
+    report.enclosed = true;
+    for (size_t i = 0; i < s.patches.size(); ++i) {
+        double worst = 0.0;
+        Vec2 where = Vec2::Zero();
+        for (const Vec3& x : posed_outline(s.patches[i], closed->poses[i])) {
+            const Vec2 q(x.y(), x.z());
+            if (base_index[0].contains(q) || base_index[1].contains(q))
+                continue;
+            const double out = std::min(base_index[0].distance_to_boundary(q),
+                                        base_index[1].distance_to_boundary(q));
+            if (out > worst) {
+                worst = out;
+                where = q;
+            }
+        }
+        if (worst > flat_tolerance) {
+            report.enclosed = false;
+            std::ostringstream m;
+            m << describe(s.patches[i]) << " sticks out of the closed card by "
+              << millimetres(worst) << " at y = " << where.x() << " mm, z = " << where.y() << " mm";
+            add_error(report, DiagnosticCode::not_enclosed, m.str(),
+                      about_patches({s.patches[i].id}, 0.0));
+        }
+    }
+}
+
+} // namespace
+
+ValidityReport check_validity(const Scaffold& input, const ValidityOptions& options)
+{
+    ValidityReport report;
+    Result<Scaffold> checked = validate_scaffold(input);
+    if (!checked.ok) {
+        report.diagnostics = checked.diagnostics;
+        return report;
+    }
+    const Scaffold& s = checked.value;
+    const double size = s.size();
+    report.model_size = size;
+    if (!options_in_range(options, size, report))
+        return report;
+    Result<BodyGraph> graph = build_body_graph(s);
+    if (!graph.ok) {
+        report.diagnostics = graph.diagnostics;
+        return report;
+    }
+    SimulationOptions simulation;
+    simulation.cancel = options.cancel;
+    simulation.dense_linear_algebra = options.dense_linear_algebra;
+    // One solver for the sweep and the checks after it; the scaffold is validated already.
+    const FoldSolver solver(s, graph.value, simulation);
+    const Result<FoldSweep> sim = simulate_validated(solver, sample_angles(s, options.samples));
+    for (const Diagnostic& d : sim.diagnostics)
+        report.diagnostics.push_back(d);
+    const FoldSweep& sweep = sim.value;
+    report.locked_at = sweep.locked_at;
+
+    const double flat_tolerance = 1e-6 * size;
+    const FoldState* closed = judge_foldable(s, sim, flat_tolerance, report);
+    if (!sim.ok)
+        return report;
+    judge_stable(s, graph.value, solver, sweep, options.cancel, report);
+    const std::vector<PatchMesh> meshes = mesh_patches(s);
+    const Checker checker{s, graph.value, solver, meshes, flat_tolerance, options.clearance};
+    judge_intersection_free(checker, sweep, options, report);
+    judge_enclosed(s, closed, flat_tolerance, report);
     return report;
 }
 

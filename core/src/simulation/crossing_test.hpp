@@ -4,7 +4,7 @@
 #include <array>
 #include <vector>
 
-#include "popup/simulation/check_validity.hpp"
+#include "popup/simulation/fold_state.hpp"
 
 namespace popup {
 

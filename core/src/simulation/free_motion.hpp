@@ -1,7 +1,7 @@
 #pragma once
 // Internal: infinitesimal free motion of a configuration with the base held still.
 #include "fold_solver.hpp"
-#include "popup/simulation/check_validity.hpp"
+#include "popup/simulation/free_motion.hpp"
 
 namespace popup {
 

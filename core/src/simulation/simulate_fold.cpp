@@ -8,7 +8,9 @@
 #include <tbb/parallel_for.h>
 
 #include "body_graph.hpp"
+#include "component_track.hpp"
 #include "fold_solver.hpp"
+#include "simulate_validated.hpp"
 
 namespace popup {
 

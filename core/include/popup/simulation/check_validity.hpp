@@ -3,6 +3,7 @@
 
 #include "popup/model/result.hpp"
 #include "popup/model/scaffold.hpp"
+#include "popup/simulation/free_motion.hpp"
 #include "popup/simulation/simulate_fold.hpp"
 
 namespace popup {
@@ -40,14 +41,6 @@ struct ValidityReport {
 };
 
 ValidityReport check_validity(const Scaffold& scaffold, const ValidityOptions& options = {});
-
-/// Dimension of the free motion left when the base is held still at one state, and the ids of
-/// the patches that take part in it.
-struct FreeMotion {
-    int dimension = 0;
-    std::vector<int> moving_patches;
-};
-FreeMotion free_motion(const Scaffold& scaffold, const FoldState& state);
 
 /// Transversal cuts between patches at one state (stacked and hinge-sharing contact excluded).
 /// Verdicts use exact predicates (CGAL Epick); `tolerance` (mm) separates touching from crossing.
