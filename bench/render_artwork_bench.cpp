@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "popup/fitting/render_artwork.hpp"
+#include "popup/sheets/render_artwork.hpp"
 
 using namespace popup;
 

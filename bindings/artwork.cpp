@@ -1,11 +1,11 @@
-// Binding of the artwork rasteriser (core fitting/render_artwork): declarations and conversions.
+// Binding of the artwork rasteriser (core sheets/render_artwork): declarations and conversions.
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
 #include "binding_support.hpp"
-#include "popup/fitting/render_artwork.hpp"
+#include "popup/sheets/render_artwork.hpp"
 
 namespace py = pybind11;
 using namespace popup;

@@ -8,9 +8,9 @@
 
 #include "binding_support.hpp"
 #include "point_rows.hpp"
-#include "popup/fitting/clean_model.hpp"
 #include "popup/fitting/fit_metrics.hpp"
-#include "popup/fitting/load_model.hpp"
+#include "popup/input/clean_model.hpp"
+#include "popup/input/load_model.hpp"
 
 namespace py = pybind11;
 using namespace popup;

@@ -6,7 +6,7 @@
 
 #include "binding_support.hpp"
 #include "point_rows.hpp"
-#include "popup/fitting/model_mesh.hpp"
+#include "popup/input/model_mesh.hpp"
 
 namespace py = pybind11;
 using namespace popup;

@@ -271,6 +271,115 @@ Mat3 normal_principal_axes(const ModelMesh& model, Vec3* eigenvalues)
     return axes;
 }
 
+namespace {
+
+/// Mirror planes containing `up` (across e1 and e2) scored by the mean distance of the mirrored
+/// samples to the model.
+class MirrorScores {
+public:
+    MirrorScores(const ModelMesh& model, const std::vector<Vec3>& pts, const Vec3& centre,
+                 const Vec3& e1, const Vec3& e2, double cell)
+        : model_(model), pts_(pts), centre_(centre), e1_(e1), e2_(e2), grid_(pts, cell)
+    {
+    }
+
+    /// The plane of normal n through the middle of the model's extent along n (a mirror plane
+    /// passes there), every `stride`-th sample mirrored.
+    double normal(const Vec3& n, size_t stride) const
+    {
+        double lo = 1e300, hi = -1e300;
+        for (const Vec3& v : model_.vertices) {
+            lo = std::min(lo, v.dot(n));
+            hi = std::max(hi, v.dot(n));
+        }
+        const double middle = 0.5 * (lo + hi);
+        double sum = 0;
+        size_t count = 0;
+        for (size_t i = 0; i < pts_.size(); i += stride, ++count) {
+            const Vec3 q = pts_[i] - 2.0 * (pts_[i].dot(n) - middle) * n;
+            sum += grid_.distance(q);
+        }
+        return sum / double(count);
+    }
+
+    /// The plane through the centroid whose normal is at `theta` from e1 towards e2.
+    double at(double theta, size_t stride) const
+    {
+        const Vec3 n = std::cos(theta) * e1_ + std::sin(theta) * e2_;
+        double sum = 0;
+        size_t count = 0;
+        for (size_t i = 0; i < pts_.size(); i += stride, ++count) {
+            const Vec3 q = pts_[i] - 2.0 * (pts_[i] - centre_).dot(n) * n;
+            sum += grid_.distance(q);
+        }
+        return sum / double(count);
+    }
+
+    /// The model's extent along the normal at `theta`.
+    double extent_along(double theta) const
+    {
+        const Vec3 n = std::cos(theta) * e1_ + std::sin(theta) * e2_;
+        double lo = 1e300, hi = -1e300;
+        for (const Vec3& v : model_.vertices) {
+            lo = std::min(lo, v.dot(n));
+            hi = std::max(hi, v.dot(n));
+        }
+        return hi - lo;
+    }
+
+private:
+    const ModelMesh& model_;
+    const std::vector<Vec3>& pts_;
+    Vec3 centre_, e1_, e2_;
+    NearGrid grid_;
+};
+
+/// The angle of the best mirror plane (its fine score in `best`): a coarse scan; among planes as
+/// good as the best (a box has two), the one across the model's shortest horizontal extent, so
+/// the fold runs along its length (the card is wider than deep); then a fine scan around it.
+double best_mirror_angle(const MirrorScores& mirror, size_t coarse_stride, size_t fine_stride,
+                         double spacing, double& best)
+{
+    std::vector<double> scores(180);
+    for (int k = 0; k < 180; ++k)
+        scores[k] = mirror.at(k * M_PI / 180, coarse_stride);
+    const double lowest = *std::min_element(scores.begin(), scores.end());
+    double best_theta = 0, best_extent = 1e300;
+    best = 1e300;
+    for (int k = 0; k < 180; ++k) {
+        if (scores[k] > lowest + 0.1 * spacing + 1e-3 * lowest)
+            continue;
+        const double t = k * M_PI / 180, extent = mirror.extent_along(t);
+        if (extent < best_extent * (1 - 1e-6)) {
+            best_extent = extent;
+            best_theta = t;
+            best = scores[k];
+        }
+    }
+    const double coarse = best_theta;
+    best = mirror.at(coarse, fine_stride);
+    for (int k = -10; k <= 10; ++k) {
+        const double t = coarse + k * M_PI / 1800, s = mirror.at(t, fine_stride);
+        if (s < best - 1e-12) {
+            best = s;
+            best_theta = t;
+        }
+    }
+    // A mirror plane of a made object is usually across one of its NPCA axes: snap to it when
+    // it scores as well (the scan's noise would tilt the card by a tenth of a degree).
+    for (double axis_theta : {0.0, M_PI / 2}) {
+        const double d = std::remainder(best_theta - axis_theta, M_PI);
+        if (std::abs(d) < 2 * M_PI / 180 &&
+            mirror.at(axis_theta, fine_stride) <= best * 1.05 + 1e-12) {
+            best = std::min(best, mirror.at(axis_theta, fine_stride));
+            best_theta = axis_theta;
+        }
+    }
+    return best_theta;
+}
+
+} // namespace
+
 Result<std::vector<Alignment>> alignment_candidates(const ModelMesh& model,
                                                     const SurfaceSamples& samples,
                                                     const std::optional<Vec3>& up_option,
@@ -327,81 +436,13 @@ Result<std::vector<Alignment>> alignment_candidates(const ModelMesh& model,
     // distance of the mirrored samples to the model, coarse then fine.
     const double diagonal = std::max(model.diagonal(), 1e-300);
     const double cell = std::max(2.0 * samples.spacing, 1e-3 * diagonal);
-    NearGrid grid(pts, cell);
+    const MirrorScores mirror(model, pts, centre, e1, e2, cell);
     // The coarse scan mirrors 500 samples, the fine one 1500.
     const size_t fine_stride = std::max<size_t>(1, pts.size() / 1500);
     const size_t coarse_stride = std::max<size_t>(1, pts.size() / 500);
-    auto score_normal = [&](const Vec3& n, size_t stride) {
-        // Through the middle of the model's extent along n (a mirror plane passes there).
-        double lo = 1e300, hi = -1e300;
-        for (const Vec3& v : model.vertices) {
-            lo = std::min(lo, v.dot(n));
-            hi = std::max(hi, v.dot(n));
-        }
-        const double middle = 0.5 * (lo + hi);
-        double sum = 0;
-        size_t count = 0;
-        for (size_t i = 0; i < pts.size(); i += stride, ++count) {
-            const Vec3 q = pts[i] - 2.0 * (pts[i].dot(n) - middle) * n;
-            sum += grid.distance(q);
-        }
-        return sum / double(count);
-    };
-    auto score = [&](double theta, size_t stride) {
-        const Vec3 n = std::cos(theta) * e1 + std::sin(theta) * e2;
-        double sum = 0;
-        size_t count = 0;
-        for (size_t i = 0; i < pts.size(); i += stride, ++count) {
-            const Vec3 q = pts[i] - 2.0 * (pts[i] - centre).dot(n) * n;
-            sum += grid.distance(q);
-        }
-        return sum / double(count);
-    };
-    // Coarse scan; among planes as good as the best (a box has two), the one across the
-    // model's shortest horizontal extent, so the fold runs along its length (the card is wider
-    // than deep).
-    std::vector<double> scores(180);
-    for (int k = 0; k < 180; ++k)
-        scores[k] = score(k * M_PI / 180, coarse_stride);
-    const double lowest = *std::min_element(scores.begin(), scores.end());
-    auto extent_along = [&](double theta) {
-        const Vec3 n = std::cos(theta) * e1 + std::sin(theta) * e2;
-        double lo = 1e300, hi = -1e300;
-        for (const Vec3& v : model.vertices) {
-            lo = std::min(lo, v.dot(n));
-            hi = std::max(hi, v.dot(n));
-        }
-        return hi - lo;
-    };
-    double best_theta = 0, best = 1e300, best_extent = 1e300;
-    for (int k = 0; k < 180; ++k) {
-        if (scores[k] > lowest + 0.1 * samples.spacing + 1e-3 * lowest)
-            continue;
-        const double t = k * M_PI / 180, extent = extent_along(t);
-        if (extent < best_extent * (1 - 1e-6)) {
-            best_extent = extent;
-            best_theta = t;
-            best = scores[k];
-        }
-    }
-    const double coarse = best_theta;
-    best = score(coarse, fine_stride);
-    for (int k = -10; k <= 10; ++k) {
-        const double t = coarse + k * M_PI / 1800, s = score(t, fine_stride);
-        if (s < best - 1e-12) {
-            best = s;
-            best_theta = t;
-        }
-    }
-    // A mirror plane of a made object is usually across one of its NPCA axes: snap to it when
-    // it scores as well (the scan's noise would tilt the card by a tenth of a degree).
-    for (double axis_theta : {0.0, M_PI / 2}) {
-        const double d = std::remainder(best_theta - axis_theta, M_PI);
-        if (std::abs(d) < 2 * M_PI / 180 && score(axis_theta, fine_stride) <= best * 1.05 + 1e-12) {
-            best = std::min(best, score(axis_theta, fine_stride));
-            best_theta = axis_theta;
-        }
-    }
+    double best = 1e300;
+    const double best_theta =
+        best_mirror_angle(mirror, coarse_stride, fine_stride, samples.spacing, best);
     const Vec3 mirror_normal = std::cos(best_theta) * e1 + std::sin(best_theta) * e2;
 
     // Directions across the fold: the facing given, else the mirror plane's normal first, then
@@ -433,7 +474,7 @@ Result<std::vector<Alignment>> alignment_candidates(const ModelMesh& model,
             y = orient_by_skew(up.cross(n), pts, centre);
             x = y.cross(up);
         }
-        const double mirrored = k == 0 && !facing_option ? best : score_normal(x, fine_stride);
+        const double mirrored = k == 0 && !facing_option ? best : mirror.normal(x, fine_stride);
         std::vector<std::optional<double>> folds{std::nullopt};
         // No mirror plane across x: the fold may stand on one of the model's inner walls
         // across x instead, where a box's backbone is the wall (each a twentieth of its area).

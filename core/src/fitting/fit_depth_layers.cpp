@@ -1,36 +1,29 @@
 #include "popup/fitting/fit_depth_layers.hpp"
 
-#include "../geometry/clipper_paths.hpp"
-#include "outline_support.hpp"
-
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <set>
 #include <sstream>
 
+#include "layer_footprint.hpp"
+#include "outline_support.hpp"
 #include "popup/fitting/depth_layers.hpp"
 #include "popup/fitting/fit_metrics.hpp"
 #include "popup/mechanisms/box_fold.hpp"
 #include "popup/mechanisms/step_fold.hpp"
-#include "popup/model/apply_profile.hpp"
-#include "popup/model/profile.hpp"
 #include "popup/simulation/check_validity.hpp"
 
 namespace popup {
 
+using layer_footprint::cut_part;
+using layer_footprint::Footprint;
+using layer_footprint::footprint;
+using layer_footprint::patch_named;
 using outline_support::first_error;
 using outline_support::placed;
-using outline_support::record_cut;
 namespace {
-
-const Patch* patch_named(const Scaffold& s, const std::string& name)
-{
-    for (const Patch& p : s.patches)
-        if (p.name == name)
-            return &p;
-    return nullptr;
-}
 
 std::string mm(double x)
 {
@@ -46,92 +39,6 @@ std::string free_name(const std::string& prefix, const std::set<std::string>& ta
     for (int k = 1;; ++k)
         if (!taken.count(prefix + std::to_string(k)))
             return prefix + std::to_string(k);
-}
-
-/// A layer's silhouette in a host pair's own coordinates: (along the hinge, across it), where
-/// "across" runs along `across` (a world direction in the face's plane). Clipped to the room
-/// the pair offers: [0, length] along, [lo, hi] across. Loops in that 2-D frame, largest first.
-struct Footprint {
-    std::vector<Loop2> outer; ///< pieces, each counter-clockwise
-    std::vector<std::vector<Loop2>> holes;
-    double area = 0.0;                         ///< of the largest piece, holes removed
-    Vec2 lo = Vec2::Zero(), hi = Vec2::Zero(); ///< bounds of the largest piece
-};
-
-std::optional<Footprint> footprint(const Silhouette& sil, const ProfileFrame& face,
-                                   const BasePatchPair& pair, const Vec3& across, double lo,
-                                   double hi)
-{
-    using namespace ClipperLib;
-    auto to_pair = [&](const Loop2& loop) {
-        Loop2 out;
-        for (const Vec2& q : loop) {
-            const Vec3 d = face.to_world(q) - pair.origin;
-            out.push_back({d.dot(pair.axis), d.dot(across)});
-        }
-        return out;
-    };
-    Paths shape = counter_clockwise_paths({to_pair(sil.profile.outer)});
-    if (!sil.profile.holes.empty()) {
-        std::vector<Loop2> holes;
-        for (const Loop2& h : sil.profile.holes)
-            holes.push_back(to_pair(h));
-        Clipper c;
-        c.AddPaths(shape, ptSubject, true);
-        c.AddPaths(counter_clockwise_paths(holes), ptClip, true);
-        c.Execute(ctDifference, shape, pftNonZero, pftNonZero);
-    }
-    const Loop2 room{{0, lo}, {pair.length, lo}, {pair.length, hi}, {0, hi}};
-    PolyTree inside;
-    Clipper c;
-    c.AddPaths(shape, ptSubject, true);
-    c.AddPaths(counter_clockwise_paths({room}), ptClip, true);
-    c.Execute(ctIntersection, inside, pftNonZero, pftNonZero);
-    const PolyNode* best = nullptr;
-    double best_area = 0;
-    for (const PolyNode* n : inside.Childs) {
-        double a = std::abs(path_area(n->Contour));
-        for (const PolyNode* h : n->Childs)
-            a -= std::abs(path_area(h->Contour));
-        if (a > best_area) {
-            best_area = a;
-            best = n;
-        }
-    }
-    if (!best)
-        return std::nullopt;
-    Footprint f;
-    f.outer.push_back(to_loop(best->Contour));
-    f.holes.emplace_back();
-    for (const PolyNode* h : best->Childs)
-        f.holes.back().push_back(to_loop(h->Contour));
-    f.area = best_area;
-    f.lo = Vec2(1e300, 1e300);
-    f.hi = Vec2(-1e300, -1e300);
-    for (const Vec2& q : f.outer.front()) {
-        f.lo = f.lo.cwiseMin(q);
-        f.hi = f.hi.cwiseMax(q);
-    }
-    return f;
-}
-
-/// The footprint as a profile of `part` (a patch parallel to the face): pair coordinates back
-/// to world points, `lift` along the face's normal, into the part's profile frame.
-Profile profile_on(const Footprint& f, const BasePatchPair& pair, const Vec3& across,
-                   const ProfileFrame& part, const std::string& name)
-{
-    auto loop = [&](const Loop2& l) {
-        Loop2 out;
-        for (const Vec2& q : l)
-            out.push_back(part.to_frame(pair.origin + q.x() * pair.axis + q.y() * across));
-        return out;
-    };
-    Profile p;
-    p.name = name;
-    p.outer = loop(f.outer.front());
-    for (const Loop2& h : f.holes.front())
-        p.holes.push_back(loop(h));
-    return p;
 }
 
 FitMetricsOptions metric_options(const DepthLayerFitOptions& o)
@@ -167,52 +74,6 @@ struct Built {
     FittedMechanism mechanism;
     std::vector<FittedProfile> profiles;
 };
-
-/// Cuts `part` of mechanism `name` in `s` to the footprint; the profile it kept (none when the
-/// footprint covers the part), or the refusal.
-Result<std::optional<FittedProfile>> cut_part(Scaffold& s, const std::string& name,
-                                              const std::string& part, const Footprint& f,
-                                              const BasePatchPair& pair, const Vec3& across)
-{
-    Result<std::optional<FittedProfile>> r;
-    const Patch* p = patch_named(s, name + "." + part);
-    if (!p) {
-        r.fail(DiagnosticCode::unknown_patch, name + " has no part " + part);
-        return r;
-    }
-    const int id = p->id;
-    const Result<ProfileFrame> frame = profile_frame(s, id);
-    if (!frame.ok) {
-        r.fail_with(frame.diagnostics);
-        return r;
-    }
-    const Profile profile = profile_on(f, pair, across, frame.value, "depth layer silhouette");
-    Scaffold before = s;
-    const Result<ProfileApplied> applied = apply_profile(s, id, profile);
-    if (!applied.ok) {
-        r.fail_with(applied.diagnostics);
-        return r;
-    }
-    if (std::abs(applied.value.area_after - applied.value.area_before) <=
-        1e-6 * applied.value.area_before) {
-        s = std::move(before); // covers the part: no stored outline (as fit_outlines)
-        return r;
-    }
-    FittedProfile fp;
-    fp.mechanism = name;
-    fp.part = part;
-    const Patch& cut = *s.find_patch(id);
-    Vec2 lo(1e300, 1e300), hi(-1e300, -1e300);
-    for (const Vec3& x : before.find_patch(id)->outer) {
-        const Vec2 q = frame.value.to_frame(x);
-        lo = lo.cwiseMin(q);
-        hi = hi.cwiseMax(q);
-    }
-    fp.reference = hi - lo;
-    record_cut(fp, cut, applied.value);
-    r.value = fp;
-    return r;
-}
 
 /// The triangles of `model` whose centroid lies over the pair's room: [0, length] along its
 /// hinge, [lo, hi] along `across` (the vertices are kept whole; unused ones do no harm).
@@ -275,6 +136,244 @@ std::vector<std::string> facing_parts(const Scaffold& s, const std::string& name
     return out;
 }
 
+/// A box's face as the ground of its layers: the pair a layer stands on, the direction across
+/// its hinge in the world and the room it offers there, and the face's layers.
+struct FaceGround {
+    Face face;
+    BasePatchPair pair;
+    Patch face_patch; ///< as it was before any layer of it was kept
+    ProfileFrame frame;
+    Vec3 across = Vec3::UnitX();
+    bool wall = false;
+    bool wall_is_backdrop = false;
+    double wall_height = 0.0, page_room = 0.0;
+    double lo = 0.0, hi = 0.0; ///< the room along `across`
+    std::vector<DepthLayer> layers;
+};
+
+/// `face` of a box in `s` with its layers, or none when the design has no such patch or pair, or
+/// no face of the model faces it there.
+std::optional<FaceGround> face_ground(const Face& face, const Scaffold& s,
+                                      const std::map<std::string, BasePatchPair>& pairs,
+                                      const ModelMesh& in_card)
+{
+    const Patch* patch = patch_named(s, face.patch);
+    const auto pair_it = pairs.find(face.pair);
+    if (!patch || pair_it == pairs.end())
+        return std::nullopt;
+    const BasePatchPair& pair = pair_it->second;
+    const Patch face_patch = *patch; // s changes as layers are kept
+    const int patch_id = face_patch.id;
+    // Across the pair's hinge in the world: up the box's wall (L is a side pair's
+    // backdrop, R its ground), or the top's ground side. A wall layer is a step on the
+    // side pair; a top layer a box on the top pair.
+    const bool wall = face.label != "top";
+    const bool wall_is_backdrop = face.label == "front";
+    const Vec2 bd = wall_is_backdrop ? pair.backdrop_direction() : pair.ground_direction();
+    const Vec3 across = (bd.x() * pair.x_axis() + bd.y() * pair.up).normalized();
+    const double wall_height = wall_is_backdrop ? pair.backdrop_depth : pair.ground_depth;
+    const double page_room = wall_is_backdrop ? pair.ground_depth : pair.backdrop_depth;
+    const double lo = wall ? 0.0 : -pair.backdrop_depth;
+    const double hi = wall ? wall_height : pair.ground_depth;
+    // Only the model in front of the pair's room is clustered: another part of the
+    // model at a similar depth elsewhere must not pull a layer's depth.
+    const Result<ProfileFrame> frame = profile_frame(s, patch_id);
+    DepthLayerOptions dlo;
+    dlo.min_gap = 0.02 * in_card.diagonal();
+    const Result<std::vector<DepthLayer>> layers =
+        depth_layers(in_front_of(in_card, pair, across, lo, hi), s, patch_id, dlo);
+    if (!frame.ok || !layers.ok)
+        return std::nullopt; // no face of the model faces it there: nothing to layer
+    return FaceGround{
+        face,        pair,      face_patch, frame.value, across,      wall, wall_is_backdrop,
+        wall_height, page_room, lo,         hi,          layers.value};
+}
+
+/// What every layer's trial reads besides its face.
+struct LayerRules {
+    const ModelMesh& model;
+    const Eigen::Matrix4d& model_to_card;
+    const std::vector<FittedMechanism>& mechanisms; ///< the fitted design's
+    const DepthLayerFitOptions& options;
+    const ValidityOptions& vo;
+    double min_part = 0.0;
+    double margin = 0.0; ///< parameters stay this far inside their generator's ranges (mm)
+};
+
+/// The nested mechanism for a layer of footprint `f`, strictly inside its generator's ranges.
+FittedMechanism layer_mechanism(const FittedMechanism& box, const FaceGround& g,
+                                const DepthLayer& layer, const Footprint& f, double margin,
+                                const std::set<std::string>& taken)
+{
+    const Face& face = g.face;
+    const BasePatchPair& pair = g.pair;
+    const bool wall = g.wall, wall_is_backdrop = g.wall_is_backdrop;
+    const double width = f.hi.x() - f.lo.x();
+    const double rise = f.hi.y();
+    FittedMechanism m;
+    m.host = face.pair;
+    auto& q = m.parameters;
+    const double w = std::min(width, pair.length - 2 * margin);
+    q["offset"] = std::clamp(f.lo.x(), margin, pair.length - margin - w);
+    q["width"] = w;
+    if (wall) {
+        // Along the page: the layer's depth; up the wall: its top.
+        m.type = "step_fold";
+        m.name = free_name("S", taken);
+        const double run = std::min(layer.depth, g.page_room - margin);
+        const double up = std::min(rise, g.wall_height - margin);
+        q["run_ground"] = wall_is_backdrop ? run : up;
+        q["run_backdrop"] = wall_is_backdrop ? up : run;
+    } else {
+        m.type = "box_fold";
+        m.name = free_name("B", taken);
+        q["depth_ground"] = std::min(f.hi.y(), pair.ground_depth - margin);
+        q["depth_backdrop"] = std::min(-f.lo.y(), pair.backdrop_depth - margin);
+        q["height"] = layer.depth;
+        q["panel_pairs"] = 1;
+        q["front"] = 1;
+        q["back"] = 1;
+    }
+    m.primitive = face.label + " depth layer of " + box.name + " at " + mm(layer.depth) + " mm";
+    return m;
+}
+
+/// `trial.mechanism` built on `trial.scaffold` and its parts parallel to the face cut to the
+/// layer's footprint; empty, or why not.
+std::string build_layer(const FaceGround& g, const Footprint& f, Built& trial)
+{
+    const BasePatchPair& pair = g.pair;
+    const FittedMechanism& m = trial.mechanism;
+    const auto& q = m.parameters;
+    Result<MechanismParts> added;
+    if (g.wall) {
+        StepFoldParams sp;
+        sp.offset = q.at("offset");
+        sp.width = q.at("width");
+        sp.run_ground = q.at("run_ground");
+        sp.run_backdrop = q.at("run_backdrop");
+        added = add_step_fold(trial.scaffold, pair, sp, m.name);
+    } else {
+        BoxFoldParams bp;
+        bp.offset = q.at("offset");
+        bp.width = q.at("width");
+        bp.depth_ground = q.at("depth_ground");
+        bp.depth_backdrop = q.at("depth_backdrop");
+        bp.height = q.at("height");
+        added = add_box_fold(trial.scaffold, pair, bp, m.name);
+    }
+    if (!added.ok)
+        return "its generator refused it: " + first_error(added.diagnostics, "out of range");
+    // The parts parallel to the face (what the viewer sees of the layer) take its
+    // silhouette: a step's riser on a front, its tread on a back (on the backdrop
+    // side pair the wall is the ground), a box's top.
+    for (const std::string& part : facing_parts(trial.scaffold, m.name, g.face_patch, g.wall)) {
+        Result<std::optional<FittedProfile>> cut =
+            cut_part(trial.scaffold, m.name, part, f, pair, g.across);
+        if (!cut.ok)
+            return "its " + part + " could not take the layer's outline: " +
+                   first_error(cut.diagnostics, "refused");
+        if (cut.value)
+            trial.profiles.push_back(*cut.value);
+    }
+    return {};
+}
+
+/// Tries `layer` of `g` as a nested mechanism: kept into `out` while the design stays valid and
+/// the model-to-pop-up mean distance drops (`measure_baseline` measures the design's once),
+/// dropped otherwise; either way reported in out.layers and out.repairs.
+void try_layer(const FittedMechanism& box, const FaceGround& g, const DepthLayer& layer,
+               const LayerRules& rules, const std::function<bool()>& measure_baseline,
+               std::set<std::string>& taken, DepthLayerOutcome& out)
+{
+    const Face& face = g.face;
+    const BasePatchPair& pair = g.pair;
+    const bool wall = g.wall;
+    const double min_part = rules.min_part;
+    FittedDepthLayer report;
+    report.box = box.name;
+    report.face = face.label;
+    report.depth = layer.depth;
+    auto drop = [&](const std::string& why) {
+        report.reason = why;
+        out.repairs.push_back(
+            {report.mechanism.empty() ? box.name : report.mechanism, "layer dropped",
+             face.label + " layer " + mm(layer.depth) + " mm proud of " + face.patch + ": " + why});
+        out.layers.push_back(report);
+    };
+    const std::optional<Footprint> f =
+        footprint(layer.silhouette, g.frame, pair, g.across, g.lo, g.hi);
+    if (!f) {
+        drop("its silhouette lies outside what " + face.pair + " offers");
+        return;
+    }
+    report.area = f->area;
+    // What already stands on the pair there models that part of the model (a
+    // fitted primitive, or an earlier layer): a layer there would duplicate it.
+    const std::string occupied =
+        occupant(rules.mechanisms, out.mechanisms, face.pair, f->lo.x(), f->hi.x());
+    if (!occupied.empty()) {
+        drop(face.pair + " already carries " + occupied + " along " + mm(f->lo.x()) + " to " +
+             mm(f->hi.x()) + " mm of its hinge");
+        return;
+    }
+    const double width = f->hi.x() - f->lo.x();
+    const double rise = f->hi.y();
+    std::ostringstream small;
+    if (width < min_part)
+        small << "its width along the hinge " << mm(width) << " mm";
+    else if (layer.depth < min_part)
+        small << "it stands only " << mm(layer.depth) << " mm proud";
+    else if (wall && rise < min_part)
+        small << "its top is only " << mm(rise) << " mm up the wall";
+    else if (!wall && (f->hi.y() < min_part || -f->lo.y() < min_part))
+        small << "it reaches " << mm(f->hi.y()) << " mm to the ground side and " << mm(-f->lo.y())
+              << " mm to the backdrop side of " << face.pair << "'s fold (a box fold needs both)";
+    if (!small.str().empty()) {
+        drop(small.str() + ", below min_part_mm = " + mm(min_part) + " mm");
+        return;
+    }
+    const FittedMechanism m = layer_mechanism(box, g, layer, *f, rules.margin, taken);
+    report.mechanism = m.name;
+    Built trial{out.scaffold, m, {}};
+    const std::string refused = build_layer(g, *f, trial);
+    if (!refused.empty()) {
+        drop(refused);
+        return;
+    }
+    const ValidityReport check = check_validity(trial.scaffold, rules.vo);
+    if (!check.valid()) {
+        drop("the validity check failed with it: " + first_error(check.diagnostics, "not valid"));
+        return;
+    }
+    if (!measure_baseline()) {
+        drop("the design's distance to the model could not be measured");
+        return;
+    }
+    const std::optional<double> after =
+        mean_distance(rules.model, rules.model_to_card, trial.scaffold, rules.options);
+    report.mean_before_mm = out.mean_after_mm;
+    report.mean_after_mm = after ? *after : 0.0;
+    if (!after || !(*after < out.mean_after_mm)) {
+        drop("the model-to-pop-up mean distance would go from " + mm(out.mean_after_mm) + " to " +
+             (after ? mm(*after) : "unmeasured") + " mm");
+        return;
+    }
+    report.kept = true;
+    report.reason = "valid, and the model-to-pop-up mean distance drops from " +
+                    mm(out.mean_after_mm) + " to " + mm(*after) + " mm";
+    out.repairs.push_back({m.name, "layer kept",
+                           face.label + " layer " + mm(layer.depth) + " mm proud of " + face.patch +
+                               ": " + report.reason});
+    out.layers.push_back(report);
+    out.mean_after_mm = *after;
+    out.scaffold = std::move(trial.scaffold);
+    out.mechanisms.push_back(m);
+    for (const FittedProfile& fp : trial.profiles)
+        out.profiles.push_back(fp);
+    taken.insert(m.name);
+}
+
 } // namespace
 
 Result<DepthLayerOutcome>
@@ -327,6 +426,7 @@ fit_depth_layers(const ModelMesh& model, const Eigen::Matrix4d& model_to_card,
         options.range_margin > 0 ? options.range_margin : 1e-6 * std::max(1.0, in_card.diagonal());
     ValidityOptions vo;
     vo.cancel = cancel;
+    const LayerRules rules{model, model_to_card, mechanisms, options, vo, min_part, margin};
     for (const FittedMechanism& box : mechanisms) {
         if (box.type != "box_fold")
             continue;
@@ -334,36 +434,12 @@ fit_depth_layers(const ModelMesh& model, const Eigen::Matrix4d& model_to_card,
                                  Face{"back", box.name + ".R", box.name + ".side_backdrop"},
                                  Face{"top", box.name + ".TG", box.name + ".top"}}) {
             stop_if_cancelled(cancel, "depth layers");
-            const Patch* patch = patch_named(out.scaffold, face.patch);
-            const auto pair_it = pairs.find(face.pair);
-            if (!patch || pair_it == pairs.end())
+            const std::optional<FaceGround> g = face_ground(face, out.scaffold, pairs, in_card);
+            if (!g)
                 continue;
-            const BasePatchPair& pair = pair_it->second;
-            const Patch face_patch = *patch; // out.scaffold changes as layers are kept
-            const int patch_id = face_patch.id;
-            // Across the pair's hinge in the world: up the box's wall (L is a side pair's
-            // backdrop, R its ground), or the top's ground side. A wall layer is a step on the
-            // side pair; a top layer a box on the top pair.
-            const bool wall = face.label != "top";
-            const bool wall_is_backdrop = face.label == "front";
-            const Vec2 bd = wall_is_backdrop ? pair.backdrop_direction() : pair.ground_direction();
-            const Vec3 across = (bd.x() * pair.x_axis() + bd.y() * pair.up).normalized();
-            const double wall_height = wall_is_backdrop ? pair.backdrop_depth : pair.ground_depth;
-            const double page_room = wall_is_backdrop ? pair.ground_depth : pair.backdrop_depth;
-            const double lo = wall ? 0.0 : -pair.backdrop_depth;
-            const double hi = wall ? wall_height : pair.ground_depth;
-            // Only the model in front of the pair's room is clustered: another part of the
-            // model at a similar depth elsewhere must not pull a layer's depth.
-            const Result<ProfileFrame> frame = profile_frame(out.scaffold, patch_id);
-            DepthLayerOptions dlo;
-            dlo.min_gap = 0.02 * in_card.diagonal();
-            const Result<std::vector<DepthLayer>> layers = depth_layers(
-                in_front_of(in_card, pair, across, lo, hi), out.scaffold, patch_id, dlo);
-            if (!frame.ok || !layers.ok)
-                continue; // no face of the model faces it there: nothing to layer
             // The face's own layer is the one nearest its plane; a layer counts as standing
             // proud when its faces all lie in front of that one's.
-            const std::vector<DepthLayer>& all = layers.value;
+            const std::vector<DepthLayer>& all = g->layers;
             size_t own = 0;
             for (size_t k = 1; k < all.size(); ++k)
                 if (std::abs(all[k].depth) < std::abs(all[own].depth))
@@ -371,155 +447,7 @@ fit_depth_layers(const ModelMesh& model, const Eigen::Matrix4d& model_to_card,
             for (size_t k = 0; k < all.size(); ++k) {
                 if (k == own || all[k].depth_near <= all[own].depth_far)
                     continue; // the face itself, or behind it: nothing stands there
-                const DepthLayer& layer = all[k];
-                FittedDepthLayer report;
-                report.box = box.name;
-                report.face = face.label;
-                report.depth = layer.depth;
-                auto drop = [&](const std::string& why) {
-                    report.reason = why;
-                    out.repairs.push_back({report.mechanism.empty() ? box.name : report.mechanism,
-                                           "layer dropped",
-                                           face.label + " layer " + mm(layer.depth) +
-                                               " mm proud of " + face.patch + ": " + why});
-                    out.layers.push_back(report);
-                };
-                const std::optional<Footprint> f =
-                    footprint(layer.silhouette, frame.value, pair, across, lo, hi);
-                if (!f) {
-                    drop("its silhouette lies outside what " + face.pair + " offers");
-                    continue;
-                }
-                report.area = f->area;
-                // What already stands on the pair there models that part of the model (a
-                // fitted primitive, or an earlier layer): a layer there would duplicate it.
-                const std::string occupied =
-                    occupant(mechanisms, out.mechanisms, face.pair, f->lo.x(), f->hi.x());
-                if (!occupied.empty()) {
-                    drop(face.pair + " already carries " + occupied + " along " + mm(f->lo.x()) +
-                         " to " + mm(f->hi.x()) + " mm of its hinge");
-                    continue;
-                }
-                const double width = f->hi.x() - f->lo.x();
-                const double rise = f->hi.y();
-                std::ostringstream small;
-                if (width < min_part)
-                    small << "its width along the hinge " << mm(width) << " mm";
-                else if (layer.depth < min_part)
-                    small << "it stands only " << mm(layer.depth) << " mm proud";
-                else if (wall && rise < min_part)
-                    small << "its top is only " << mm(rise) << " mm up the wall";
-                else if (!wall && (f->hi.y() < min_part || -f->lo.y() < min_part))
-                    small << "it reaches " << mm(f->hi.y()) << " mm to the ground side and "
-                          << mm(-f->lo.y()) << " mm to the backdrop side of " << face.pair
-                          << "'s fold (a box fold needs both)";
-                if (!small.str().empty()) {
-                    drop(small.str() + ", below min_part_mm = " + mm(min_part) + " mm");
-                    continue;
-                }
-                // The nested mechanism, strictly inside its generator's ranges.
-                FittedMechanism m;
-                m.host = face.pair;
-                auto& q = m.parameters;
-                const double w = std::min(width, pair.length - 2 * margin);
-                q["offset"] = std::clamp(f->lo.x(), margin, pair.length - margin - w);
-                q["width"] = w;
-                if (wall) {
-                    // Along the page: the layer's depth; up the wall: its top.
-                    m.type = "step_fold";
-                    m.name = free_name("S", taken);
-                    const double run = std::min(layer.depth, page_room - margin);
-                    const double up = std::min(rise, wall_height - margin);
-                    q["run_ground"] = wall_is_backdrop ? run : up;
-                    q["run_backdrop"] = wall_is_backdrop ? up : run;
-                } else {
-                    m.type = "box_fold";
-                    m.name = free_name("B", taken);
-                    q["depth_ground"] = std::min(f->hi.y(), pair.ground_depth - margin);
-                    q["depth_backdrop"] = std::min(-f->lo.y(), pair.backdrop_depth - margin);
-                    q["height"] = layer.depth;
-                    q["panel_pairs"] = 1;
-                    q["front"] = 1;
-                    q["back"] = 1;
-                }
-                m.primitive =
-                    face.label + " depth layer of " + box.name + " at " + mm(layer.depth) + " mm";
-                report.mechanism = m.name;
-                Built trial{out.scaffold, m, {}};
-                Result<MechanismParts> added;
-                if (wall) {
-                    StepFoldParams sp;
-                    sp.offset = q["offset"];
-                    sp.width = q["width"];
-                    sp.run_ground = q["run_ground"];
-                    sp.run_backdrop = q["run_backdrop"];
-                    added = add_step_fold(trial.scaffold, pair, sp, m.name);
-                } else {
-                    BoxFoldParams bp;
-                    bp.offset = q["offset"];
-                    bp.width = q["width"];
-                    bp.depth_ground = q["depth_ground"];
-                    bp.depth_backdrop = q["depth_backdrop"];
-                    bp.height = q["height"];
-                    added = add_box_fold(trial.scaffold, pair, bp, m.name);
-                }
-                if (!added.ok) {
-                    drop("its generator refused it: " +
-                         first_error(added.diagnostics, "out of range"));
-                    continue;
-                }
-                // The parts parallel to the face (what the viewer sees of the layer) take its
-                // silhouette: a step's riser on a front, its tread on a back (on the backdrop
-                // side pair the wall is the ground), a box's top.
-                bool cut_ok = true;
-                for (const std::string& part :
-                     facing_parts(trial.scaffold, m.name, face_patch, wall)) {
-                    Result<std::optional<FittedProfile>> cut =
-                        cut_part(trial.scaffold, m.name, part, *f, pair, across);
-                    if (!cut.ok) {
-                        drop("its " + part + " could not take the layer's outline: " +
-                             first_error(cut.diagnostics, "refused"));
-                        cut_ok = false;
-                        break;
-                    }
-                    if (cut.value)
-                        trial.profiles.push_back(*cut.value);
-                }
-                if (!cut_ok)
-                    continue;
-                const ValidityReport check = check_validity(trial.scaffold, vo);
-                if (!check.valid()) {
-                    drop("the validity check failed with it: " +
-                         first_error(check.diagnostics, "not valid"));
-                    continue;
-                }
-                if (!measure_baseline()) {
-                    drop("the design's distance to the model could not be measured");
-                    continue;
-                }
-                const std::optional<double> after =
-                    mean_distance(model, model_to_card, trial.scaffold, options);
-                report.mean_before_mm = out.mean_after_mm;
-                report.mean_after_mm = after ? *after : 0.0;
-                if (!after || !(*after < out.mean_after_mm)) {
-                    drop("the model-to-pop-up mean distance would go from " +
-                         mm(out.mean_after_mm) + " to " + (after ? mm(*after) : "unmeasured") +
-                         " mm");
-                    continue;
-                }
-                report.kept = true;
-                report.reason = "valid, and the model-to-pop-up mean distance drops from " +
-                                mm(out.mean_after_mm) + " to " + mm(*after) + " mm";
-                out.repairs.push_back({m.name, "layer kept",
-                                       face.label + " layer " + mm(layer.depth) + " mm proud of " +
-                                           face.patch + ": " + report.reason});
-                out.layers.push_back(report);
-                out.mean_after_mm = *after;
-                out.scaffold = std::move(trial.scaffold);
-                out.mechanisms.push_back(m);
-                for (const FittedProfile& fp : trial.profiles)
-                    out.profiles.push_back(fp);
-                taken.insert(m.name);
+                try_layer(box, *g, all[k], rules, measure_baseline, taken, out);
             }
         }
     }

@@ -187,6 +187,109 @@ DistanceStats relative(const DistanceStats& s, double diagonal)
     return {s.mean / diagonal, s.rms / diagonal, s.max / diagonal};
 }
 
+/// The fitted prisms as convex cells (their hulls' face planes), for the volume; refused, naming
+/// the prism, when a corner is not finite or the corners span no volume.
+Result<std::vector<ConvexCell>> prism_cells(const std::vector<std::vector<Vec3>>& prisms,
+                                            double diagonal_mm)
+{
+    Result<std::vector<ConvexCell>> r;
+    std::vector<ConvexCell>& cells = r.value;
+    for (size_t i = 0; i < prisms.size(); ++i) {
+        const std::string name = "prisms[" + std::to_string(i) + "]";
+        std::vector<Point> corners;
+        for (const Vec3& c : prisms[i]) {
+            if (!c.allFinite()) {
+                r.fail(DiagnosticCode::bad_option,
+                       "fit metrics: " + name + " has a non-finite corner, corners must be finite",
+                       about_parameter("prisms"));
+                return r;
+            }
+            corners.push_back(point(c));
+        }
+        Mesh hull;
+        if (corners.size() >= 4)
+            CGAL::convex_hull_3(corners.begin(), corners.end(), hull);
+        if (corners.size() < 4 || hull.number_of_faces() < 4 ||
+            std::abs(PMP::volume(hull)) <= 1e-12 * std::pow(diagonal_mm, 3)) {
+            r.fail(DiagnosticCode::bad_option,
+                   "fit metrics: " + name + " has " + std::to_string(corners.size()) +
+                       " corners spanning no volume, needs at least 4 not in one plane",
+                   about_parameter("prisms"));
+            return r;
+        }
+        ConvexCell cell;
+        for (Mesh::Face_index f : hull.faces()) {
+            const Mesh::Halfedge_index h = hull.halfedge(f);
+            cell.planes.emplace_back(hull.point(hull.source(h)), hull.point(hull.target(h)),
+                                     hull.point(hull.target(hull.next(h))));
+        }
+        cell.box = CGAL::bbox_3(corners.begin(), corners.end());
+        cells.push_back(std::move(cell));
+    }
+    return r;
+}
+
+/// Volume: only a closed model has an inside. The model (`card_points`, its box [lo, hi]) and
+/// the prisms' cells on one grid of `volume_cells` along its longest side; cell centres are
+/// tested. Sets m's model_closed, volumes and volume difference; a model thinner than a cell
+/// gets a warning instead.
+void measure_volume(const ModelMesh& model, const std::vector<Point>& card_points, const Vec3& lo,
+                    const Vec3& hi, const std::vector<ConvexCell>& cells, int volume_cells,
+                    FitMetrics& m, Diagnostics& warnings)
+{
+    std::vector<std::vector<std::size_t>> polygons;
+    for (const auto& t : model.triangles)
+        polygons.push_back({std::size_t(t[0]), std::size_t(t[1]), std::size_t(t[2])});
+    Mesh solid;
+    if (PMP::is_polygon_soup_a_polygon_mesh(polygons)) {
+        PMP::polygon_soup_to_polygon_mesh(card_points, polygons, solid);
+        m.model_closed = CGAL::is_closed(solid);
+    }
+    // The grid spans the model and the prisms; cell centres are tested.
+    Vec3 grid_lo = lo, grid_hi = hi;
+    for (const ConvexCell& cell : cells) {
+        grid_lo = grid_lo.cwiseMin(Vec3(cell.box.xmin(), cell.box.ymin(), cell.box.zmin()));
+        grid_hi = grid_hi.cwiseMax(Vec3(cell.box.xmax(), cell.box.ymax(), cell.box.zmax()));
+    }
+    const double h = (grid_hi - grid_lo).maxCoeff() / volume_cells;
+    const Eigen::Vector3i n = ((grid_hi - grid_lo) / h).array().ceil().cast<int>().max(1).matrix();
+    auto in_prisms = [&](const Point& p) {
+        for (const ConvexCell& cell : cells)
+            if (cell.contains(p))
+                return true;
+        return false;
+    };
+    long in_model = 0, in_popup = 0, in_either_only = 0;
+    std::unique_ptr<CGAL::Side_of_triangle_mesh<Mesh, Kernel>> inside;
+    if (m.model_closed) {
+        m.model_volume_mm3 = std::abs(CGAL::to_double(PMP::volume(solid)));
+        inside = std::make_unique<CGAL::Side_of_triangle_mesh<Mesh, Kernel>>(solid);
+    }
+    for (int i = 0; i < n.x(); ++i)
+        for (int j = 0; j < n.y(); ++j)
+            for (int k = 0; k < n.z(); ++k) {
+                const Point p(grid_lo.x() + (i + 0.5) * h, grid_lo.y() + (j + 0.5) * h,
+                              grid_lo.z() + (k + 0.5) * h);
+                // Outside the model's box no ray needs shooting.
+                const bool in_box = p.x() >= lo.x() && p.x() <= hi.x() && p.y() >= lo.y() &&
+                                    p.y() <= hi.y() && p.z() >= lo.z() && p.z() <= hi.z();
+                const bool a = inside && in_box && (*inside)(p) == CGAL::ON_BOUNDED_SIDE;
+                const bool b = in_prisms(p);
+                in_model += a;
+                in_popup += b;
+                in_either_only += a != b;
+            }
+    m.popup_volume_mm3 = double(in_popup) * h * h * h;
+    if (m.model_closed && in_model > 0)
+        m.volume_difference = double(in_either_only) / double(in_model);
+    else if (m.model_closed)
+        warnings.push_back(Diagnostic::warning(
+            DiagnosticCode::bad_option,
+            "fit metrics: the model is thinner than one grid cell (" + std::to_string(h) +
+                " mm); raise volume_cells for a volume difference",
+            about_parameter("volume_cells")));
+}
+
 } // namespace
 
 Result<FitMetrics> fit_metrics(const ModelMesh& model, const Eigen::Matrix4d& model_to_card,
@@ -274,33 +377,10 @@ Result<FitMetrics> fit_metrics(const ModelMesh& model, const Eigen::Matrix4d& mo
         return result;
     }
 
-    std::vector<ConvexCell> cells;
-    for (size_t i = 0; i < prisms.size(); ++i) {
-        const std::string name = "prisms[" + std::to_string(i) + "]";
-        std::vector<Point> corners;
-        for (const Vec3& c : prisms[i]) {
-            if (!c.allFinite())
-                return refuse("prisms", "fit metrics: " + name +
-                                            " has a non-finite corner, corners must be finite");
-            corners.push_back(point(c));
-        }
-        Mesh hull;
-        if (corners.size() >= 4)
-            CGAL::convex_hull_3(corners.begin(), corners.end(), hull);
-        if (corners.size() < 4 || hull.number_of_faces() < 4 ||
-            std::abs(PMP::volume(hull)) <= 1e-12 * std::pow(m.diagonal_mm, 3))
-            return refuse("prisms", "fit metrics: " + name + " has " +
-                                        std::to_string(corners.size()) +
-                                        " corners spanning no volume, needs at least 4 not in "
-                                        "one plane");
-        ConvexCell cell;
-        for (Mesh::Face_index f : hull.faces()) {
-            const Mesh::Halfedge_index h = hull.halfedge(f);
-            cell.planes.emplace_back(hull.point(hull.source(h)), hull.point(hull.target(h)),
-                                     hull.point(hull.target(hull.next(h))));
-        }
-        cell.box = CGAL::bbox_3(corners.begin(), corners.end());
-        cells.push_back(std::move(cell));
+    Result<std::vector<ConvexCell>> cells = prism_cells(prisms, m.diagonal_mm);
+    if (!cells.ok) {
+        result.fail_with(cells.diagnostics);
+        return result;
     }
 
     // Distances both ways: the maximum by CGAL's bounded-error Hausdorff distance, mean and RMS
@@ -329,58 +409,8 @@ Result<FitMetrics> fit_metrics(const ModelMesh& model, const Eigen::Matrix4d& mo
     m.popup_to_model = relative(m.popup_to_model_mm, m.diagonal_mm);
     m.coverage = double(covered) / double(model_samples.size());
 
-    // Volume: only a closed model has an inside.
-    std::vector<std::vector<std::size_t>> polygons;
-    for (const auto& t : model.triangles)
-        polygons.push_back({std::size_t(t[0]), std::size_t(t[1]), std::size_t(t[2])});
-    Mesh solid;
-    if (PMP::is_polygon_soup_a_polygon_mesh(polygons)) {
-        PMP::polygon_soup_to_polygon_mesh(card_points, polygons, solid);
-        m.model_closed = CGAL::is_closed(solid);
-    }
-    // The grid spans the model and the prisms; cell centres are tested.
-    Vec3 grid_lo = lo, grid_hi = hi;
-    for (const ConvexCell& cell : cells) {
-        grid_lo = grid_lo.cwiseMin(Vec3(cell.box.xmin(), cell.box.ymin(), cell.box.zmin()));
-        grid_hi = grid_hi.cwiseMax(Vec3(cell.box.xmax(), cell.box.ymax(), cell.box.zmax()));
-    }
-    const double h = (grid_hi - grid_lo).maxCoeff() / options.volume_cells;
-    const Eigen::Vector3i n = ((grid_hi - grid_lo) / h).array().ceil().cast<int>().max(1).matrix();
-    auto in_prisms = [&](const Point& p) {
-        for (const ConvexCell& cell : cells)
-            if (cell.contains(p))
-                return true;
-        return false;
-    };
-    long in_model = 0, in_popup = 0, in_either_only = 0;
-    std::unique_ptr<CGAL::Side_of_triangle_mesh<Mesh, Kernel>> inside;
-    if (m.model_closed) {
-        m.model_volume_mm3 = std::abs(CGAL::to_double(PMP::volume(solid)));
-        inside = std::make_unique<CGAL::Side_of_triangle_mesh<Mesh, Kernel>>(solid);
-    }
-    for (int i = 0; i < n.x(); ++i)
-        for (int j = 0; j < n.y(); ++j)
-            for (int k = 0; k < n.z(); ++k) {
-                const Point p(grid_lo.x() + (i + 0.5) * h, grid_lo.y() + (j + 0.5) * h,
-                              grid_lo.z() + (k + 0.5) * h);
-                // Outside the model's box no ray needs shooting.
-                const bool in_box = p.x() >= lo.x() && p.x() <= hi.x() && p.y() >= lo.y() &&
-                                    p.y() <= hi.y() && p.z() >= lo.z() && p.z() <= hi.z();
-                const bool a = inside && in_box && (*inside)(p) == CGAL::ON_BOUNDED_SIDE;
-                const bool b = in_prisms(p);
-                in_model += a;
-                in_popup += b;
-                in_either_only += a != b;
-            }
-    m.popup_volume_mm3 = double(in_popup) * h * h * h;
-    if (m.model_closed && in_model > 0)
-        m.volume_difference = double(in_either_only) / double(in_model);
-    else if (m.model_closed)
-        result.diagnostics.push_back(Diagnostic::warning(
-            DiagnosticCode::bad_option,
-            "fit metrics: the model is thinner than one grid cell (" + std::to_string(h) +
-                " mm); raise volume_cells for a volume difference",
-            about_parameter("volume_cells")));
+    measure_volume(model, card_points, lo, hi, cells.value, options.volume_cells, m,
+                   result.diagnostics);
     return result;
 }
 

@@ -3,9 +3,9 @@
 // card, a refusal's first error, and a cut part written down as a FittedProfile.
 #include <string>
 
-#include "popup/fitting/fit_design.hpp"
-#include "popup/fitting/model_mesh.hpp"
+#include "popup/input/model_mesh.hpp"
 #include "popup/model/apply_profile.hpp"
+#include "popup/model/designed_card.hpp"
 
 namespace popup::outline_support {
 

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "popup/fitting/model_mesh.hpp"
-#include "popup/fitting/silhouette.hpp"
+#include "popup/fitting/silhouette_types.hpp"
+#include "popup/input/model_mesh.hpp"
 #include "popup/model/profile.hpp"
 
 namespace popup {

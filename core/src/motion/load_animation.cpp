@@ -13,7 +13,7 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
-#include "../fitting/model_mesh_bytes.hpp"
+#include "../input/model_mesh_bytes.hpp"
 #include "../io/child_process.hpp"
 #include "bvh_root_channels.hpp"
 #include "popup/motion/animation.hpp"

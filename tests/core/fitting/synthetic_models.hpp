@@ -1,7 +1,7 @@
 #pragma once
 #include <vector>
 
-#include "popup/fitting/model_mesh.hpp"
+#include "popup/input/model_mesh.hpp"
 
 namespace popup::testing {
 

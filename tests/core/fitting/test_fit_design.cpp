@@ -358,17 +358,6 @@ TEST(FitDesign, CancelledBeforeItStartsThrowsCancelled)
     EXPECT_THROW(fit_design(cuboid_model(), FitOptions(), &flag), Cancelled);
 }
 
-TEST(FitDesign, StoppingProbabilityFollowsSchnabel)
-{
-    // One draw finds a shape of n of N samples with n / (4 · N · hosts · levels · 2^(k−1)).
-    EXPECT_DOUBLE_EQ(draw_probability(100, 1000, 2, 1, 5), 100.0 / (4 * 1000 * 5 * 2));
-    EXPECT_DOUBLE_EQ(draw_probability(100, 1000, 4, 2, 5), 100.0 / (4 * 1000 * 2 * 5 * 8));
-    // P(n, s) = 1 − (1 − P)^s.
-    const double p = 500.0 / (4 * 1000 * 5 * 2);
-    EXPECT_NEAR(found_probability(500, 1000, 2, 1, 5, 300), 1 - std::pow(1 - p, 300), 1e-12);
-    EXPECT_DOUBLE_EQ(found_probability(500, 1000, 2, 1, 5, 0), 0.0);
-}
-
 TEST(FitDesign, LowAnnexesOnTheSidesAreStepFolds)
 {
     const FitOptions o;
@@ -496,29 +485,6 @@ TEST(FitDesign, BlockyModelsAreCloserThanTheThesisBestMean)
                     model.source.c_str(), r.mechanisms.size(), mean);
         EXPECT_LT(mean, 0.0128) << model.source;
     }
-}
-
-TEST(FitDesign, PrimitiveSearchStopsAtItsCancelFlag)
-{
-    const SurfaceSamples samples = sample_surface(cuboid_model(), 2000, 1);
-    PrismHost card;
-    card.length = 210;
-    card.across_min = -148;
-    card.across_max = 148;
-    CancelFlag flag;
-    flag.cancel();
-    RansacOptions o;
-    o.cancel = &flag;
-    EXPECT_THROW(fit_prisms(samples, card, o), Cancelled);
-    o.cancel = nullptr;
-    // Not cancelled, the same search finds the box (the model is in its own frame here: x in
-    // [-20, 20], y in [0, 120], z in [0, 30] stands on the card's pair as it is).
-    const RansacResult r = fit_prisms(samples, card, o);
-    ASSERT_GE(r.prisms.size(), 1u);
-    EXPECT_EQ(r.prisms[0].kind, Prism::Kind::rectangular);
-    EXPECT_NEAR(r.prisms[0].height, 30, 0.02 * 30);
-    EXPECT_NEAR(r.prisms[0].s1, 20, 0.02 * 40);
-    EXPECT_NEAR(r.prisms[0].a1 - r.prisms[0].a0, 120, 0.02 * 120);
 }
 
 /// The L in plan of tools/make_models.py (a wing 60 x 20 along the front, an arm 20 x 50 to the

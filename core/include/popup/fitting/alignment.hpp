@@ -2,8 +2,8 @@
 #include <optional>
 #include <vector>
 
-#include "popup/fitting/model_mesh.hpp"
 #include "popup/fitting/surface_samples.hpp"
+#include "popup/input/model_mesh.hpp"
 #include "popup/model/result.hpp"
 
 namespace popup {

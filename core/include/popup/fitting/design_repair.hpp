@@ -3,8 +3,10 @@
 #include <string>
 #include <vector>
 
-#include "popup/fitting/fit_design.hpp"
 #include "popup/fitting/mechanism_mapping.hpp"
+#include "popup/model/card.hpp"
+#include "popup/model/designed_card.hpp"
+#include "popup/model/scaffold.hpp"
 #include "popup/simulation/check_validity.hpp"
 
 namespace popup {

@@ -3,8 +3,10 @@
 #include <string>
 #include <vector>
 
-#include "popup/fitting/fit_design.hpp"
+#include "popup/fitting/fit_types.hpp"
+#include "popup/input/model_mesh.hpp"
 #include "popup/model/base_patch_pair.hpp"
+#include "popup/model/cancel_flag.hpp"
 
 namespace popup {
 

@@ -5,7 +5,7 @@
 
 #include <Eigen/Core>
 
-#include "popup/fitting/model_mesh.hpp"
+#include "popup/input/model_mesh.hpp"
 #include "popup/model/result.hpp"
 #include "popup/model/scaffold.hpp"
 

@@ -2,10 +2,11 @@
 #include <string>
 #include <vector>
 
-#include "popup/fitting/fit_design.hpp"
-#include "popup/fitting/model_mesh.hpp"
+#include "popup/input/model_mesh.hpp"
 #include "popup/model/cancel_flag.hpp"
+#include "popup/model/designed_card.hpp"
 #include "popup/model/scaffold.hpp"
+#include "popup/sheets/sheet_layout.hpp"
 
 namespace popup {
 

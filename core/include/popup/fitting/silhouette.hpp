@@ -1,7 +1,8 @@
 #pragma once
 #include <optional>
 
-#include "popup/fitting/model_mesh.hpp"
+#include "popup/fitting/silhouette_types.hpp"
+#include "popup/input/model_mesh.hpp"
 #include "popup/model/profile.hpp"
 
 namespace popup {
@@ -18,15 +19,6 @@ struct SilhouetteOptions {
     /// step's riser stands only when the card is open at 90°: pass its pose there, from
     /// simulate_fold). The profile stays in the patch's own frame, which moves with it.
     std::optional<Pose> pose;
-};
-
-/// What the model's orthographic silhouette on a patch's plane is made of.
-struct Silhouette {
-    Profile profile;       ///< the largest piece: outer loop and holes, in the profile frame
-    double area = 0.0;     ///< mm², of that piece
-    double left_out = 0.0; ///< mm², of the smaller pieces not in `profile`
-    int pieces = 0;        ///< connected pieces of the whole silhouette
-    int triangles = 0;     ///< triangles projected (after the depth window)
 };
 
 /// The orthographic silhouette of `model` (card frame, mm: the model already placed on the card)

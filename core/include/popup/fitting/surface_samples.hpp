@@ -2,7 +2,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "popup/fitting/model_mesh.hpp"
+#include "popup/input/model_mesh.hpp"
 
 namespace popup {
 

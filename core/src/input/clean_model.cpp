@@ -1,5 +1,5 @@
 // CGAL translation unit: polygon-soup repair and orientation of a model (CGAL PMP).
-#include "popup/fitting/clean_model.hpp"
+#include "popup/input/clean_model.hpp"
 
 #include <algorithm>
 #include <array>

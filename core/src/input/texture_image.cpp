@@ -1,4 +1,4 @@
-#include "popup/fitting/texture_image.hpp"
+#include "popup/input/texture_image.hpp"
 
 #include <csetjmp>
 #include <cstdio>

@@ -1,7 +1,7 @@
 #pragma once
 // A ModelMesh as plain bytes, for the reading child processes (load_model, load_animation).
 #include "../io/byte_message.hpp"
-#include "popup/fitting/model_mesh.hpp"
+#include "popup/input/model_mesh.hpp"
 
 namespace popup {
 

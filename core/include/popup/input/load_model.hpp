@@ -1,7 +1,7 @@
 #pragma once
 #include <string>
 
-#include "popup/fitting/model_mesh.hpp"
+#include "popup/input/model_mesh.hpp"
 #include "popup/model/result.hpp"
 
 namespace popup {

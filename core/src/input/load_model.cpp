@@ -1,4 +1,4 @@
-#include "popup/fitting/load_model.hpp"
+#include "popup/input/load_model.hpp"
 
 #include <algorithm>
 #include <array>

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "popup/fitting/clean_model.hpp"
+#include "popup/input/clean_model.hpp"
 
 using namespace popup;
 

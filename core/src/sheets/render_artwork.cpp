@@ -1,4 +1,4 @@
-#include "popup/fitting/render_artwork.hpp"
+#include "popup/sheets/render_artwork.hpp"
 
 #include <algorithm>
 #include <array>
@@ -179,6 +179,126 @@ std::array<double, 3> weights(const std::array<Projected, 3>& p, double twice_ar
     return {w0, w1, 1.0 - w0 - w1};
 }
 
+/// The pixels of an artwork: the patch's bounding box from `lo` in steps of `step` mm, row 0
+/// at the top.
+struct PixelGrid {
+    Vec2 lo = Vec2::Zero();
+    double step = 1.0;
+    int width = 0, height = 0;
+
+    double centre_u(int column) const { return lo.x() + (column + 0.5) * step; }
+    double centre_v(int row) const { return lo.y() + (height - row - 0.5) * step; }
+};
+
+/// Pass 1: the z-buffer keeps, per pixel, the triangle nearest the viewer within the window;
+/// per pixel (row by row) its triangle, or -1.
+std::vector<int> nearest_triangles(const ModelMesh& mesh, const std::vector<Projected>& projected,
+                                   const Vec3& view, const PixelGrid& grid,
+                                   const ArtworkOptions& options)
+{
+    const Vec2 lo = grid.lo;
+    const double step = grid.step;
+    const int width = grid.width, height = grid.height;
+    std::vector<float> nearest(size_t(width) * height, -INFINITY); // float: half the memory
+    std::vector<int> owner(size_t(width) * height, -1);
+    constexpr double inside = -1e-9; // weights this far below 0 still count: no cracks
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+        const auto& tri = mesh.triangles[t];
+        const Vec3 n = (mesh.vertices[tri[1]] - mesh.vertices[tri[0]])
+                           .cross(mesh.vertices[tri[2]] - mesh.vertices[tri[0]]);
+        if (!(n.dot(view) > 0.0))
+            continue; // back-facing or edge-on: the viewer sees another surface there
+        const std::array<Projected, 3> p{projected[tri[0]], projected[tri[1]], projected[tri[2]]};
+        const double d_min = std::min({p[0].d, p[1].d, p[2].d});
+        const double d_max = std::max({p[0].d, p[1].d, p[2].d});
+        if (d_max < -options.behind || d_min > options.depth)
+            continue;
+        const double twice_area =
+            (p[1].a - p[0].a) * (p[2].b - p[0].b) - (p[2].a - p[0].a) * (p[1].b - p[0].b);
+        if (twice_area == 0.0)
+            continue;
+        const double a_min = std::min({p[0].a, p[1].a, p[2].a});
+        const double a_max = std::max({p[0].a, p[1].a, p[2].a});
+        const double b_min = std::min({p[0].b, p[1].b, p[2].b});
+        const double b_max = std::max({p[0].b, p[1].b, p[2].b});
+        // Pixels whose centres can fall inside: centre_u(c) in [a_min, a_max], likewise rows.
+        // Clamped as doubles first: a triangle far off the patch must not overflow an int.
+        auto index = [](double x, int n) { return int(std::clamp(x, -1.0, double(n))); };
+        const int c0 = std::max(0, index(std::ceil((a_min - lo.x()) / step - 0.5), width) - 1);
+        const int c1 =
+            std::min(width - 1, index(std::floor((a_max - lo.x()) / step - 0.5), width) + 1);
+        const int r0 =
+            std::max(0, index(std::ceil(height - 0.5 - (b_max - lo.y()) / step), height) - 1);
+        const int r1 = std::min(
+            height - 1, index(std::floor(height - 0.5 - (b_min - lo.y()) / step), height) + 1);
+        for (int row = r0; row <= r1; ++row)
+            for (int column = c0; column <= c1; ++column) {
+                const auto w = weights(p, twice_area, grid.centre_u(column), grid.centre_v(row));
+                if (w[0] < inside || w[1] < inside || w[2] < inside)
+                    continue;
+                const double d = w[0] * p[0].d + w[1] * p[1].d + w[2] * p[2].d;
+                const size_t k = size_t(row) * width + column;
+                // Compared as stored, so an equally near later triangle never wins.
+                if (d < -options.behind || d > options.depth || !(float(d) > nearest[k]))
+                    continue;
+                nearest[k] = float(d);
+                owner[k] = int(t);
+            }
+    }
+    return owner;
+}
+
+/// Pass 2: colour each pixel once, from its triangle (`owner`, from nearest_triangles).
+void colour_pixels(const ModelMesh& mesh, const Appearance& look,
+                   const std::vector<Projected>& projected, const std::vector<int>& owner,
+                   const PixelGrid& grid, const ArtworkOptions& options, PatchArtwork& art)
+{
+    const int width = grid.width, height = grid.height;
+    for (int row = 0; row < height; ++row)
+        for (int column = 0; column < width; ++column) {
+            const int t = owner[size_t(row) * width + column];
+            if (t < 0)
+                continue;
+            const auto& tri = mesh.triangles[t];
+            const std::array<Projected, 3> p{projected[tri[0]], projected[tri[1]],
+                                             projected[tri[2]]};
+            const double twice_area =
+                (p[1].a - p[0].a) * (p[2].b - p[0].b) - (p[2].a - p[0].a) * (p[1].b - p[0].b);
+            auto w = weights(p, twice_area, grid.centre_u(column), grid.centre_v(row));
+            for (double& x : w)
+                x = std::max(x, 0.0);
+            const double sum = w[0] + w[1] + w[2];
+            for (double& x : w)
+                x /= sum;
+            std::uint8_t* out = art.image.at(column, row);
+            if (look.texture && mesh.uvs[tri[0]].allFinite() && mesh.uvs[tri[1]].allFinite() &&
+                mesh.uvs[tri[2]].allFinite()) {
+                const Vec2 uv =
+                    w[0] * mesh.uvs[tri[0]] + w[1] * mesh.uvs[tri[1]] + w[2] * mesh.uvs[tri[2]];
+                const auto texel = sample(*look.texture, uv);
+                for (int k = 0; k < 4; ++k)
+                    out[k] = channel(texel[k]);
+            } else {
+                Vec3 colour;
+                if (look.vertex_colours) {
+                    colour = w[0] * mesh.colours[tri[0]] + w[1] * mesh.colours[tri[1]] +
+                             w[2] * mesh.colours[tri[2]];
+                } else {
+                    const Vec3 n = (mesh.vertices[tri[1]] - mesh.vertices[tri[0]])
+                                       .cross(mesh.vertices[tri[2]] - mesh.vertices[tri[0]])
+                                       .normalized();
+                    const double lit = options.ambient +
+                                       (1.0 - options.ambient) * std::max(0.0, n.dot(look.light));
+                    colour = lit * mesh.base_colour;
+                }
+                for (int k = 0; k < 3; ++k)
+                    out[k] = channel(colour[k]);
+                out[3] = 255;
+            }
+            ++art.covered_pixels;
+        }
+}
+
 Result<PatchArtwork> render_one(const ModelMesh& mesh, const Appearance& look, const Patch& given,
                                 const ArtworkOptions& options)
 {
@@ -240,101 +360,9 @@ Result<PatchArtwork> render_one(const ModelMesh& mesh, const Appearance& look, c
         const Vec3 x = mesh.vertices[i] - patch.origin;
         projected[i] = {x.dot(patch.u), x.dot(patch.v), toward_viewer * x.dot(patch.normal)};
     }
-    auto centre_u = [&](int column) { return lo.x() + (column + 0.5) * step; };
-    auto centre_v = [&](int row) { return lo.y() + (height - row - 0.5) * step; };
-
-    // Pass 1: the z-buffer keeps, per pixel, the triangle nearest the viewer within the window.
-    std::vector<float> nearest(size_t(width) * height, -INFINITY); // float: half the memory
-    std::vector<int> owner(size_t(width) * height, -1);
-    constexpr double inside = -1e-9; // weights this far below 0 still count: no cracks
-    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-        const auto& tri = mesh.triangles[t];
-        const Vec3 n = (mesh.vertices[tri[1]] - mesh.vertices[tri[0]])
-                           .cross(mesh.vertices[tri[2]] - mesh.vertices[tri[0]]);
-        if (!(n.dot(view) > 0.0))
-            continue; // back-facing or edge-on: the viewer sees another surface there
-        const std::array<Projected, 3> p{projected[tri[0]], projected[tri[1]], projected[tri[2]]};
-        const double d_min = std::min({p[0].d, p[1].d, p[2].d});
-        const double d_max = std::max({p[0].d, p[1].d, p[2].d});
-        if (d_max < -options.behind || d_min > options.depth)
-            continue;
-        const double twice_area =
-            (p[1].a - p[0].a) * (p[2].b - p[0].b) - (p[2].a - p[0].a) * (p[1].b - p[0].b);
-        if (twice_area == 0.0)
-            continue;
-        const double a_min = std::min({p[0].a, p[1].a, p[2].a});
-        const double a_max = std::max({p[0].a, p[1].a, p[2].a});
-        const double b_min = std::min({p[0].b, p[1].b, p[2].b});
-        const double b_max = std::max({p[0].b, p[1].b, p[2].b});
-        // Pixels whose centres can fall inside: centre_u(c) in [a_min, a_max], likewise rows.
-        // Clamped as doubles first: a triangle far off the patch must not overflow an int.
-        auto index = [](double x, int n) { return int(std::clamp(x, -1.0, double(n))); };
-        const int c0 = std::max(0, index(std::ceil((a_min - lo.x()) / step - 0.5), width) - 1);
-        const int c1 =
-            std::min(width - 1, index(std::floor((a_max - lo.x()) / step - 0.5), width) + 1);
-        const int r0 =
-            std::max(0, index(std::ceil(height - 0.5 - (b_max - lo.y()) / step), height) - 1);
-        const int r1 = std::min(
-            height - 1, index(std::floor(height - 0.5 - (b_min - lo.y()) / step), height) + 1);
-        for (int row = r0; row <= r1; ++row)
-            for (int column = c0; column <= c1; ++column) {
-                const auto w = weights(p, twice_area, centre_u(column), centre_v(row));
-                if (w[0] < inside || w[1] < inside || w[2] < inside)
-                    continue;
-                const double d = w[0] * p[0].d + w[1] * p[1].d + w[2] * p[2].d;
-                const size_t k = size_t(row) * width + column;
-                // Compared as stored, so an equally near later triangle never wins.
-                if (d < -options.behind || d > options.depth || !(float(d) > nearest[k]))
-                    continue;
-                nearest[k] = float(d);
-                owner[k] = int(t);
-            }
-    }
-
-    // Pass 2: colour each pixel once, from its triangle.
-    for (int row = 0; row < height; ++row)
-        for (int column = 0; column < width; ++column) {
-            const int t = owner[size_t(row) * width + column];
-            if (t < 0)
-                continue;
-            const auto& tri = mesh.triangles[t];
-            const std::array<Projected, 3> p{projected[tri[0]], projected[tri[1]],
-                                             projected[tri[2]]};
-            const double twice_area =
-                (p[1].a - p[0].a) * (p[2].b - p[0].b) - (p[2].a - p[0].a) * (p[1].b - p[0].b);
-            auto w = weights(p, twice_area, centre_u(column), centre_v(row));
-            for (double& x : w)
-                x = std::max(x, 0.0);
-            const double sum = w[0] + w[1] + w[2];
-            for (double& x : w)
-                x /= sum;
-            std::uint8_t* out = art.image.at(column, row);
-            if (look.texture && mesh.uvs[tri[0]].allFinite() && mesh.uvs[tri[1]].allFinite() &&
-                mesh.uvs[tri[2]].allFinite()) {
-                const Vec2 uv =
-                    w[0] * mesh.uvs[tri[0]] + w[1] * mesh.uvs[tri[1]] + w[2] * mesh.uvs[tri[2]];
-                const auto texel = sample(*look.texture, uv);
-                for (int k = 0; k < 4; ++k)
-                    out[k] = channel(texel[k]);
-            } else {
-                Vec3 colour;
-                if (look.vertex_colours) {
-                    colour = w[0] * mesh.colours[tri[0]] + w[1] * mesh.colours[tri[1]] +
-                             w[2] * mesh.colours[tri[2]];
-                } else {
-                    const Vec3 n = (mesh.vertices[tri[1]] - mesh.vertices[tri[0]])
-                                       .cross(mesh.vertices[tri[2]] - mesh.vertices[tri[0]])
-                                       .normalized();
-                    const double lit = options.ambient +
-                                       (1.0 - options.ambient) * std::max(0.0, n.dot(look.light));
-                    colour = lit * mesh.base_colour;
-                }
-                for (int k = 0; k < 3; ++k)
-                    out[k] = channel(colour[k]);
-                out[3] = 255;
-            }
-            ++art.covered_pixels;
-        }
+    const PixelGrid grid{lo, step, width, height};
+    const std::vector<int> owner = nearest_triangles(mesh, projected, view, grid, options);
+    colour_pixels(mesh, look, projected, owner, grid, options, art);
     return r;
 }
 

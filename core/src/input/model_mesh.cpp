@@ -1,4 +1,4 @@
-#include "popup/fitting/model_mesh.hpp"
+#include "popup/input/model_mesh.hpp"
 
 #include <cmath>
 #include <sstream>

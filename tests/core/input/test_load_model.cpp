@@ -16,7 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "load_model_mutations.hpp"
-#include "popup/fitting/load_model.hpp"
+#include "popup/input/load_model.hpp"
 
 namespace fs = std::filesystem;
 using namespace popup;

@@ -11,7 +11,7 @@
 #include <assimp/Exporter.hpp>
 #include <assimp/scene.h>
 
-#include "popup/fitting/load_model.hpp"
+#include "popup/input/load_model.hpp"
 
 namespace fs = std::filesystem;
 

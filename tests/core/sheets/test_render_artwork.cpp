@@ -11,7 +11,7 @@
 #include <jpeglib.h>
 #include <png.h>
 
-#include "popup/fitting/render_artwork.hpp"
+#include "popup/sheets/render_artwork.hpp"
 
 using namespace popup;
 

@@ -1,8 +1,8 @@
 #pragma once
 #include <vector>
 
-#include "popup/fitting/model_mesh.hpp"
-#include "popup/fitting/texture_image.hpp"
+#include "popup/input/model_mesh.hpp"
+#include "popup/input/texture_image.hpp"
 #include "popup/model/patch.hpp"
 #include "popup/model/result.hpp"
 

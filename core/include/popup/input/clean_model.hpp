@@ -1,5 +1,5 @@
 #pragma once
-#include "popup/fitting/model_mesh.hpp"
+#include "popup/input/model_mesh.hpp"
 #include "popup/model/result.hpp"
 
 namespace popup {

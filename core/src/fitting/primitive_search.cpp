@@ -1,0 +1,56 @@
+#include "primitive_search.hpp"
+
+#include <algorithm>
+#include <utility>
+
+namespace popup {
+
+PrimitiveSearch search_primitives(const ModelMesh& model, const SurfaceSamples& model_samples,
+                                  const std::vector<Alignment>& alignments,
+                                  const FitOptions& options, const CancelFlag* cancel)
+{
+    auto attempt = [&](const Alignment& a) {
+        PrimitiveSearch t;
+        t.samples = transformed(model_samples, a.model_to_card);
+        const double diagonal = a.scale * model.diagonal();
+        PrismHost card;
+        card.name = "central fold";
+        card.origin = Vec3::Zero();
+        card.length = options.card_width;
+        card.across_min = -options.card_depth;
+        card.across_max = options.card_depth;
+        RansacOptions& ro = t.ro;
+        ro.threshold = options.threshold * diagonal;
+        // τ in samples: the five visible faces of a cube of edge min_shape·diagonal.
+        const double tau = options.min_shape * diagonal;
+        ro.min_points =
+            std::max(8.0, 5 * tau * tau / std::max(t.samples.spacing * t.samples.spacing, 1e-300));
+        ro.probability = options.probability;
+        ro.seed = options.seed;
+        ro.max_primitives = options.max_mechanisms;
+        ro.min_part = options.min_part_mm;
+        ro.cancel = cancel;
+        t.fit = fit_prisms(t.samples, card, ro);
+        size_t n = 0;
+        for (size_t i = 0; i < t.fit.owner.size(); ++i)
+            n += t.fit.on_principal[i] || t.fit.on_base[i];
+        t.explained = t.fit.owner.empty() ? 0.0 : double(n) / double(t.fit.owner.size());
+        return t;
+    };
+    // The alignment whose primitives' paper faces (not their open ends) explain the most
+    // samples; the first (the mirror plane)
+    // unless another explains a hundredth more (docs/MATH.md, "Which way is up").
+    size_t chosen = 0;
+    PrimitiveSearch best = attempt(alignments.front());
+    for (size_t k = 1; k < alignments.size(); ++k) {
+        PrimitiveSearch t = attempt(alignments[k]);
+        if (t.explained > best.explained + 0.01) {
+            best = std::move(t);
+            chosen = k;
+        }
+    }
+    best.alignment = chosen;
+    return best;
+}
+
+} // namespace popup

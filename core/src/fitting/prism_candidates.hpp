@@ -1,0 +1,63 @@
+#pragma once
+// Internal: candidate generation of the primitive search: one localised minimal sample makes a
+// rectangular prism (two points) and, on a flat host, a triangular one (four points); each is
+// fitted to its host, grown along the hinge and scored (thesis Fig 5.4).
+#include <random>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "localised_sampling.hpp"
+#include "popup/fitting/prism_types.hpp"
+#include "prism_faces.hpp"
+#include "prism_scoring.hpp"
+
+namespace popup::prism_search {
+
+/// Feet and apex from the two slope lines; false unless they make a prism standing on the host.
+bool triangle_from_lines(const PrismHost& h, Vec2 p1, Vec2 d1, Vec2 p2, Vec2 d2, double eps,
+                         Prism& m);
+
+/// One round of the search (it finds one prism): the samples no prism explains yet, and what
+/// its draws score against.
+struct Round {
+    std::vector<int> remaining; ///< samples no prism explains, not on a host's plane
+    double N = 0.0;             ///< how many
+    double scale = 1.0;         ///< remaining samples per sample of the scoring subset
+    /// Gap allowed along the hinge between samples of one face: a few sample spacings of the
+    /// scoring subset.
+    double gap = 0.0;
+    /// A draw picks its host among those its first sample stands on: at most this many.
+    int hosts_per_sample = 1;
+    /// Per host, the scoring subset and the guard above it, contiguous in its coordinates.
+    std::vector<std::vector<Local>> sub, grd;
+};
+
+/// What a draw reads besides the round: the hosts, every sample in each host's coordinates,
+/// the accepted prisms' boxes and the samples' bounding box (card frame).
+struct DrawInputs {
+    const std::vector<PrismHost>& hosts;
+    const std::vector<std::vector<Local>>& locals;
+    const Search& search;
+    const Cells& cells;
+    const std::vector<Eigen::AlignedBox3d>& taken;
+    const Eigen::AlignedBox3d& model;
+    double eps = 0.0;
+    double min_part = 0.0;
+};
+
+/// The best candidate of each kind a round's draws made, and how many minimal samples each
+/// kind was drawn from.
+struct Candidates {
+    Scored best_rect, best_tri;
+    long draws = 0, tri_draws = 0;
+};
+
+/// One localised minimal sample: its first point, a cell level, three more points in that cell
+/// and a host among those the first stands on, drawn in this order; the candidates it makes
+/// replace the best of their kind in `found` when they score higher and are accepted.
+void draw_candidates(const Round& round, const DrawInputs& in, std::mt19937_64& rng,
+                     std::uniform_int_distribution<size_t>& pick_point,
+                     std::uniform_int_distribution<int>& pick_level, Candidates& found);
+
+} // namespace popup::prism_search
