@@ -15,7 +15,7 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
-#include "../io/child_process.hpp"
+#include "child_process.hpp"
 #include "model_mesh_bytes.hpp"
 #include "text_coordinates.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 // A ModelMesh as plain bytes, for the reading child processes (load_model, load_animation).
-#include "../io/byte_message.hpp"
+#include "byte_message.hpp"
 #include "popup/input/model_mesh.hpp"
 
 namespace popup {

@@ -1,5 +1,5 @@
 // load_animation: an animated character through assimp, read in a child process as load_model
-// reads a model (core/src/io/child_process.hpp).
+// reads a model (core/src/input/child_process.hpp).
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -14,7 +14,7 @@
 #include <assimp/scene.h>
 
 #include "../input/model_mesh_bytes.hpp"
-#include "../io/child_process.hpp"
+#include "../input/child_process.hpp"
 #include "bvh_root_channels.hpp"
 #include "popup/motion/animation.hpp"
 
