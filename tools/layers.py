@@ -367,12 +367,16 @@ def draw(wings, png):
         ax.set_yticks(range(1, top + 1))
         ax.set_ylabel("floor")
         ax.set_xticks([])
+        still_open = sum(1 for arrow in wing.upward if arrow in STILL_OPEN)
         verdict = (
             "no arrow back up, no circle"
             if not wing.problems()
             else (
                 f"{len(wing.upward)} back up, {len(wing.sideways)} sideways, {len(wing.circles)} circles"
             )
+        )
+        if still_open and not wing.problems():
+            verdict += f" (but {still_open} listed as still open, in red)"
         )
         ax.set_title(f"{wing.title}: {verdict}")
     fig.tight_layout()
