@@ -377,7 +377,6 @@ def draw(wings, png):
         )
         if still_open and not wing.problems():
             verdict += f" (but {still_open} listed as still open, in red)"
-        )
         ax.set_title(f"{wing.title}: {verdict}")
     fig.tight_layout()
     fig.savefig(png, dpi=90)
