@@ -13,8 +13,8 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
-#include "../input/model_mesh_bytes.hpp"
 #include "../input/child_process.hpp"
+#include "../input/model_mesh_bytes.hpp"
 #include "bvh_root_channels.hpp"
 #include "popup/motion/animation.hpp"
 
