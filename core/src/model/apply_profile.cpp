@@ -82,6 +82,114 @@ struct Edge {
     Vec3 from, to;
 };
 
+using Intervals = std::vector<std::pair<double, double>>;
+
+// The patch's outline and holes in the profile's frame.
+void in_frame(const Patch& patch, const ProfileFrame& f, Loop2& outer, std::vector<Loop2>& holes)
+{
+    for (const Vec3& x : patch.outer)
+        outer.push_back(f.to_frame(x));
+    for (const Loop3& hole : patch.holes) {
+        holes.emplace_back();
+        for (const Vec3& x : hole)
+            holes.back().push_back(f.to_frame(x));
+    }
+}
+
+// (what the mechanism allows) ∩ profile, exact on the nanometre grid; slivers left out.
+std::vector<Region> paper_left(const Loop2& outer, const std::vector<Loop2>& holes,
+                               const Profile& profile, double tol)
+{
+    ClipperLib::Clipper clipper;
+    clipper.StrictlySimple(true);
+    add_region(clipper, outer, holes, ClipperLib::ptSubject);
+    add_region(clipper, profile.outer, profile.holes, ClipperLib::ptClip);
+    ClipperLib::PolyTree tree;
+    clipper.Execute(ClipperLib::ctIntersection, tree, ClipperLib::pftPositive,
+                    ClipperLib::pftPositive);
+    std::vector<Region> pieces;
+    collect(tree, pieces);
+    pieces.erase(std::remove_if(pieces.begin(), pieces.end(),
+                                [&](const Region& p) { return region_area(p) <= tol * tol; }),
+                 pieces.end());
+    return pieces;
+}
+
+// The patch's folds and slits.
+std::vector<Edge> edges_of(const Scaffold& scaffold, int patch_id)
+{
+    std::vector<Edge> edges;
+    for (size_t i = 0; i < scaffold.hinges.size(); ++i) {
+        const Hinge& h = scaffold.hinges[i];
+        if (h.patch_a == patch_id || h.patch_b == patch_id)
+            edges.push_back({false, i, h.from, h.to});
+    }
+    for (size_t i = 0; i < scaffold.slits.size(); ++i)
+        if (scaffold.slits[i].patch_cut == patch_id)
+            edges.push_back({true, i, scaffold.slits[i].from, scaffold.slits[i].to});
+    return edges;
+}
+
+// The exact corners, edges and folds of the patch, for the cut outline to snap back onto.
+SnapTargets exact_targets(const Loop2& outer, const std::vector<Loop2>& holes,
+                          const std::vector<Edge>& edges, const ProfileFrame& f)
+{
+    SnapTargets exact;
+    for (const Loop2* loop : loops_of(outer, holes))
+        for (size_t i = 0; i < loop->size(); ++i) {
+            exact.corners.push_back((*loop)[i]);
+            exact.lines.push_back({(*loop)[i], (*loop)[(i + 1) % loop->size()]});
+        }
+    for (const Edge& e : edges) {
+        exact.corners.push_back(f.to_frame(e.from));
+        exact.corners.push_back(f.to_frame(e.to));
+        exact.lines.push_back({f.to_frame(e.from), f.to_frame(e.to)});
+    }
+    return exact;
+}
+
+// Each fold and slit cut to its stretches of paper: the first stretch keeps the joint's id, each
+// other becomes a joint of its own.
+void cut_joints(Scaffold& scaffold, const std::vector<Edge>& edges,
+                const std::vector<Intervals>& kept_along, ProfileApplied& done)
+{
+    int next_hinge = 0, next_slit = 0;
+    for (const Hinge& h : scaffold.hinges)
+        next_hinge = std::max(next_hinge, h.id + 1);
+    for (const Slit& s : scaffold.slits)
+        next_slit = std::max(next_slit, s.id + 1);
+    for (size_t k = 0; k < edges.size(); ++k) {
+        const Edge& e = edges[k];
+        const Vec3 d = e.to - e.from;
+        for (size_t j = 0; j < kept_along[k].size(); ++j) {
+            const Vec3 from = e.from + kept_along[k][j].first * d;
+            const Vec3 to = e.from + kept_along[k][j].second * d;
+            if (e.slit) {
+                Slit s = scaffold.slits[e.index];
+                s.from = from;
+                s.to = to;
+                if (j == 0)
+                    scaffold.slits[e.index] = s;
+                else {
+                    s.id = next_slit++;
+                    scaffold.slits.push_back(s);
+                }
+            } else {
+                Hinge h = scaffold.hinges[e.index];
+                h.from = from;
+                h.to = to;
+                if (j > 0)
+                    h.id = next_hinge++;
+                if (j == 0)
+                    scaffold.hinges[e.index] = h;
+                else
+                    scaffold.hinges.push_back(h);
+                done.hinges.push_back(h.id);
+            }
+        }
+    }
+}
+
 } // namespace
 
 Result<ProfileApplied> apply_profile(Scaffold& scaffold, int patch_id, const Profile& raw)
@@ -108,29 +216,11 @@ Result<ProfileApplied> apply_profile(Scaffold& scaffold, int patch_id, const Pro
     const std::string patch_name = title(scaffold, patch_id);
     const std::string what = patch_name + ": profile '" + profile.name + "'";
 
-    // (what the mechanism allows) ∩ profile, exact on the nanometre grid.
     Loop2 outer;
-    for (const Vec3& x : patch.outer)
-        outer.push_back(f.to_frame(x));
     std::vector<Loop2> holes;
-    for (const Loop3& hole : patch.holes) {
-        holes.emplace_back();
-        for (const Vec3& x : hole)
-            holes.back().push_back(f.to_frame(x));
-    }
-    ClipperLib::Clipper clipper;
-    clipper.StrictlySimple(true);
-    add_region(clipper, outer, holes, ClipperLib::ptSubject);
-    add_region(clipper, profile.outer, profile.holes, ClipperLib::ptClip);
-    ClipperLib::PolyTree tree;
-    clipper.Execute(ClipperLib::ctIntersection, tree, ClipperLib::pftPositive,
-                    ClipperLib::pftPositive);
-    std::vector<Region> pieces;
-    collect(tree, pieces);
+    in_frame(patch, f, outer, holes);
     const double tol = std::max(1e-6 * scaffold.size(), 2.0 / clipper_scale);
-    pieces.erase(std::remove_if(pieces.begin(), pieces.end(),
-                                [&](const Region& p) { return region_area(p) <= tol * tol; }),
-                 pieces.end());
+    const std::vector<Region> pieces = paper_left(outer, holes, profile, tol);
     if (pieces.empty()) {
         r.fail(DiagnosticCode::bad_profile,
                what + " leaves no paper: the outline and the patch do not overlap (outlines are "
@@ -139,17 +229,8 @@ Result<ProfileApplied> apply_profile(Scaffold& scaffold, int patch_id, const Pro
         return r;
     }
 
-    std::vector<Edge> edges;
-    for (size_t i = 0; i < scaffold.hinges.size(); ++i) {
-        const Hinge& h = scaffold.hinges[i];
-        if (h.patch_a == patch_id || h.patch_b == patch_id)
-            edges.push_back({false, i, h.from, h.to});
-    }
-    for (size_t i = 0; i < scaffold.slits.size(); ++i)
-        if (scaffold.slits[i].patch_cut == patch_id)
-            edges.push_back({true, i, scaffold.slits[i].from, scaffold.slits[i].to});
+    const std::vector<Edge> edges = edges_of(scaffold, patch_id);
     const double shortest = shortest_fold(scaffold);
-    using Intervals = std::vector<std::pair<double, double>>;
     auto clip = [&](const Region& piece, const Edge& e) {
         return segment_in_region(f.to_frame(e.from), f.to_frame(e.to), piece.outer, piece.holes,
                                  tol, shortest);
@@ -174,17 +255,7 @@ Result<ProfileApplied> apply_profile(Scaffold& scaffold, int patch_id, const Pro
     // Back onto the exact corners, edges and folds of the patch: off them by a grid unit, the
     // folds the sheets draw through the outline's corners leave the card remade from them out of
     // line, and a linkage with parallel folds (a box) then jams (docs/DESIGN.md).
-    SnapTargets exact;
-    for (const Loop2* loop : loops_of(outer, holes))
-        for (size_t i = 0; i < loop->size(); ++i) {
-            exact.corners.push_back((*loop)[i]);
-            exact.lines.push_back({(*loop)[i], (*loop)[(i + 1) % loop->size()]});
-        }
-    for (const Edge& e : edges) {
-        exact.corners.push_back(f.to_frame(e.from));
-        exact.corners.push_back(f.to_frame(e.to));
-        exact.lines.push_back({f.to_frame(e.from), f.to_frame(e.to)});
-    }
+    const SnapTargets exact = exact_targets(outer, holes, edges, f);
     snap_onto_lines(piece.outer, exact, clipper_rounding);
     for (Loop2& hole : piece.holes)
         snap_onto_lines(hole, exact, clipper_rounding);
@@ -230,41 +301,7 @@ Result<ProfileApplied> apply_profile(Scaffold& scaffold, int patch_id, const Pro
         patch.holes.push_back(to_world(hole, false));
     patch.derive_frame();
     done.area_after = patch.area();
-    int next_hinge = 0, next_slit = 0;
-    for (const Hinge& h : scaffold.hinges)
-        next_hinge = std::max(next_hinge, h.id + 1);
-    for (const Slit& s : scaffold.slits)
-        next_slit = std::max(next_slit, s.id + 1);
-    for (size_t k = 0; k < edges.size(); ++k) {
-        const Edge& e = edges[k];
-        const Vec3 d = e.to - e.from;
-        for (size_t j = 0; j < kept_along[k].size(); ++j) {
-            const Vec3 from = e.from + kept_along[k][j].first * d;
-            const Vec3 to = e.from + kept_along[k][j].second * d;
-            if (e.slit) {
-                Slit s = scaffold.slits[e.index];
-                s.from = from;
-                s.to = to;
-                if (j == 0)
-                    scaffold.slits[e.index] = s;
-                else {
-                    s.id = next_slit++;
-                    scaffold.slits.push_back(s);
-                }
-            } else {
-                Hinge h = scaffold.hinges[e.index];
-                h.from = from;
-                h.to = to;
-                if (j > 0)
-                    h.id = next_hinge++;
-                if (j == 0)
-                    scaffold.hinges[e.index] = h;
-                else
-                    scaffold.hinges.push_back(h);
-                done.hinges.push_back(h.id);
-            }
-        }
-    }
+    cut_joints(scaffold, edges, kept_along, done);
     if (done.dropped_pieces > 0)
         r.warn(DiagnosticCode::bad_profile,
                what + " cut off " + std::to_string(done.dropped_pieces) +
