@@ -96,9 +96,8 @@ auto closed_form(Result (*f)(const Params&, double, double), const char* name)
         return checked(f(p, design_opening, opening), name);
     };
 }
-} // namespace
-
-void bind_mechanisms(py::module_& m)
+// The card, its base patch pairs and what a mechanism adds.
+void bind_card_and_hosts(py::module_& m)
 {
     py::class_<CardParams>(m, "CardParams")
         .def(py::init<>())
@@ -133,7 +132,11 @@ void bind_mechanisms(py::module_& m)
     m.def("placement_conflicts", &placement_conflicts, py::arg("mechanisms"),
           "Thesis §4.2.2 pre-check: pairs of mechanism names on one host whose swept intervals "
           "overlap.");
+}
 
+// Every mechanism kind's parameters and closed forms.
+void bind_mechanism_parameters(py::module_& m)
+{
     py::class_<Placement1D>(m, "Placement1D")
         .def_readwrite("offset", &Placement1D::offset)
         .def_readwrite("width", &Placement1D::width);
@@ -257,4 +260,12 @@ void bind_mechanisms(py::module_& m)
         "Adds a vertical translation (the v-box's triangular half, thesis §4.3.2).");
     def_generator<VBoxFoldParams>(m, "add_v_box_fold", &add_v_box_fold,
                                   "Adds a type-1 v-fold (v-box) on a host open flat.");
+}
+
+} // namespace
+
+void bind_mechanisms(py::module_& m)
+{
+    bind_card_and_hosts(m);
+    bind_mechanism_parameters(m);
 }

@@ -38,9 +38,8 @@ std::vector<Eigen::Matrix4d> matrices(const std::vector<Eigen::Isometry3d>& tran
     return out;
 }
 
-} // namespace
-
-void bind_motion_input(py::module_& m)
+// Animations read from files and posed.
+void bind_animation(py::module_& m)
 {
     py::class_<Animation>(m, "Animation",
                           "An animated character (thesis ch. 6) in the file's units and axes: "
@@ -104,7 +103,11 @@ void bind_motion_input(py::module_& m)
         "frames slerp rotations and lerp translations between their neighbours.");
     m.def("posed_mesh", &posed_mesh, py::arg("animation"), py::arg("frame"),
           "The skinned mesh at a frame (linear blend skinning).");
+}
 
+// Linkage chains, the card's view and the target paths.
+void bind_chains_and_targets(py::module_& m)
+{
     py::class_<ChainOptions>(m, "ChainOptions", "Linkage segmentation options (thesis §6.1)")
         .def(py::init<>())
         .def_readwrite("prune_fraction", &ChainOptions::prune_fraction,
@@ -196,4 +199,12 @@ void bind_motion_input(py::module_& m)
         py::call_guard<py::gil_scoped_release>(),
         "Forward kinematics over the frame range, projection on the card, adaptive sampling "
         "(τangle); DesignError (bad_option) names a bad view option.");
+}
+
+} // namespace
+
+void bind_motion_input(py::module_& m)
+{
+    bind_animation(m);
+    bind_chains_and_targets(m);
 }

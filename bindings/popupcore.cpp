@@ -78,61 +78,9 @@ void raise_native(const std::string& kind, const std::string& message)
                                 "', must be 'std', 'invalid_argument', 'occt' or 'cgal'");
 }
 
-} // namespace
-
-PYBIND11_MODULE(popupcore, m)
+// Patches, hinges, scaffolds, diagnostics and design files.
+void bind_scaffold(py::module_& m)
 {
-    m.doc() = "PopUp core: scaffolds of paper patches, the rigid fold simulator and validity "
-              "checks. Lengths in mm, angles in radians.";
-
-    design_error = PyErr_NewException("popupcore.DesignError", PyExc_ValueError, nullptr);
-    occt_error = PyErr_NewException("popupcore.OcctError", PyExc_RuntimeError, nullptr);
-    cgal_error = PyErr_NewException("popupcore.CgalError", PyExc_RuntimeError, nullptr);
-    m.attr("DesignError") = py::handle(design_error);
-    m.attr("OcctError") = py::handle(occt_error);
-    m.attr("CgalError") = py::handle(cgal_error);
-    // A call stopped by its CancelFlag: not an error in the design, so not a DesignError.
-    py::register_exception<Cancelled>(m, "Cancelled", PyExc_RuntimeError);
-    py::class_<CancelFlag, std::shared_ptr<CancelFlag>>(
-        m, "CancelFlag",
-        "Pass as cancel= to a long call (check_validity, layout_sheets) running in another "
-        "thread; cancel() makes it raise popupcore.Cancelled at its next checkpoint.")
-        .def(py::init<>())
-        .def("cancel", &CancelFlag::cancel)
-        .def_property_readonly("cancelled", &CancelFlag::cancelled);
-    // OCCT's Standard_Failure is not a std::exception in 7.6: translate it by itself.
-    py::register_exception_translator([](std::exception_ptr p) {
-        try {
-            if (p)
-                std::rethrow_exception(p);
-        } catch (const DesignFailure& e) {
-            py::object error = py::reinterpret_borrow<py::object>(design_error)(e.what());
-            error.attr("diagnostics") = diagnostic_list(e.diagnostics);
-            PyErr_SetObject(design_error, error.ptr());
-        } catch (const Standard_Failure& e) {
-            const char* msg = e.GetMessageString();
-            PyErr_SetString(
-                occt_error,
-                (std::string(e.DynamicType()->Name()) + ": " + (msg ? msg : "")).c_str());
-        } catch (const CGAL::Failure_exception& e) {
-            PyErr_SetString(cgal_error, e.what());
-        }
-    });
-    bind_mechanisms(m);
-    bind_sheets(m);
-    bind_sheet_set(m);
-    bind_sheet_drawing(m);
-    bind_model_mesh(m);
-    bind_artwork(m);
-    bind_fitting(m);
-    bind_model_input(m);
-    bind_profiles(m);
-    bind_motion_input(m);
-    bind_motion(m);
-    m.def("_raise_native", &raise_native, py::arg("kind"), py::arg("message"),
-          "Test hook: throws a native exception of family 'std', 'invalid_argument', 'occt' or "
-          "'cgal' so the translators can be checked.");
-
     py::class_<Diagnostic>(m, "Diagnostic")
         .def_property_readonly("code", [](const Diagnostic& d) { return to_string(d.code); })
         .def_property_readonly("severity",
@@ -232,7 +180,11 @@ PYBIND11_MODULE(popupcore, m)
     m.def("cut_pieces", &cut_pieces, py::arg("scaffold"),
           "Patch ids of each sheet of paper: patches joined by folds, apart at tab joints.");
     m.def("save_scaffold", &save_scaffold, py::arg("scaffold"), py::arg("path"));
+}
 
+// Fold states and sweeps, free motion, crossings and the validity check.
+void bind_simulation(py::module_& m)
+{
     py::class_<FoldState>(m, "FoldState")
         .def_readonly("angle", &FoldState::angle)
         .def_readonly("hinge_residual", &FoldState::hinge_residual)
@@ -334,4 +286,63 @@ PYBIND11_MODULE(popupcore, m)
         py::arg("scaffold"), py::arg("samples") = 181, py::arg("clearance") = 0.0,
         py::arg("cancel") = nullptr, py::call_guard<py::gil_scoped_release>(),
         "Foldable, stable, intersection-free and enclosed verdicts with diagnostics.");
+}
+
+} // namespace
+
+PYBIND11_MODULE(popupcore, m)
+{
+    m.doc() = "PopUp core: scaffolds of paper patches, the rigid fold simulator and validity "
+              "checks. Lengths in mm, angles in radians.";
+
+    design_error = PyErr_NewException("popupcore.DesignError", PyExc_ValueError, nullptr);
+    occt_error = PyErr_NewException("popupcore.OcctError", PyExc_RuntimeError, nullptr);
+    cgal_error = PyErr_NewException("popupcore.CgalError", PyExc_RuntimeError, nullptr);
+    m.attr("DesignError") = py::handle(design_error);
+    m.attr("OcctError") = py::handle(occt_error);
+    m.attr("CgalError") = py::handle(cgal_error);
+    // A call stopped by its CancelFlag: not an error in the design, so not a DesignError.
+    py::register_exception<Cancelled>(m, "Cancelled", PyExc_RuntimeError);
+    py::class_<CancelFlag, std::shared_ptr<CancelFlag>>(
+        m, "CancelFlag",
+        "Pass as cancel= to a long call (check_validity, layout_sheets) running in another "
+        "thread; cancel() makes it raise popupcore.Cancelled at its next checkpoint.")
+        .def(py::init<>())
+        .def("cancel", &CancelFlag::cancel)
+        .def_property_readonly("cancelled", &CancelFlag::cancelled);
+    // OCCT's Standard_Failure is not a std::exception in 7.6: translate it by itself.
+    py::register_exception_translator([](std::exception_ptr p) {
+        try {
+            if (p)
+                std::rethrow_exception(p);
+        } catch (const DesignFailure& e) {
+            py::object error = py::reinterpret_borrow<py::object>(design_error)(e.what());
+            error.attr("diagnostics") = diagnostic_list(e.diagnostics);
+            PyErr_SetObject(design_error, error.ptr());
+        } catch (const Standard_Failure& e) {
+            const char* msg = e.GetMessageString();
+            PyErr_SetString(
+                occt_error,
+                (std::string(e.DynamicType()->Name()) + ": " + (msg ? msg : "")).c_str());
+        } catch (const CGAL::Failure_exception& e) {
+            PyErr_SetString(cgal_error, e.what());
+        }
+    });
+    bind_mechanisms(m);
+    bind_sheets(m);
+    bind_sheet_set(m);
+    bind_sheet_drawing(m);
+    bind_model_mesh(m);
+    bind_artwork(m);
+    bind_fitting(m);
+    bind_model_input(m);
+    bind_profiles(m);
+    bind_motion_input(m);
+    bind_motion(m);
+    m.def("_raise_native", &raise_native, py::arg("kind"), py::arg("message"),
+          "Test hook: throws a native exception of family 'std', 'invalid_argument', 'occt' or "
+          "'cgal' so the translators can be checked.");
+
+    bind_scaffold(m);
+    bind_simulation(m);
 }
