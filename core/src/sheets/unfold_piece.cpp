@@ -6,18 +6,11 @@
 #include <set>
 #include <sstream>
 
+#include "../geometry/turn_about.hpp"
+
 namespace popup {
 
 namespace {
-
-// Rotation by `angle` about the line through `point` along the unit `axis`.
-Pose turn_about(const Vec3& point, const Vec3& axis, double angle)
-{
-    Pose p;
-    p.rotation = axis_angle(axis, angle);
-    p.translation = point - p.rotation * point;
-    return p;
-}
 
 // Unit direction from the fold line (through a along d) toward x, in the plane across the fold.
 Vec3 across(const Vec3& x, const Vec3& a, const Vec3& d)

@@ -3,17 +3,11 @@
 #include <cmath>
 #include <deque>
 
+#include "../../geometry/turn_about.hpp"
+
 namespace popup::sheets {
 
 namespace {
-
-Pose turn_about(const Vec3& point, const Vec3& axis, double angle)
-{
-    Pose p;
-    p.rotation = axis_angle(axis, angle);
-    p.translation = point - p.rotation * point;
-    return p;
-}
 
 // Signed angle of a rotation about `axis` (unit), read from how it turns a perpendicular.
 double angle_about(const Mat3& rotation, const Vec3& axis)
