@@ -343,7 +343,7 @@ def draw(wings, png):
                 where[box] = ((i + 0.5) / len(members), floor)
         for (a, b), n in wing.box_arrows().items():
             (xa, ya), (xb, yb) = where[a], where[b]
-            colour = "red" if ya < yb or (ya == yb) else "0.55"
+            colour = "red" if ya <= yb else "0.55"
             ax.annotate(
                 "",
                 xy=(xb, yb),

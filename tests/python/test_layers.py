@@ -1,24 +1,16 @@
 """The layers hold: no include or import runs back up a floor, none joins areas of one floor, and
 nothing forms a circle (tools/layers.py, docs/DESIGN.md "Layers"). Static: reads the sources only."""
 
-import importlib.util
 import os
 
 import pytest
 
-SOURCE_DIR = os.environ.get(
-    "POPUP_SOURCE_DIR", os.path.dirname(os.path.dirname(os.path.dirname(__file__)))
-)
+from cli_runner import SOURCE_DIR, load_tool
 
 
 @pytest.fixture(scope="module")
 def layers():
-    spec = importlib.util.spec_from_file_location(
-        "layers_tool", os.path.join(SOURCE_DIR, "tools", "layers.py")
-    )
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+    return load_tool("layers")
 
 
 def write(root, path, text):

@@ -8,10 +8,11 @@ from popupwb.validity.report_text import design_error, format_diagnostic, format
 from popupwb.validity.report_text import offending_patches
 from popupwb.model.validity_state import INVALID, VALID, record_verdict
 
-# What shows a card's verdict on screen, called as show(card, design digest, offending patch ids):
-# the GUI registers here (viewproviders/patch_colours.py, imported by InitGui.py), so the check
-# runner stays below the view providers and imports no Qt.
-VERDICT_VIEWERS = []
+# What shows a card's verdict on screen, called as verdict_viewer(card, design digest, offending
+# patch ids): the GUI sets it (viewproviders/patch_colours.py, imported by InitGui.py), as it sets
+# progress.dialogs, so the check runner stays below the view providers and imports no Qt. None
+# headless.
+verdict_viewer = None
 
 
 def run_check(obj, samples=181, clearance=0.0):
@@ -104,6 +105,6 @@ def _check_card(card, samples, clearance):
     add_build_problems(report, card, built)
     patch_titles.add_titles(report, card_titles.titles_of_card(card, built))
     card.CheckedDesign = built.digest
-    for show in VERDICT_VIEWERS:
-        show(card, built.digest, offending_patches(report))
+    if verdict_viewer is not None:
+        verdict_viewer(card, built.digest, offending_patches(report))
     return report

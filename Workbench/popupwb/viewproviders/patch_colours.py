@@ -116,5 +116,4 @@ def show_verdict(card, digest, patch_ids):
     colour_card_and_mechanisms(card)
 
 
-if show_verdict not in check.VERDICT_VIEWERS:
-    check.VERDICT_VIEWERS.append(show_verdict)
+check.verdict_viewer = show_verdict
