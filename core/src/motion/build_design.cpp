@@ -1,6 +1,5 @@
 #include "build_design.hpp"
 
-#include <chrono>
 #include <set>
 
 #include "build_mechanism.hpp"
@@ -12,13 +11,6 @@
 namespace popup::motion {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t)
-{
-    return std::chrono::duration<double>(Clock::now() - t).count();
-}
 
 std::string mechanism_name(MotionKind kind, const std::string& chain)
 {

@@ -1,6 +1,5 @@
 #include "design_from_targets.hpp"
 
-#include <chrono>
 #include <string>
 
 #include "build_design.hpp"
@@ -14,13 +13,6 @@
 namespace popup::motion {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t)
-{
-    return std::chrono::duration<double>(Clock::now() - t).count();
-}
 
 // The options and targets the stages rely on, each bad one with the option it names.
 Diagnostics check_inputs(const MotionTargets& targets, const MotionOptions& o)

@@ -1,4 +1,5 @@
 #pragma once
+#include <chrono>
 #include <map>
 #include <string>
 #include <vector>
@@ -6,6 +7,13 @@
 #include "anneal_problem.hpp"
 
 namespace popup::motion {
+
+/// The clock of the stages' timings (MotionResult::timings_s), and seconds since a reading of it.
+using Clock = std::chrono::steady_clock;
+inline double seconds_since(Clock::time_point t)
+{
+    return std::chrono::duration<double>(Clock::now() - t).count();
+}
 
 /// What the stages of design_from_targets hand each other: the problem the search optimises,
 /// the chains' own mappings, and the design's slots as each stage leaves them.
