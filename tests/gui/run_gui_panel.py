@@ -85,7 +85,7 @@ def click_cancel_later(ms, out):
 def run():
     from popupwb import progress
     from popupwb.model import card_scaffold
-    from popupwb.commands import animate
+    from popupwb.gui import fold_player
     from popupwb.features.cutting_sheet import is_cutting_sheet
     from popupwb.taskpanels import card_panel, mechanism_panel
 
@@ -133,7 +133,7 @@ def run():
     result["angle_label"] = panel.angle_label.text()
 
     # Play and stop (fast frames), back at the angle it started from.
-    animate.STEP_MS = 5
+    fold_player.STEP_MS = 5
     panel.play_button.click()
     result["playing"] = panel.playing() and panel.play_button.text() == "Stop"
     wait_until(lambda: panel.player.frames >= 5, 20000)

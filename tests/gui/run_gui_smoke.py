@@ -61,7 +61,8 @@ BODY = r"""
 def mechanisms():
     # The card commands, the task panel, the validity check and the animation.
     from popupwb.model import card_scaffold
-    from popupwb.commands import animate, check_validity
+    from popupwb.commands import check_validity
+    from popupwb.gui import fold_player
     from popupwb.taskpanels import mechanism_panel
     from popupwb.viewproviders.patch_colours import OFFENDING
 
@@ -181,11 +182,11 @@ def mechanisms():
     )
 
     # The animation: timer-driven, the GUI keeps running, the angle comes back.
-    animate.STEP_MS = 5
+    fold_player.STEP_MS = 5
     Gui.Selection.clearSelection()
     Gui.Selection.addSelection(card)
     Gui.runCommand("PopUp_Animate")
-    player = animate._player
+    player = fold_player.current_player()
     out["animation_started"] = player is not None and player.running()
     finished = wait_until(lambda: not player.running(), 120000)
     out["animation_finished"] = finished

@@ -7,8 +7,8 @@ layer while the sheet's PrintArtwork is set (rendering shows progress and can be
 The files come from the layout the CuttingSheet keeps (SheetSetJson): what it shows is what is
 written, with no second layout. The command is disabled until there is a layout to write (the
 selected cutting sheet's, or any when none is selected); a failure says why in one line and
-selects the piece to fix (select_at_fault.py). export_cutting_sheet() does the work without GUI; it lives with
-the feature because importing this package needs the GUI.
+selects the piece to fix (gui/select_at_fault.py). export_cutting_sheet() does the work without
+GUI; it lives with the feature because importing this package needs the GUI.
 """
 
 import json
@@ -18,9 +18,9 @@ import FreeCADGui
 
 import popupwb
 from popupwb import preferences, progress
-from popupwb.commands.select_at_fault import select_at_fault
 from popupwb.commands.selection import SelectionError, selected_cutting_sheet
 from popupwb.features.cutting_sheet import export_cutting_sheet, has_layout, is_cutting_sheet
+from popupwb.gui.select_at_fault import select_at_fault
 from popupwb.model.model_source import has_source_model
 
 COMMAND_ID = "PopUp_ExportSheets"

@@ -2,10 +2,10 @@
 validity check with clickable findings, cutting sheets.
 
 The fold-angle slider recomputes at every step (tens of ms per angle), so the 3D view follows the
-hand. Play runs PopUp_Animate's player (commands/animate.py) at the chosen speed; it ends on the
-angle it started from. Check validity runs popupwb.validity.run_check and lists the findings;
+hand. Play runs PopUp_Animate's fold player (gui/fold_player.py) at the chosen speed; it ends on
+the angle it started from. Check validity runs popupwb.validity.run_check and lists the findings;
 clicking one selects the patches it is about (or the mechanism a design error names). Make sheets
-is the PopUp_CuttingSheet command's action.
+is the PopUp_CuttingSheet command's action (gui/add_cutting_sheet.py).
 
 Undo: the panel's changes are one transaction, committed when it closes. Make sheets is an undo
 step of its own, as the command is: the panel commits what it did so far, adds the sheets, and
@@ -13,11 +13,12 @@ opens a new transaction for the rest. Close keeps every change, the fold angle t
 where the maker left it to look at; Ctrl+Z takes the session back).
 """
 
-import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtGui
 
 from popupwb.model import card_scaffold
+from popupwb.gui import fold_player
+from popupwb.gui.add_cutting_sheet import add_cutting_sheet
 from popupwb.taskpanels.mechanism_panel import in_error
 
 SPEEDS = (("Slow", 1.5), ("Normal", 3.0), ("Fast", 6.0))  # degrees per frame of PopUp_Animate
@@ -181,20 +182,16 @@ class CardPanel:
 
     def toggle_play(self):
         """Play, or Stop when playing (the card returns to the angle it started from)."""
-        from popupwb.commands import animate
-
         if self.playing():
-            animate.stop()
+            fold_player.stop()
         else:
             step = dict(SPEEDS)[self.speed.currentText()]
-            self.player = animate.play(self.card, step=step)
+            self.player = fold_player.play(self.card, step=step)
         self._follow()
 
     def stop_play(self):
-        from popupwb.commands import animate
-
         if self.playing():
-            animate.stop()
+            fold_player.stop()
 
     # --- paper ------------------------------------------------------------------------------
 
@@ -279,12 +276,10 @@ class CardPanel:
 
     def make_sheets(self):
         """PopUp_CuttingSheet on this card, an undo step of its own; returns the CuttingSheet."""
-        from popupwb.commands import create_cutting_sheet
-
         self.stop_play()
         self.doc.commitTransaction()
         try:
-            sheet = create_cutting_sheet.create(self.card)
+            sheet = add_cutting_sheet(self.card)
         finally:
             self.doc.openTransaction(f"Edit {self.card.Label}")
         if sheet is None:

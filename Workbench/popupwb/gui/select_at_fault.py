@@ -1,7 +1,7 @@
 """What keeps a CuttingSheet from its layout, found again and selected in the 3D view: the card
 when it does not build, a mechanism in error, else the patches (faces of the mechanism or card
-showing them) that the validity check or the layout names. The commands that make or export sheets
-call it when they fail, so the maker sees which piece to fix.
+showing them) that the validity check or the layout names. Making sheets (the command and the card
+panel) and exporting them call it when they fail, so the maker sees which piece to fix.
 
 The feature keeps only its one-line message (execute() raises); the faulty patches are found
 again here by running the check (then the layout) once more, which costs what a recompute costs
