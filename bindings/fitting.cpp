@@ -72,14 +72,6 @@ void bind_fitting(py::module_& m)
         .def_readonly("host", &FittedPrimitive::host)
         .def_readonly("inliers", &FittedPrimitive::inliers);
 
-    py::class_<FittedMechanism>(m, "FittedMechanism")
-        .def_readonly("type", &FittedMechanism::type)
-        .def_readonly("name", &FittedMechanism::name)
-        .def_readonly("host", &FittedMechanism::host)
-        .def_readonly("parameters", &FittedMechanism::parameters)
-        .def_readonly("primitive", &FittedMechanism::primitive)
-        .def_readonly("coverage_error", &FittedMechanism::coverage_error);
-
     py::class_<FitRepair>(m, "FitRepair")
         .def_readonly("mechanism", &FitRepair::mechanism)
         .def_readonly("action", &FitRepair::action)

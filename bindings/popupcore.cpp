@@ -119,6 +119,16 @@ void bind_scaffold(py::module_& m)
                                })
         .def_property_readonly("normal", [](const Patch& p) { return Vec3(p.normal); })
         .def("area", &Patch::area, "Area in mm² (holes removed).");
+    m.def(
+        "patch_subject",
+        [](int id, const std::string& name) {
+            Patch p;
+            p.id = id;
+            p.name = name;
+            return patch_subject(p);
+        },
+        py::arg("id"), py::arg("name") = "",
+        "How the core's messages name a patch: \"patch 5 (BoxFold.TG)\".");
 
     py::class_<Hinge>(m, "Hinge")
         .def_readonly("id", &Hinge::id)
@@ -329,6 +339,7 @@ PYBIND11_MODULE(popupcore, m)
         }
     });
     bind_mechanisms(m);
+    bind_mechanism_catalogue(m);
     bind_sheets(m);
     bind_sheet_set(m);
     bind_sheet_drawing(m);

@@ -91,7 +91,7 @@ def test_popup_check_prints_the_maker_names(tmp_path, user_home):
 @pytest.mark.parametrize("index", range(9))
 def test_every_part_the_core_builds_has_a_title(doc, index):
     """Drift guard: a part code the core adds without a title here would show as a bare code."""
-    from popupwb import mechanism_registry, make, patch_titles
+    from popupwb import mechanism_catalogue, mechanism_registry, make
     from popupwb.model import card_scaffold
     from popupwb.validity import card_titles
 
@@ -104,7 +104,7 @@ def test_every_part_the_core_builds_has_a_title(doc, index):
     assert not built.errors, built.errors
     titles = card_titles.titles_of_card(card, built)
     assert set(titles) == {p.id for p in built.scaffold.patches}
-    table = patch_titles.PART_TITLES[mechanism.type_name]
+    table = mechanism_catalogue.part_titles(mechanism.feature.KIND)
     for patch in built.scaffold.patches[2:]:  # the card's ground and backdrop first
         part = patch.name.rsplit(".", 1)[-1]
         assert part.rstrip("0123456789") in table, patch.name
@@ -116,10 +116,12 @@ def test_name_patches_leaves_unknown_patches_and_other_text_alone():
     from popupwb.patch_titles import name_patches
 
     titles = {"3": "Tent fold 'Tent': slope, ground side"}  # as JSON gives the keys
+    names = {"3": "Tent.slope_ground"}
     message = "patch 3 (Tent.slope_ground) meets patch 4 (Tent.slope_backdrop); dispatch 3 (x)"
-    assert name_patches(message, titles) == (
+    assert name_patches(message, titles, names) == (
         "Tent fold 'Tent': slope, ground side [#3 Tent.slope_ground] meets patch 4 "
         "(Tent.slope_backdrop); dispatch 3 (x)"
     )
     assert name_patches("patch 3 is stuck", titles).startswith("Tent fold 'Tent'")
+    assert name_patches("patch 30 is stuck", titles) == "patch 30 is stuck"
     assert name_patches(message, None) == message

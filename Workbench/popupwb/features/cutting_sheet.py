@@ -237,7 +237,7 @@ class CuttingSheet(StatelessProxy):
         """The card's NotValid (None when the validity check accepts it); raises, leaving the
         feature in error, for a rejected card unless Force is set."""
         from popupwb.core import popupcore
-        from popupwb.patch_titles import add_titles
+        from popupwb.patch_titles import add_titles, names_of
         from popupwb.validity.card_titles import titles_of_card
         from popupwb.sheets.not_valid_stamp import not_valid_of
 
@@ -253,7 +253,8 @@ class CuttingSheet(StatelessProxy):
         # A mechanism that does not build (a damaged file's Host loop, say) is left out of the
         # scaffold: the card is not valid, however well the rest folds.
         add_build_problems(report, obj.Card, built)
-        not_valid = not_valid_of(add_titles(report, titles_of_card(obj.Card, built)))
+        titles = titles_of_card(obj.Card, built)
+        not_valid = not_valid_of(add_titles(report, titles, names_of(built.scaffold)))
         if not_valid is not None and not obj.Force:
             # The first finding, unless it is already the reason (all verdicts passed).
             first = not_valid.findings[0] if not_valid.findings else not_valid.reason

@@ -6,21 +6,11 @@ Stored in .FCStd files as popupwb.features.horizontal_translation.HorizontalTran
 rename.
 """
 
-from popupwb.features.mechanism_feature import MechanismFeature, Parameter
+from popupwb.features.mechanism_feature import MechanismFeature
 
 
 class HorizontalTranslation(MechanismFeature):
-    TYPE = "PopUp::HorizontalTranslation"
-    GROUP = "Horizontal translation"
-    PARAMS = "HorizontalTranslationParams"
-    GENERATOR = "add_horizontal_translation"
-    PARAMETERS = (
-        Parameter("Offset", "length", "offset", "Start along the host's hinge", 20.0),
-        Parameter("Width", "length", "width", "Extent along the host's hinge", 40.0),
-        Parameter("RunGround", "length", "run_ground", "Step's riser foot from the hinge", 40.0),
-        Parameter("RunBackdrop", "length", "run_backdrop", "Step's tread foot, < RunGround", 20.0),
-        Parameter("Reach", "length", "reach", "Length r of M from the hinge to its end P", 60.0),
-    )
+    KIND = "horizontal_translation"
 
     @classmethod
     def fitted_parameters(cls, pair):

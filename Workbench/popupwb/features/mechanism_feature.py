@@ -14,11 +14,11 @@ built after this one, and it resets the card's validity verdict), and so the who
 stored in .FCStd files: never rename them.
 """
 
-import collections
 import contextlib
 import math
 
 
+from popupwb import mechanism_catalogue
 from popupwb.features.no_stale_shape import clears_shape_on_error
 from popupwb.features.one_line_errors import one_line_errors
 from popupwb.model import card_scaffold, profile_storage
@@ -27,11 +27,6 @@ from popupwb.stateless_proxy import StatelessProxy
 from popupwb.view_provider_by_name import attach_view_provider
 
 VERSION = "1"
-
-# kind: "length" (App::PropertyDistance, mm; signed so that the core, not FreeCAD's clamping,
-# judges a negative value), "angle" (App::PropertyAngle, degrees, radians for the core), "bool" or
-# "integer" (App::PropertyInteger, a count).
-Parameter = collections.namedtuple("Parameter", "name kind field doc default")
 
 _PROPERTY_TYPES = {
     "length": "App::PropertyDistance",
@@ -67,15 +62,29 @@ class MechanismFeature(StatelessProxy):
     """Proxy of a Part::FeaturePython mechanism. Subclasses set the class attributes below."""
 
     IS_MECHANISM = True
-    TYPE = None
     # popupwb.viewproviders module and class, imported only in the GUI (view_provider_by_name)
     VIEW_PROVIDER = ("mechanism_viewprovider", "MechanismViewProvider")
-    GROUP = "Mechanism"  # property group of the parameters
+    KIND = None  # the core catalogue's kind, e.g. "tent_fold": subclasses set only this, and
+    # the catalogue's row gives the attributes below.
+    TYPE = None  # "PopUp::TentFold"
+    GROUP = "Mechanism"  # property group of the parameters: the kind's title
     PARAMS = None  # name of the popupcore params class, e.g. "TentFoldParams"
     GENERATOR = None  # name of the popupcore generator, e.g. "add_tent_fold"
-    PARAMETERS = ()  # Parameter tuples, in the order the task panel shows them
+    PARAMETERS = ()  # mechanism_catalogue.Parameter tuples, in the order the task panel shows
     OFFERS = ()  # parts of the base patch pairs it offers: pair names are "<Label>.<part>"
     OUTPUTS = ()  # (name, doc) of read-only derived length properties
+
+    def __init_subclass__(cls, **kwargs):
+        super().__init_subclass__(**kwargs)
+        if cls.KIND is None:
+            return
+        row = mechanism_catalogue.entry(cls.KIND)
+        cls.TYPE = f"PopUp::{row.feature}"
+        cls.GROUP = row.title
+        cls.PARAMS = row.params
+        cls.GENERATOR = row.generator
+        cls.PARAMETERS = mechanism_catalogue.parameters(cls.KIND)
+        cls.OFFERS = tuple(row.offers)
 
     def __init__(self, obj):
         obj.Proxy = self

@@ -7,20 +7,11 @@ last paragraph; docs/MATH.md, "A rotation arm on a floating layer's side").
 Stored in .FCStd files as popupwb.features.rotation_arm.RotationArm: never rename.
 """
 
-from popupwb.features.mechanism_feature import MechanismFeature, Parameter
+from popupwb.features.mechanism_feature import MechanismFeature
 
 
 class RotationArm(MechanismFeature):
-    TYPE = "PopUp::RotationArm"
-    GROUP = "Rotation arm"
-    PARAMS = "RotationArmParams"
-    GENERATOR = "add_rotation_arm"
-    PARAMETERS = (
-        Parameter("Offset", "length", "offset", "Point O along the host's hinge", 20.0),
-        Parameter("Spine", "length", "spine", "Length l of the spine O-R along the hinge", 40.0),
-        Parameter("Run", "length", "run", "Reach w of the wings from the hinge", 30.0),
-        Parameter("Arm", "length", "arm", "Length h of the arm past the spine (<= l²/w)", 20.0),
-    )
+    KIND = "rotation_arm"
 
     @classmethod
     def fitted_parameters(cls, pair):

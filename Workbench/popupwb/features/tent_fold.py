@@ -3,29 +3,11 @@
 Stored in .FCStd files as popupwb.features.tent_fold.TentFold: never rename.
 """
 
-from popupwb.features.mechanism_feature import MechanismFeature, Parameter
+from popupwb.features.mechanism_feature import MechanismFeature
 
 
 class TentFold(MechanismFeature):
-    TYPE = "PopUp::TentFold"
-    GROUP = "Tent fold"
-    PARAMS = "TentFoldParams"
-    GENERATOR = "add_tent_fold"
-    PARAMETERS = (
-        Parameter("Offset", "length", "offset", "Start of the tent along the host's hinge", 20.0),
-        Parameter("Width", "length", "width", "Extent of the tent along the host's hinge", 40.0),
-        Parameter(
-            "Foot", "length", "foot", "Distance of the ground slope's foot from the hinge", 20.0
-        ),
-        Parameter(
-            "FootBackdrop",
-            "length",
-            "foot_backdrop",
-            "Distance of the backdrop slope's foot from the hinge",
-            20.0,
-        ),
-        Parameter("Slope", "length", "slope", "Length of the ground-side slope", 30.0),
-    )
+    KIND = "tent_fold"
     OUTPUTS = (
         (
             "SlopeBackdrop",

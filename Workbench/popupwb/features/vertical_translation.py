@@ -5,29 +5,11 @@ top halves on the walls); the top's front corner slides along the host's hinge a
 Stored in .FCStd files as popupwb.features.vertical_translation.VerticalTranslation: never rename.
 """
 
-from popupwb.features.mechanism_feature import MechanismFeature, Parameter
+from popupwb.features.mechanism_feature import MechanismFeature
 
 
 class VerticalTranslation(MechanismFeature):
-    TYPE = "PopUp::VerticalTranslation"
-    GROUP = "Vertical translation"
-    PARAMS = "VBoxFoldParams"
-    # Params fields the generator fixes (add_vertical_translation builds the v-box's triangular
-    # half: no back walls): a design may state them, with these values only.
-    FIXED_FIELDS = {"back": 0.0}
-    GENERATOR = "add_vertical_translation"
-    PARAMETERS = (
-        Parameter("Offset", "length", "offset", "Front corner along the host's hinge", 20.0),
-        Parameter("Side", "length", "side", "Length of each wall along the host", 40.0),
-        Parameter("Height", "length", "height", "Height h of the walls at the design state", 30.0),
-        Parameter(
-            "WallAngle",
-            "angle",
-            "wall_angle",
-            "Angle α between each wall and the host's hinge",
-            45.0,
-        ),
-    )
+    KIND = "vertical_translation"
 
     @classmethod
     def fitted_parameters(cls, pair):

@@ -4,7 +4,7 @@ turned into FreeCAD features: a PopUpCard of the design's size, one mechanism fe
 FittedMechanism made with popupwb.make (the same make_* a maker's commands call, so a designed
 card is edited like a hand-made one), and each fitted outline on its feature.
 
-FittedMechanism.parameters are the core params struct's field names in mm and radians (bools as
+FittedMechanism.parameters are the core catalogue's fields of its kind in mm and radians (flags as
 0/1); the features' Parameter.field names the same fields, and their angle properties are degrees.
 A mechanism's host is "central fold" (the card) or "<name>.<part>" of a mechanism made before it;
 each feature's Name and Label are the mechanism's name, so its HostPair is the same string. A name
@@ -27,14 +27,6 @@ def property_values(feature, parameters, mechanism_name):
     """{property name: value} of `feature` from a FittedMechanism's `parameters` (field -> float,
     mm and radians); a field the feature does not have is a ValueError naming it."""
     by_field = {p.field: p for p in feature.PARAMETERS}
-    fixed = getattr(feature, "FIXED_FIELDS", {})
-    for field in sorted(set(parameters) & set(fixed)):
-        if float(parameters[field]) != fixed[field]:
-            raise ValueError(
-                f"{mechanism_name}: parameter {field} = {parameters[field]}, a "
-                f"{feature.__name__} always has {fixed[field]:g}"
-            )
-    parameters = {k: v for k, v in parameters.items() if k not in fixed}
     unknown = sorted(set(parameters) - set(by_field))
     if unknown:
         raise ValueError(
@@ -108,9 +100,9 @@ def build_card(doc, card_params, mechanisms, profiles=(), name="Card"):
     for fitted in mechanisms:
         if fitted.name in made:
             raise ValueError(f"{fitted.name}: two mechanisms have this name")
-        mechanism = by_core_kind(fitted.type)
+        mechanism = by_core_kind(fitted.kind)
         if mechanism is None:
-            raise ValueError(f"{fitted.name}: mechanism type '{fitted.type}' has no feature")
+            raise ValueError(f"{fitted.name}: mechanism kind '{fitted.kind}' has no feature")
         host, host_pair = host_of(fitted, card, made)
         values = property_values(mechanism.feature, dict(fitted.parameters), fitted.name)
         made[fitted.name] = make.make_mechanism(

@@ -103,7 +103,8 @@ def _check_card(card, samples, clearance):
         cancel=progress.CANCEL_FLAG,
     ).to_dict()
     add_build_problems(report, card, built)
-    patch_titles.add_titles(report, card_titles.titles_of_card(card, built))
+    titles = card_titles.titles_of_card(card, built)
+    patch_titles.add_titles(report, titles, patch_titles.names_of(built.scaffold))
     card.CheckedDesign = built.digest
     if verdict_viewer is not None:
         verdict_viewer(card, built.digest, offending_patches(report))

@@ -20,7 +20,11 @@ def format_diagnostic(diagnostic):
     from popupwb.patch_titles import name_patches
     from popupwb.printable import printable
 
-    message = name_patches(diagnostic.get("message", ""), diagnostic.get("patch_titles"))
+    message = name_patches(
+        diagnostic.get("message", ""),
+        diagnostic.get("patch_titles"),
+        diagnostic.get("patch_names"),
+    )
     return printable(f"{diagnostic.get('code', '')}: {message}")
 
 

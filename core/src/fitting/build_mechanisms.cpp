@@ -96,10 +96,7 @@ void record_mechanisms(const BuiltMechanisms& built, FitResult& r)
             kept.push_back(plans[i]);
     for (const auto& p : kept) {
         FittedMechanism m;
-        m.type = p.type;
-        m.name = p.name;
-        m.host = p.host;
-        m.parameters = p.parameters;
+        static_cast<DesignedMechanism&>(m) = p;
         m.primitive =
             std::string(fit.prisms[p.prism].kind_name()) + " prism " + std::to_string(p.prism + 1);
         m.coverage_error = p.coverage_error();

@@ -3,10 +3,6 @@
 #include <algorithm>
 #include <map>
 
-#include "popup/mechanisms/box_fold.hpp"
-#include "popup/mechanisms/step_fold.hpp"
-#include "popup/mechanisms/tent_fold.hpp"
-#include "popup/mechanisms/v_fold.hpp"
 
 namespace popup {
 namespace {
@@ -39,50 +35,17 @@ Built build(const CardParams& card, const std::vector<MechanismPlan>& plans,
         }
         // Round-off between the fitted host and the built one must not push a mechanism that
         // spans its whole host off its end.
-        std::map<std::string, double> q = p.parameters;
+        DesignedMechanism q = p;
         const double length = host->second.length;
-        q["offset"] = std::clamp(q.at("offset"), 0.0, length);
-        if (q.count("width") && q["offset"] + q["width"] > length &&
-            q["offset"] + q["width"] < length * 1.01) {
-            q["offset"] = std::max(0.0, length - q["width"]);
-            q["width"] = std::min(q["width"], length - q["offset"]);
+        q.set_value("offset", std::clamp(q.offset(), 0.0, length));
+        if (catalogue_entry(q.kind).field("width")) {
+            const double width = q.value("width");
+            if (q.offset() + width > length && q.offset() + width < length * 1.01) {
+                q.set_value("offset", std::max(0.0, length - width));
+                q.set_value("width", std::min(width, length - q.offset()));
+            }
         }
-        Result<MechanismParts> added;
-        if (p.type == "box_fold") {
-            BoxFoldParams bp;
-            bp.offset = q.at("offset");
-            bp.width = q.at("width");
-            bp.depth_ground = q.at("depth_ground");
-            bp.depth_backdrop = q.at("depth_backdrop");
-            bp.height = q.at("height");
-            bp.panel_pairs = int(q.at("panel_pairs"));
-            bp.front = q.at("front") > 0;
-            bp.back = q.at("back") > 0;
-            added = add_box_fold(b.scaffold, host->second, bp, p.name);
-        } else if (p.type == "tent_fold") {
-            TentFoldParams tp;
-            tp.offset = q.at("offset");
-            tp.width = q.at("width");
-            tp.foot = q.at("foot");
-            tp.foot_backdrop = q.at("foot_backdrop");
-            tp.slope = q.at("slope");
-            added = add_tent_fold(b.scaffold, host->second, tp, p.name);
-        } else if (p.type == "step_fold") {
-            StepFoldParams sp;
-            sp.offset = q.at("offset");
-            sp.width = q.at("width");
-            sp.run_ground = q.at("run_ground");
-            sp.run_backdrop = q.at("run_backdrop");
-            added = add_step_fold(b.scaffold, host->second, sp, p.name);
-        } else {
-            VFoldParams vp;
-            vp.offset = q.at("offset");
-            vp.run = q.at("run");
-            vp.hinge_angle = q.at("hinge_angle");
-            vp.spine = q.at("spine");
-            vp.spine_angle = q.at("spine_angle");
-            added = add_v_fold(b.scaffold, host->second, vp, p.name);
-        }
+        const Result<MechanismParts> added = add_mechanism(b.scaffold, host->second, q);
         if (!added.ok) {
             b.refused[i] = added.diagnostics.empty() ? "its generator refused it"
                                                      : added.diagnostics.front().message;
@@ -126,7 +89,8 @@ RepairOutcome build_until_valid(const CardParams& card, const std::vector<Mechan
             const std::string reason =
                 k == i ? why : "it stood on " + plans[i].name + ", which was dropped";
             out.repairs.push_back({plans[k].name, "dropped", reason});
-            const std::string msg = plans[k].name + " (" + plans[k].type + ") dropped: " + reason;
+            const std::string msg =
+                plans[k].name + " (" + catalogue_entry(plans[k].kind).name + ") dropped: " + reason;
             out.warnings.push_back(Diagnostic::warning(DiagnosticCode::mechanism_dropped, msg,
                                                        about_parameter(plans[k].name)));
         }

@@ -11,8 +11,6 @@
 #include "outline_support.hpp"
 #include "popup/fitting/depth_layers.hpp"
 #include "popup/fitting/fit_metrics.hpp"
-#include "popup/mechanisms/box_fold.hpp"
-#include "popup/mechanisms/step_fold.hpp"
 #include "popup/simulation/check_validity.hpp"
 
 namespace popup {
@@ -105,12 +103,8 @@ std::string occupant(const std::vector<FittedMechanism>& fitted,
         for (const FittedMechanism& m : *list) {
             if (m.host != pair)
                 continue;
-            const auto& q = m.parameters;
-            const double a0 = q.count("offset") ? q.at("offset") : 0.0;
-            const double extent = q.count("width")   ? q.at("width")
-                                  : q.count("spine") ? q.at("spine") * std::cos(q.at("spine_angle"))
-                                                     : 0.0;
-            if (a0 < to && from < a0 + extent)
+            const double a0 = m.offset();
+            if (a0 < to && from < a0 + m.extent())
                 return m.name;
         }
     return {};
@@ -210,29 +204,32 @@ FittedMechanism layer_mechanism(const FittedMechanism& box, const FaceGround& g,
     const bool wall = g.wall, wall_is_backdrop = g.wall_is_backdrop;
     const double width = f.hi.x() - f.lo.x();
     const double rise = f.hi.y();
-    FittedMechanism m;
-    m.host = face.pair;
-    auto& q = m.parameters;
     const double w = std::min(width, pair.length - 2 * margin);
-    q["offset"] = std::clamp(f.lo.x(), margin, pair.length - margin - w);
-    q["width"] = w;
+    const double offset = std::clamp(f.lo.x(), margin, pair.length - margin - w);
+    FittedMechanism m;
     if (wall) {
         // Along the page: the layer's depth; up the wall: its top.
-        m.type = "step_fold";
-        m.name = free_name("S", taken);
+        static_cast<DesignedMechanism&>(m) = DesignedMechanism::of_kind(
+            MechanismKind::step_fold, free_name("S", taken), face.pair);
+        StepFoldParams& q = m.as<StepFoldParams>();
         const double run = std::min(layer.depth, g.page_room - margin);
         const double up = std::min(rise, g.wall_height - margin);
-        q["run_ground"] = wall_is_backdrop ? run : up;
-        q["run_backdrop"] = wall_is_backdrop ? up : run;
+        q.offset = offset;
+        q.width = w;
+        q.run_ground = wall_is_backdrop ? run : up;
+        q.run_backdrop = wall_is_backdrop ? up : run;
     } else {
-        m.type = "box_fold";
-        m.name = free_name("B", taken);
-        q["depth_ground"] = std::min(f.hi.y(), pair.ground_depth - margin);
-        q["depth_backdrop"] = std::min(-f.lo.y(), pair.backdrop_depth - margin);
-        q["height"] = layer.depth;
-        q["panel_pairs"] = 1;
-        q["front"] = 1;
-        q["back"] = 1;
+        static_cast<DesignedMechanism&>(m) = DesignedMechanism::of_kind(
+            MechanismKind::box_fold, free_name("B", taken), face.pair);
+        BoxFoldParams& q = m.as<BoxFoldParams>();
+        q.offset = offset;
+        q.width = w;
+        q.depth_ground = std::min(f.hi.y(), pair.ground_depth - margin);
+        q.depth_backdrop = std::min(-f.lo.y(), pair.backdrop_depth - margin);
+        q.height = layer.depth;
+        q.panel_pairs = 1;
+        q.front = true;
+        q.back = true;
     }
     m.primitive = face.label + " depth layer of " + box.name + " at " + mm(layer.depth) + " mm";
     return m;
@@ -244,24 +241,7 @@ std::string build_layer(const FaceGround& g, const Footprint& f, Built& trial)
 {
     const BasePatchPair& pair = g.pair;
     const FittedMechanism& m = trial.mechanism;
-    const auto& q = m.parameters;
-    Result<MechanismParts> added;
-    if (g.wall) {
-        StepFoldParams sp;
-        sp.offset = q.at("offset");
-        sp.width = q.at("width");
-        sp.run_ground = q.at("run_ground");
-        sp.run_backdrop = q.at("run_backdrop");
-        added = add_step_fold(trial.scaffold, pair, sp, m.name);
-    } else {
-        BoxFoldParams bp;
-        bp.offset = q.at("offset");
-        bp.width = q.at("width");
-        bp.depth_ground = q.at("depth_ground");
-        bp.depth_backdrop = q.at("depth_backdrop");
-        bp.height = q.at("height");
-        added = add_box_fold(trial.scaffold, pair, bp, m.name);
-    }
+    const Result<MechanismParts> added = add_mechanism(trial.scaffold, pair, m);
     if (!added.ok)
         return "its generator refused it: " + first_error(added.diagnostics, "out of range");
     // The parts parallel to the face (what the viewer sees of the layer) take its
@@ -428,7 +408,7 @@ fit_depth_layers(const ModelMesh& model, const Eigen::Matrix4d& model_to_card,
     vo.cancel = cancel;
     const LayerRules rules{model, model_to_card, mechanisms, options, vo, min_part, margin};
     for (const FittedMechanism& box : mechanisms) {
-        if (box.type != "box_fold")
+        if (box.kind != MechanismKind::box_fold)
             continue;
         for (const Face& face : {Face{"front", box.name + ".L", box.name + ".side_ground"},
                                  Face{"back", box.name + ".R", box.name + ".side_backdrop"},

@@ -78,7 +78,7 @@ Vec2 size_in(const Patch& patch, const ProfileFrame& f)
 /// host is at a right angle, which for a host flat at 180° is the card open at 90°.
 bool lies_flat(const Scaffold& s, const FittedMechanism& m)
 {
-    if (m.type != "step_fold")
+    if (m.kind != MechanismKind::step_fold)
         return false;
     const Patch* riser = nullptr;
     const Patch* tread = nullptr;
@@ -389,17 +389,20 @@ Result<FittedProfile> outline_part(Scaffold& s, const ModelMesh& model, const Fi
 
 } // namespace
 
-std::vector<std::string> principal_parts(const std::string& type)
+std::vector<std::string> principal_parts(MechanismKind kind)
 {
-    if (type == "box_fold")
+    switch (kind) {
+    case MechanismKind::box_fold:
         return {"L", "R", "TG", "TB", "FL", "FR", "BL", "BR"};
-    if (type == "tent_fold")
+    case MechanismKind::tent_fold:
         return {"slope_ground", "slope_backdrop"};
-    if (type == "step_fold")
+    case MechanismKind::step_fold:
         return {"riser", "tread"};
-    if (type == "v_fold")
+    case MechanismKind::v_fold:
         return {"wing_ground", "wing_backdrop"};
-    return {};
+    default:
+        return {};
+    }
 }
 
 namespace {
@@ -470,7 +473,7 @@ OutlineOutcome fit_outlines(const ModelMesh& model_in_card, const Scaffold& scaf
     OutlineOutcome out;
     out.scaffold = scaffold;
     for (const FittedMechanism& m : mechanisms)
-        outline_mechanism(out, model_in_card, m, principal_parts(m.type),
+        outline_mechanism(out, model_in_card, m, principal_parts(m.kind),
                           lies_flat(out.scaffold, m), glued_joint_mm, cancel);
     return out;
 }

@@ -3,10 +3,23 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <sstream>
+#include <stdexcept>
 
 namespace popup {
 namespace {
+
+bool has_field(const DesignedMechanism& m, const char* name)
+{
+    return catalogue_entry(m.kind).field(name) != nullptr;
+}
+
+/// Extent along the hinge by its Width (0 for a v-fold: the spine's run is not swept).
+double width_of(const DesignedMechanism& m)
+{
+    return has_field(m, "width") ? m.value("width") : 0.0;
+}
 
 struct Areas {
     double total = 0;  // every face of the prism
@@ -37,67 +50,95 @@ Areas areas_of(const Prism& m)
     return a;
 }
 
-std::string short_name(const std::string& type)
+} // namespace
+
+std::vector<MechanismKind> mechanism_options(const Prism& m, const PrismHost& host)
 {
-    if (type == "box_fold")
-        return "B";
-    if (type == "tent_fold")
-        return "T";
-    if (type == "step_fold")
-        return "S";
-    return "V";
+    using K = MechanismKind;
+    if (m.kind == Prism::Kind::rectangular)
+        return host.flat ? std::vector<K>{K::box_fold, K::v_fold} : std::vector<K>{K::step_fold};
+    return host.flat ? std::vector<K>{K::tent_fold, K::v_fold} : std::vector<K>{};
+}
+
+namespace {
+
+void plan_box(MechanismPlan& p, const Prism& m, const Areas& a)
+{
+    // At 180° the box is x in [−depth_backdrop, depth_ground], z in [0, height].
+    BoxFoldParams& q = p.as<BoxFoldParams>();
+    q.offset = m.a0;
+    q.width = m.a1 - m.a0;
+    q.depth_ground = m.s1;
+    q.depth_backdrop = -m.s0;
+    q.height = m.height;
+    q.panel_pairs = 1;
+    q.front = true;
+    q.back = true;
+    p.principal_area = a.total - a.bottom;
+}
+
+void plan_step(MechanismPlan& p, const Prism& m, const PrismHost& host, const Areas& a)
+{
+    // At 90° the parallelogram is a rectangle: run along the page, rise up the wall. On a box's
+    // ground side the page is the host's ground; on its backdrop side the wall is.
+    StepFoldParams& q = p.as<StepFoldParams>();
+    const bool page_is_ground = host.part != "side_backdrop";
+    q.offset = m.a0;
+    q.width = m.a1 - m.a0;
+    q.run_ground = page_is_ground ? m.s1 : m.height;
+    q.run_backdrop = page_is_ground ? m.height : m.s1;
+    p.principal_area = a.outer + a.top;
+}
+
+void plan_tent(MechanismPlan& p, const Prism& m, const Areas& a)
+{
+    TentFoldParams& q = p.as<TentFoldParams>();
+    q.offset = m.a0;
+    q.width = m.a1 - m.a0;
+    q.foot = m.s1;
+    q.foot_backdrop = -m.s0;
+    q.slope = std::hypot(m.s1 - m.apex_s, m.height);
+    p.principal_area = a.sides;
+}
+
+void plan_v_fold(MechanismPlan& p, const Prism& m, const Areas& a)
+{
+    // O at the prism's start on the hinge, P over its far end.
+    VFoldParams& q = p.as<VFoldParams>();
+    const double w = m.a1 - m.a0, d = std::min(m.s1, -m.s0);
+    q.offset = m.a0;
+    q.run = std::hypot(d, w);
+    q.hinge_angle = std::atan2(d, w);
+    q.spine = std::hypot(w, m.height);
+    q.spine_angle = std::atan2(m.height, w);
+    // Its wings stand on the diagonals: half of the faces they stand in front of.
+    p.principal_area = 0.5 * a.sides;
 }
 
 } // namespace
 
-std::vector<std::string> mechanism_options(const Prism& m, const PrismHost& host)
-{
-    if (m.kind == Prism::Kind::rectangular)
-        return host.flat ? std::vector<std::string>{"box_fold", "v_fold"}
-                         : std::vector<std::string>{"step_fold"};
-    return host.flat ? std::vector<std::string>{"tent_fold", "v_fold"} : std::vector<std::string>{};
-}
-
-MechanismPlan plan_mechanism(const std::string& type, const Prism& m, const PrismHost& host)
+MechanismPlan plan_mechanism(MechanismKind kind, const Prism& m, const PrismHost& host)
 {
     MechanismPlan p;
-    p.type = type;
+    static_cast<DesignedMechanism&>(p) = DesignedMechanism::of_kind(kind);
     const Areas a = areas_of(m);
     p.face_area = a.total;
-    const double w = m.a1 - m.a0;
-    auto& q = p.parameters;
-    q["offset"] = m.a0;
-    q["width"] = w;
-    if (type == "box_fold") {
-        // At 180° the box is x in [−depth_backdrop, depth_ground], z in [0, height].
-        q["depth_ground"] = m.s1;
-        q["depth_backdrop"] = -m.s0;
-        q["height"] = m.height;
-        q["panel_pairs"] = 1;
-        q["front"] = 1;
-        q["back"] = 1;
-        p.principal_area = a.total - a.bottom;
-    } else if (type == "step_fold") {
-        // At 90° the parallelogram is a rectangle: run along the page, rise up the wall. On
-        // a box's ground side the page is the host's ground; on its backdrop side the wall is.
-        const bool page_is_ground = host.part != "side_backdrop";
-        q["run_ground"] = page_is_ground ? m.s1 : m.height;
-        q["run_backdrop"] = page_is_ground ? m.height : m.s1;
-        p.principal_area = a.outer + a.top;
-    } else if (type == "tent_fold") {
-        q["foot"] = m.s1;
-        q["foot_backdrop"] = -m.s0;
-        q["slope"] = std::hypot(m.s1 - m.apex_s, m.height);
-        p.principal_area = a.sides;
-    } else { // v_fold: O at the prism's start on the hinge, P over its far end
-        q.erase("width");
-        const double d = std::min(m.s1, -m.s0);
-        q["run"] = std::hypot(d, w);
-        q["hinge_angle"] = std::atan2(d, w);
-        q["spine"] = std::hypot(w, m.height);
-        q["spine_angle"] = std::atan2(m.height, w);
-        // Its wings stand on the diagonals: half of the faces they stand in front of.
-        p.principal_area = 0.5 * a.sides;
+    switch (kind) {
+    case MechanismKind::box_fold:
+        plan_box(p, m, a);
+        break;
+    case MechanismKind::step_fold:
+        plan_step(p, m, host, a);
+        break;
+    case MechanismKind::tent_fold:
+        plan_tent(p, m, a);
+        break;
+    case MechanismKind::v_fold:
+        plan_v_fold(p, m, a);
+        break;
+    default:
+        throw std::invalid_argument("a prism maps to a box, step, tent or v-fold, not a " +
+                                    catalogue_entry(kind).title);
     }
     return p;
 }
@@ -116,7 +157,7 @@ Mapping map_mechanisms(const RansacResult& fit)
 {
     Mapping best;
     const size_t n = fit.prisms.size();
-    std::vector<std::vector<std::string>> options(n);
+    std::vector<std::vector<MechanismKind>> options(n);
     for (size_t i = 0; i < n; ++i)
         options[i] = mechanism_options(fit.prisms[i], fit.hosts[fit.prisms[i].host]);
     // Exhaustive: few primitives (max_mechanisms), at most two options each.
@@ -132,7 +173,7 @@ Mapping map_mechanisms(const RansacResult& fit)
                 const Prism& m = fit.prisms[k];
                 const PrismHost& h = fit.hosts[m.host];
                 if (h.parent >= 0 && (options[h.parent].empty() ||
-                                      options[h.parent][choice[h.parent]] != "box_fold"))
+                                      options[h.parent][choice[h.parent]] != MechanismKind::box_fold))
                     return; // stands on a part only a box fold offers
                 plans.push_back(plan_mechanism(options[k][choice[k]], m, h));
             }
@@ -153,7 +194,7 @@ Mapping map_mechanisms(const RansacResult& fit)
     if (best_choice.empty())
         return best;
     best.coverage_error = best_error;
-    std::map<std::string, int> counters;
+    std::map<MechanismKind, int> counters;
     std::vector<int> plan_of(n, -1);
     for (size_t k = 0; k < n; ++k) {
         if (options[k].empty()) {
@@ -164,7 +205,7 @@ Mapping map_mechanisms(const RansacResult& fit)
         const PrismHost& h = fit.hosts[m.host];
         MechanismPlan p = plan_mechanism(options[k][best_choice[k]], m, h);
         p.prism = int(k);
-        p.name = short_name(p.type) + std::to_string(++counters[p.type]);
+        p.name = catalogue_entry(p.kind).short_name + std::to_string(++counters[p.kind]);
         if (h.parent < 0) {
             p.host = "central fold";
         } else {
@@ -182,45 +223,45 @@ refit_for_foldability(std::vector<MechanismPlan>& plans, double min_part)
 {
     std::vector<std::pair<std::string, std::string>> changes;
     auto sweep = [](const MechanismPlan& p) {
-        const auto& q = p.parameters;
-        const double a0 = q.at("offset"), a1 = a0 + (q.count("width") ? q.at("width") : 0.0);
-        if (p.type != "box_fold")
+        const double a0 = p.offset(), a1 = a0 + width_of(p);
+        if (p.kind != MechanismKind::box_fold)
             return std::make_pair(a0, a1);
-        const double reach = q.at("depth_ground");
-        return std::make_pair(a0 - (q.at("front") > 0 ? reach : 0.0),
-                              a1 + (q.at("back") > 0 ? reach : 0.0));
+        const BoxFoldParams& q = p.as<BoxFoldParams>();
+        return std::make_pair(a0 - (q.front ? q.depth_ground : 0.0),
+                              a1 + (q.back ? q.depth_ground : 0.0));
     };
     for (size_t i = 0; i < plans.size(); ++i)
         for (size_t j = 0; j < plans.size(); ++j) {
             if (i == j || plans[i].host != plans[j].host ||
-                plans[i].parameters.at("offset") > plans[j].parameters.at("offset"))
+                plans[i].offset() > plans[j].offset())
                 continue;
             MechanismPlan& first = plans[i];
             MechanismPlan& second = plans[j];
             if (sweep(first).second <= sweep(second).first)
                 continue;
             // Thesis §4.2.2: the end panels facing each other come off first.
-            if (first.type == "box_fold" && first.parameters["back"] > 0 &&
-                first.parameters["front"] > 0) {
-                first.parameters["back"] = 0;
+            if (first.kind == MechanismKind::box_fold && first.as<BoxFoldParams>().back &&
+                first.as<BoxFoldParams>().front) {
+                first.as<BoxFoldParams>().back = false;
                 changes.push_back({first.name, "trimmed its back panels: closed, they would "
                                                "run into " +
                                                    second.name});
             }
-            if (sweep(first).second > sweep(second).first && second.type == "box_fold" &&
-                second.parameters["front"] > 0 && second.parameters["back"] > 0) {
-                second.parameters["front"] = 0;
+            if (sweep(first).second > sweep(second).first &&
+                second.kind == MechanismKind::box_fold && second.as<BoxFoldParams>().front &&
+                second.as<BoxFoldParams>().back) {
+                second.as<BoxFoldParams>().front = false;
                 changes.push_back({second.name, "trimmed its front panels: closed, they would "
                                                 "run into " +
                                                     first.name});
             }
             const double overlap = sweep(first).second - sweep(second).first;
             if (overlap > 0) {
-                auto& q = second.parameters;
-                const double keep = q.count("width") ? q.at("width") - overlap : 0.0;
-                if (q.count("width") && keep > 0 && keep >= min_part) {
-                    q["offset"] += overlap;
-                    q["width"] = keep;
+                const bool has_width = has_field(second, "width");
+                const double keep = has_width ? width_of(second) - overlap : 0.0;
+                if (has_width && keep > 0 && keep >= min_part) {
+                    second.set_value("offset", second.offset() + overlap);
+                    second.set_value("width", keep);
                     std::ostringstream why;
                     why << "shortened by " << overlap << " mm along its hinge: it overlapped "
                         << first.name;
@@ -241,19 +282,12 @@ struct HostRoom {
 
 HostRoom room_offered(const MechanismPlan& box, const HostRoom& its_host, const std::string& part)
 {
-    const auto& q = box.parameters;
-    const double width = q.at("width"), dg = q.at("depth_ground"), db = q.at("depth_backdrop");
+    const BoxFoldParams& q = box.as<BoxFoldParams>();
     if (part == "top")
-        return {width, dg, db};
+        return {q.width, q.depth_ground, q.depth_backdrop};
     if (part == "side_ground")
-        return {width, its_host.ground - dg, q.at("height")};
-    return {width, q.at("height"), its_host.backdrop - db}; // side_backdrop
-}
-
-void at_most(std::map<std::string, double>& q, const char* key, double limit)
-{
-    if (q.count(key))
-        q[key] = std::min(q[key], limit);
+        return {q.width, its_host.ground - q.depth_ground, q.height};
+    return {q.width, q.height, its_host.backdrop - q.depth_backdrop}; // side_backdrop
 }
 
 } // namespace
@@ -269,19 +303,19 @@ void keep_inside_ranges(std::vector<MechanismPlan>& plans, double card_width, do
             const std::string part = p.host.substr(p.host.find('.') + 1);
             host = room_offered(plans[p.parent], host_of[p.parent], part);
         }
-        auto& q = p.parameters;
         // Along the hinge: [margin, length − margin].
-        const double extent =
-            q.count("width") ? q["width"] : q.at("spine") * std::cos(q.at("spine_angle"));
-        const double span = std::min(extent, host.length - 2 * margin);
-        if (q.count("width"))
-            q["width"] = span;
-        q["offset"] = std::clamp(q.at("offset"), margin, host.length - margin - span);
+        const bool has_width = has_field(p, "width");
+        const double span = std::min(p.extent(), host.length - 2 * margin);
+        if (has_width)
+            p.set_value("width", span);
+        p.set_value("offset", std::clamp(p.offset(), margin, host.length - margin - span));
         // Across: below each side's depth.
-        for (const char* key : {"depth_ground", "run_ground", "foot"})
-            at_most(q, key, host.ground - margin);
-        for (const char* key : {"depth_backdrop", "run_backdrop", "foot_backdrop"})
-            at_most(q, key, host.backdrop - margin);
+        for (const ParameterField& f : catalogue_entry(p.kind).fields) {
+            if (f.bound == HostBound::ground_depth)
+                f.set(p.params, std::min(f.get(p.params), host.ground - margin));
+            if (f.bound == HostBound::backdrop_depth)
+                f.set(p.params, std::min(f.get(p.params), host.backdrop - margin));
+        }
         host_of[k] = host;
     }
 }

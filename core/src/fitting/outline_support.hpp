@@ -5,7 +5,7 @@
 
 #include "popup/input/model_mesh.hpp"
 #include "popup/model/apply_profile.hpp"
-#include "popup/model/designed_card.hpp"
+#include "popup/mechanisms/designed_card.hpp"
 
 namespace popup::outline_support {
 

@@ -132,4 +132,9 @@ bool Patch::contains(const Vec3& x, double tol) const
     return true;
 }
 
+std::string patch_subject(const Patch& patch)
+{
+    return "patch " + std::to_string(patch.id) + (patch.name.empty() ? "" : " (" + patch.name + ")");
+}
+
 } // namespace popup

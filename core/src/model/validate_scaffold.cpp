@@ -19,15 +19,6 @@ namespace {
 
 constexpr double kLargestCoordinate = 1e6; // mm
 
-std::string patch_subject(const Patch& p)
-{
-    std::ostringstream s;
-    s << "patch " << p.id;
-    if (!p.name.empty())
-        s << " (" << p.name << ")";
-    return s.str();
-}
-
 // Within a kilometre of the origin: any paper design is, and squares of such coordinates (areas,
 // normals) stay far from overflow.
 bool finite(const Vec3& x)

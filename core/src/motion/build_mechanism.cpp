@@ -6,20 +6,23 @@ namespace popup::motion {
 
 namespace {
 
+/// The report's row of a mechanism of `kind` with parameters `params`.
+FittedMechanism row_of(MechanismKind kind, const MechanismParams& params, const std::string& name,
+                       const std::string& host)
+{
+    FittedMechanism row;
+    row.kind = kind;
+    row.params = params;
+    row.name = name;
+    row.host = host;
+    return row;
+}
+
 /// The report's row of a floating layer (the stationary mapping's, or an off-fold arm's host).
 FittedMechanism layer_row(const FloatingLayerParams& f, const std::string& name,
                           const std::string& host)
 {
-    FittedMechanism row;
-    row.type = "floating_layer";
-    row.name = name;
-    row.host = host;
-    row.parameters = {{"offset", f.offset},
-                      {"width", f.width},
-                      {"height", f.height},
-                      {"support", f.support},
-                      {"overhang", f.overhang}};
-    return row;
+    return row_of(MechanismKind::floating_layer, f, name, host);
 }
 
 } // namespace
@@ -46,8 +49,7 @@ Result<std::vector<MechanismParts>> build_mechanism(Scaffold& scaffold, const Ba
     switch (m.kind) {
     case MotionKind::rotation: {
         const RotationArmParams r = rotation_params(m);
-        row.type = "rotation_arm";
-        row.parameters = {{"offset", r.offset}, {"spine", r.spine}, {"run", r.run}, {"arm", r.arm}};
+        row = row_of(MechanismKind::rotation_arm, r, name, row.host);
         if (!rotation_off_fold(m)) {
             take(add_rotation_arm(scaffold, host, r, name), row);
             break;
@@ -66,46 +68,24 @@ Result<std::vector<MechanismParts>> build_mechanism(Scaffold& scaffold, const Ba
     }
     case MotionKind::vertical: {
         const VBoxFoldParams v = vertical_params(m);
-        row.type = "vertical_translation";
-        row.parameters = {{"offset", v.offset},
-                          {"side", v.side},
-                          {"height", v.height},
-                          {"wall_angle", v.wall_angle},
-                          {"back", 0.0}};
+        row = row_of(MechanismKind::vertical_translation, v, name, row.host);
         take(add_vertical_translation(scaffold, host, v, name), row);
         break;
     }
     case MotionKind::horizontal: {
         const HorizontalTranslationParams h = horizontal_params(m);
-        row.type = "horizontal_translation";
-        row.parameters = {{"offset", h.offset},
-                          {"width", h.width},
-                          {"run_ground", h.run_ground},
-                          {"run_backdrop", h.run_backdrop},
-                          {"reach", h.reach}};
+        row = row_of(MechanismKind::horizontal_translation, h, name, row.host);
         take(add_horizontal_translation(scaffold, host, h, name), row);
         break;
     }
     case MotionKind::diagonal: {
         const VFoldParams v = diagonal_v_fold(m);
-        row.type = "v_fold";
-        row.parameters = {{"offset", v.offset},
-                          {"run", v.run},
-                          {"hinge_angle", v.hinge_angle},
-                          {"spine", v.spine},
-                          {"spine_angle", v.spine_angle}};
+        row = row_of(MechanismKind::v_fold, v, name, row.host);
         if (!take(add_v_fold(scaffold, host, v, name), row))
             break;
         const BasePatchPair wings = out.value.back().offered.at(0);
         const StepFoldParams s = diagonal_step(m);
-        FittedMechanism step;
-        step.type = "step_fold";
-        step.name = name + "_step";
-        step.host = wings.name;
-        step.parameters = {{"offset", s.offset},
-                           {"width", s.width},
-                           {"run_ground", s.run_ground},
-                           {"run_backdrop", s.run_backdrop}};
+        const FittedMechanism step = row_of(MechanismKind::step_fold, s, name + "_step", wings.name);
         take(add_step_fold(scaffold, wings, s, step.name), step);
         break;
     }

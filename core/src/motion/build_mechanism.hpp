@@ -4,7 +4,7 @@
 
 #include "motion_mechanism.hpp"
 #include "popup/mechanisms/mechanism.hpp"
-#include "popup/model/designed_card.hpp"
+#include "popup/mechanisms/designed_card.hpp"
 
 namespace popup::motion {
 

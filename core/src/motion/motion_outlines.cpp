@@ -8,17 +8,21 @@
 
 namespace popup::motion {
 
-std::vector<std::string> outlined_parts(const std::string& type)
+std::vector<std::string> outlined_parts(MechanismKind kind)
 {
-    if (type == "rotation_arm")
+    switch (kind) {
+    case MechanismKind::rotation_arm:
         return {"wing_arm"};
-    if (type == "vertical_translation" || type == "floating_layer")
+    case MechanismKind::vertical_translation:
+    case MechanismKind::floating_layer:
         return {"TG", "TB"};
-    if (type == "horizontal_translation")
+    case MechanismKind::horizontal_translation:
         return {"M"};
-    if (type == "step_fold")
+    case MechanismKind::step_fold:
         return {"tread"};
-    return {};
+    default:
+        return {};
+    }
 }
 
 namespace {
@@ -61,7 +65,7 @@ void outline_motion(const Animation& animation, MotionResult& r, const CancelFla
     const ModelMesh posed = posed_mesh(animation, double(r.targets.last_frame));
     // The chains each mechanism carries (a merged patch carries all of its chains' parts).
     for (const FittedMechanism& m : r.mechanisms) {
-        const std::vector<std::string> parts = outlined_parts(m.type);
+        const std::vector<std::string> parts = outlined_parts(m.kind);
         if (parts.empty())
             continue;
         // A mechanism that hosts another (the floating layer under a rotation off the fold)

@@ -8,7 +8,7 @@ namespace popup::motion {
 /// that moves with the end effector (rotation_arm wing_arm, vertical_translation TG and TB,
 /// horizontal_translation M, the diagonal's step_fold tread) or the floating layer's platform
 /// (TG and TB). Empty for the diagonal's v_fold, which only carries the step.
-std::vector<std::string> outlined_parts(const std::string& type);
+std::vector<std::string> outlined_parts(MechanismKind kind);
 
 /// Thesis §6.4 (Patches): each mechanism's outlined parts take the orthographic projection, at
 /// the last frame (the card open flat), of the mesh triangles skinned to the chains it carries

@@ -61,8 +61,7 @@ bool crosses(const Loop2& polygon, const Vec2& a, const Vec2& b)
 
 std::string patch_name(const Scaffold& s, int id)
 {
-    const Patch& p = *s.find_patch(id);
-    return "patch " + std::to_string(id) + (p.name.empty() ? "" : " (" + p.name + ")");
+    return patch_subject(*s.find_patch(id));
 }
 
 } // namespace

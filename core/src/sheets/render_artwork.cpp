@@ -30,12 +30,6 @@ std::string whole(double count)
     return s.str();
 }
 
-std::string patch_name(const Patch& patch)
-{
-    return "patch " + std::to_string(patch.id) +
-           (patch.name.empty() ? "" : " (" + patch.name + ")");
-}
-
 std::string model_name(const ModelMesh& mesh)
 {
     return mesh.source.empty() ? std::string("model") : mesh.source;
@@ -314,14 +308,14 @@ Result<PatchArtwork> render_one(const ModelMesh& mesh, const Appearance& look, c
     if (!std::isfinite(deviation) || outline.size() < 3 || !(patch.area() > 0.0) ||
         !lo.allFinite() || !hi.allFinite()) {
         r.fail(DiagnosticCode::degenerate_patch,
-               patch_name(given) + ": its outline encloses no area, there is nothing to print on",
+               patch_subject(given) + ": its outline encloses no area, there is nothing to print on",
                about_patches({given.id}));
         return r;
     }
     const double tolerance = 1e-4 * std::max((hi - lo).norm(), 1.0);
     if (deviation > tolerance) {
         r.fail(DiagnosticCode::non_planar_patch,
-               patch_name(given) + ": not planar, a vertex lies " + number(deviation) +
+               patch_subject(given) + ": not planar, a vertex lies " + number(deviation) +
                    " mm off its plane (allowed " + number(tolerance) + " mm)",
                about_patches({given.id}));
         return r;
@@ -331,7 +325,7 @@ Result<PatchArtwork> render_one(const ModelMesh& mesh, const Appearance& look, c
     const double rows = std::max(1.0, std::ceil((hi.y() - lo.y()) * options.pixels_per_mm));
     if (columns * rows > double(options.max_pixels)) {
         r.fail(DiagnosticCode::bad_option,
-               "artwork of " + patch_name(given) + ": " + whole(columns) + " x " + whole(rows) +
+               "artwork of " + patch_subject(given) + ": " + whole(columns) + " x " + whole(rows) +
                    " pixels at " + number(options.pixels_per_mm) +
                    " pixels per mm, at most max_pixels = " + std::to_string(options.max_pixels) +
                    "; lower pixels_per_mm",

@@ -20,11 +20,6 @@ Vec3 across(const Vec3& x, const Vec3& a, const Vec3& d)
     return v.normalized();
 }
 
-std::string name_of(const Patch& p)
-{
-    return "patch " + std::to_string(p.id) + (p.name.empty() ? "" : " (" + p.name + ")");
-}
-
 } // namespace
 
 Result<FlatPiece> unfold_piece(const Scaffold& input, const std::vector<int>& piece)
@@ -86,8 +81,8 @@ Result<FlatPiece> unfold_piece(const Scaffold& input, const std::vector<int>& pi
         for (int id : piece)
             if (!unfold.count(id)) {
                 r.fail(DiagnosticCode::disconnected_piece,
-                       name_of(*s.find_patch(id)) + " is not joined to " +
-                           name_of(*s.find_patch(piece.front())) + " by folds of the piece",
+                       patch_subject(*s.find_patch(id)) + " is not joined to " +
+                           patch_subject(*s.find_patch(piece.front())) + " by folds of the piece",
                        about_patches({id, piece.front()}));
                 break;
             }
@@ -116,7 +111,7 @@ Result<FlatPiece> unfold_piece(const Scaffold& input, const std::vector<int>& pi
         for (const Vec3& x : s.find_patch(id)->outer)
             if (std::abs((u.apply(x) - root.origin).dot(root.normal)) > tol) {
                 r.fail(DiagnosticCode::not_flat,
-                       name_of(*s.find_patch(id)) + " does not come to lie flat",
+                       patch_subject(*s.find_patch(id)) + " does not come to lie flat",
                        about_patches({id}));
                 break;
             }

@@ -33,11 +33,6 @@ std::string deg(double radians)
     return s.str();
 }
 
-std::string describe(const Patch& p)
-{
-    return "patch " + std::to_string(p.id) + (p.name.empty() ? "" : " (" + p.name + ")");
-}
-
 /// Everything the checks share: the validated scaffold, its bodies, the solver and the meshes.
 struct Checker {
     const Scaffold& s;
@@ -253,7 +248,7 @@ const FoldState* judge_foldable(const Scaffold& s, const Result<FoldSweep>& sim,
                 }
         if (report.flatness_at_zero > flat_tolerance)
             add_error(report, DiagnosticCode::not_flat_when_closed,
-                      describe(s.patches[worst]) + " stands " +
+                      patch_subject(s.patches[worst]) + " stands " +
                           millimetres(report.flatness_at_zero) +
                           " off the page plane when the card is closed (allowed " +
                           millimetres(flat_tolerance) + ")",
@@ -309,7 +304,7 @@ void judge_stable(const Scaffold& s, const BodyGraph& graph, const FoldSolver& s
             const FoldState& st = sweep.states[between[k]];
             std::ostringstream names;
             for (size_t i = 0; i < moving.size(); ++i)
-                names << (i ? ", " : "") << describe(*s.find_patch(moving[i]));
+                names << (i ? ", " : "") << patch_subject(*s.find_patch(moving[i]));
             add_error(report, DiagnosticCode::unstable,
                       std::to_string(dimension) + " free motion(s) besides the fold angle at " +
                           deg(st.angle) + ": " + names.str() +
@@ -383,7 +378,7 @@ void judge_intersection_free(const Checker& checker, const FoldSweep& sweep,
         const Patch& b = s.patches[key.second];
         report.crossings.push_back({a.id, b.id, f.angle, f.depth});
         add_error(report, DiagnosticCode::intersection,
-                  describe(a) + " passes through " + describe(b) + " from " + deg(f.angle) +
+                  patch_subject(a) + " passes through " + patch_subject(b) + " from " + deg(f.angle) +
                       " (deepest " + millimetres(f.depth) + ")",
                   about_patches({a.id, b.id}, f.angle * 180.0 / M_PI));
     }
@@ -427,7 +422,7 @@ void judge_enclosed(const Scaffold& s, const FoldState* closed, double flat_tole
         if (worst > flat_tolerance) {
             report.enclosed = false;
             std::ostringstream m;
-            m << describe(s.patches[i]) << " sticks out of the closed card by "
+            m << patch_subject(s.patches[i]) << " sticks out of the closed card by "
               << millimetres(worst) << " at y = " << where.x() << " mm, z = " << where.y() << " mm";
             add_error(report, DiagnosticCode::not_enclosed, m.str(),
                       about_patches({s.patches[i].id}, 0.0));

@@ -11,18 +11,28 @@ MechanismPlan box(const std::string& name, const std::string& host, int parent, 
                   double width, double depth, double height)
 {
     MechanismPlan p;
-    p.type = "box_fold";
-    p.name = name;
-    p.host = host;
+    static_cast<DesignedMechanism&>(p) =
+        DesignedMechanism::of_kind(MechanismKind::box_fold, name, host);
     p.parent = parent;
-    p.parameters = {{"offset", offset},
-                    {"width", width},
-                    {"depth_ground", depth},
-                    {"depth_backdrop", depth},
-                    {"height", height},
-                    {"panel_pairs", 1},
-                    {"front", 1},
-                    {"back", 1}};
+    BoxFoldParams& q = p.as<BoxFoldParams>();
+    q.offset = offset;
+    q.width = width;
+    q.depth_ground = depth;
+    q.depth_backdrop = depth;
+    q.height = height;
+    q.panel_pairs = 1;
+    q.front = true;
+    q.back = true;
+    return p;
+}
+
+MechanismPlan step_on(const std::string& host, int parent, const StepFoldParams& params)
+{
+    MechanismPlan p;
+    static_cast<DesignedMechanism&>(p) =
+        DesignedMechanism::of_kind(MechanismKind::step_fold, "S1", host);
+    p.parent = parent;
+    p.params = params;
     return p;
 }
 
@@ -60,12 +70,15 @@ TEST(FitDesignRepair, OverlappingSweepsDropTheLaterAndWhatStandsOnIt)
     // Closed, B1 sweeps [60 − 30, 100 + 30] = [30, 130] along the fold, B2 [110 − 30, 150 + 30]:
     // they overlap.
     MechanismPlan tent;
-    tent.type = "tent_fold";
-    tent.name = "T1";
-    tent.host = "B2.top";
+    static_cast<DesignedMechanism&>(tent) =
+        DesignedMechanism::of_kind(MechanismKind::tent_fold, "T1", "B2.top");
     tent.parent = 1;
-    tent.parameters = {
-        {"offset", 0}, {"width", 40}, {"foot", 20}, {"foot_backdrop", 20}, {"slope", 25}};
+    TentFoldParams& q = tent.as<TentFoldParams>();
+    q.offset = 0;
+    q.width = 40;
+    q.foot = 20;
+    q.foot_backdrop = 20;
+    q.slope = 25;
     const RepairOutcome o =
         build_until_valid(CardParams(), {box("B1", "central fold", -1, 60, 40, 30, 40),
                                          box("B2", "central fold", -1, 110, 40, 30, 40), tent});
@@ -84,12 +97,12 @@ TEST(FitDesignRepair, OverlappingSweepsDropTheLaterAndWhatStandsOnIt)
 TEST(FitDesignRepair, RefusedParametersAreDroppedWithTheGeneratorsReason)
 {
     // A step on B1's ground side rising 50 up a 40 high wall: its generator refuses it.
-    MechanismPlan step;
-    step.type = "step_fold";
-    step.name = "S1";
-    step.host = "B1.side_ground";
-    step.parent = 0;
-    step.parameters = {{"offset", 10}, {"width", 40}, {"run_ground", 20}, {"run_backdrop", 50}};
+    StepFoldParams q;
+    q.offset = 10;
+    q.width = 40;
+    q.run_ground = 20;
+    q.run_backdrop = 50;
+    const MechanismPlan step = step_on("B1.side_ground", 0, q);
     const RepairOutcome o =
         build_until_valid(CardParams(), {box("B1", "central fold", -1, 40, 100, 30, 40), step});
     EXPECT_TRUE(o.valid);
@@ -130,29 +143,29 @@ TEST(FitDesignRepair, ParametersOnTheirBoundsMoveInsideByTheMargin)
     // as B1. Each lands on a generator bound; keep_inside_ranges moves it `margin` inside.
     const CardParams card;
     const double margin = 0.01;
-    MechanismPlan step;
-    step.type = "step_fold";
-    step.name = "S1";
-    step.host = "B1.side_backdrop";
-    step.parent = 0;
-    step.parameters = {{"offset", 0.1}, {"width", 99.9}, {"run_ground", 40}, {"run_backdrop", 20}};
+    StepFoldParams q;
+    q.offset = 0.1;
+    q.width = 99.9;
+    q.run_ground = 40;
+    q.run_backdrop = 20;
+    const MechanismPlan step = step_on("B1.side_backdrop", 0, q);
     std::vector<MechanismPlan> plans = {box("B1", "central fold", -1, 40, 100, 30, 40), step,
                                         box("B2", "B1.top", 0, 0, 100, 30, 20)};
     keep_inside_ranges(plans, card.width, card.depth, margin);
-    const auto& s = plans[1].parameters;
+    const auto& s = plans[1].parameter_values();
     // Its width fits (99.9 <= 100 - 2 margin): it keeps it and moves back to end margin short.
     EXPECT_NEAR(s.at("width"), 99.9, 1e-12);
     EXPECT_NEAR(s.at("offset"), 100 - margin - 99.9, 1e-9);
     EXPECT_NEAR(s.at("run_ground"), 40 - margin, 1e-12); // the wall: B1's height
     EXPECT_EQ(s.at("run_backdrop"), 20);                 // well inside the page beyond the wall
-    const auto& t = plans[2].parameters;
+    const auto& t = plans[2].parameter_values();
     EXPECT_NEAR(t.at("offset"), margin, 1e-12);
     EXPECT_NEAR(t.at("width"), 100 - 2 * margin, 1e-12);
     EXPECT_NEAR(t.at("depth_ground"), 30 - margin, 1e-12);
     EXPECT_NEAR(t.at("depth_backdrop"), 30 - margin, 1e-12);
     // B1 itself is well inside the card: unchanged.
-    EXPECT_EQ(plans[0].parameters.at("width"), 100);
-    EXPECT_EQ(plans[0].parameters.at("offset"), 40);
+    EXPECT_EQ(plans[0].value("width"), 100);
+    EXPECT_EQ(plans[0].value("offset"), 40);
     // Each builds on B1 (the step and B2 would meet at B1's top edge: built apart).
     for (size_t k : {1, 2}) {
         const RepairOutcome o = build_until_valid(card, {plans[0], plans[k]});

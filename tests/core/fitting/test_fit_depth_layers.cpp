@@ -78,7 +78,7 @@ std::string describe(const FitResult& r)
 {
     std::string s;
     for (const auto& m : r.mechanisms)
-        s += m.name + " " + m.type + " on " + m.host + "; ";
+        s += m.name + " " + m.kind_name() + " on " + m.host + "; ";
     for (const auto& x : r.repairs)
         s += x.mechanism + " " + x.action + ": " + x.reason + "; ";
     return s;
@@ -94,18 +94,18 @@ TEST(FitDepthLayers, SteppedTruckFrontGetsTheBonnetAsANestedStep)
     EXPECT_TRUE(check_validity(r.scaffold).valid());
     ASSERT_GE(r.mechanisms.size(), 2u) << describe(r);
     const FittedMechanism& cab = r.mechanisms[0];
-    ASSERT_EQ(cab.type, "box_fold") << describe(r);
+    ASSERT_EQ(cab.kind_name(), "box_fold") << describe(r);
     const FittedMechanism* step = nullptr;
     for (const FittedMechanism& m : r.mechanisms)
-        if (m.host == cab.name + ".side_ground" && m.type == "step_fold")
+        if (m.host == cab.name + ".side_ground" && m.kind_name() == "step_fold")
             step = &m;
     ASSERT_TRUE(step) << describe(r);
     const double s = scale_of(r);
     const double tol = 0.02 * (kBonnetFront + 20) * s; // 2 % of the bounding box along x
     // The step's riser stands where the bonnet's front is, 25 in front of the cab's.
-    EXPECT_NEAR(step->parameters.at("run_ground"), (kBonnetFront - kCabFront) * s, tol);
-    EXPECT_NEAR(step->parameters.at("run_backdrop"), 20 * s, 0.02 * 40 * s);
-    EXPECT_NEAR(step->parameters.at("width"), 40 * s, 0.02 * 60 * s);
+    EXPECT_NEAR(step->parameter_values().at("run_ground"), (kBonnetFront - kCabFront) * s, tol);
+    EXPECT_NEAR(step->parameter_values().at("run_backdrop"), 20 * s, 0.02 * 40 * s);
+    EXPECT_NEAR(step->parameter_values().at("width"), 40 * s, 0.02 * 60 * s);
     const double bonnet_x = to_card(r, Vec3(kBonnetFront, 30, 10)).x();
     const Patch* riser = nullptr;
     for (const Patch& p : r.scaffold.patches)
@@ -124,22 +124,22 @@ TEST(FitDepthLayers, SteppedTruckFrontGetsTheBonnetAsANestedStep)
     // The load bed behind: a step on the backdrop side pair, whose wall (R) is its ground.
     const FittedMechanism* bed = nullptr;
     for (const FittedMechanism& m : r.mechanisms)
-        if (m.host == cab.name + ".side_backdrop" && m.type == "step_fold")
+        if (m.host == cab.name + ".side_backdrop" && m.kind_name() == "step_fold")
             bed = &m;
     ASSERT_TRUE(bed) << describe(r);
-    EXPECT_NEAR(bed->parameters.at("run_backdrop"), 25 * s, tol);
-    EXPECT_NEAR(bed->parameters.at("run_ground"), 30 * s, 0.02 * 52 * s);
-    EXPECT_NEAR(bed->parameters.at("width"), 50 * s, 0.02 * 60 * s);
+    EXPECT_NEAR(bed->parameter_values().at("run_backdrop"), 25 * s, tol);
+    EXPECT_NEAR(bed->parameter_values().at("run_ground"), 30 * s, 0.02 * 52 * s);
+    EXPECT_NEAR(bed->parameter_values().at("width"), 50 * s, 0.02 * 60 * s);
     // The beacon on the roof: a box fold on the cab's top, as high as the beacon.
     const FittedMechanism* beacon = nullptr;
     for (const FittedMechanism& m : r.mechanisms)
-        if (m.host == cab.name + ".top" && m.type == "box_fold")
+        if (m.host == cab.name + ".top" && m.kind_name() == "box_fold")
             beacon = &m;
     ASSERT_TRUE(beacon) << describe(r);
-    EXPECT_NEAR(beacon->parameters.at("height"), 12 * s, 0.02 * 52 * s);
-    EXPECT_NEAR(beacon->parameters.at("depth_ground"), 12 * s, tol);
-    EXPECT_NEAR(beacon->parameters.at("depth_backdrop"), 12 * s, tol);
-    EXPECT_NEAR(beacon->parameters.at("width"), 20 * s, 0.02 * 60 * s);
+    EXPECT_NEAR(beacon->parameter_values().at("height"), 12 * s, 0.02 * 52 * s);
+    EXPECT_NEAR(beacon->parameter_values().at("depth_ground"), 12 * s, tol);
+    EXPECT_NEAR(beacon->parameter_values().at("depth_backdrop"), 12 * s, tol);
+    EXPECT_NEAR(beacon->parameter_values().at("width"), 20 * s, 0.02 * 60 * s);
     // Reported as kept, each with the distances that justified it.
     std::map<std::string, std::string> kept; // face -> mechanism
     for (const FittedDepthLayer& l : r.depth_layers)

@@ -74,7 +74,7 @@ double mean_box_to_scaffold(const Scaffold& s, const Vec3& lo, const Vec3& hi)
 const FittedMechanism* find_type(const FitResult& r, const std::string& type, int nth = 0)
 {
     for (const auto& m : r.mechanisms)
-        if (m.type == type && nth-- == 0)
+        if (m.kind_name() == type && nth-- == 0)
             return &m;
     return nullptr;
 }
@@ -83,8 +83,8 @@ std::string describe(const FitResult& r)
 {
     std::string s;
     for (const auto& m : r.mechanisms) {
-        s += m.name + " " + m.type + " on " + m.host + ":";
-        for (const auto& [k, v] : m.parameters)
+        s += m.name + " " + m.kind_name() + " on " + m.host + ":";
+        for (const auto& [k, v] : m.parameter_values())
             s += " " + k + "=" + std::to_string(v);
         s += "\n";
     }
@@ -103,7 +103,7 @@ TEST(FitDesign, CuboidIsOneBoxFoldWhoseDesignStateIsTheCuboid)
     const FitResult& r = result.value;
     ASSERT_EQ(r.mechanisms.size(), 1u) << describe(r);
     const FittedMechanism& box = r.mechanisms[0];
-    EXPECT_EQ(box.type, "box_fold");
+    EXPECT_EQ(box.kind_name(), "box_fold");
     EXPECT_EQ(box.host, "central fold");
     EXPECT_TRUE(r.valid);
     EXPECT_TRUE(check_validity(r.scaffold).valid());
@@ -111,7 +111,7 @@ TEST(FitDesign, CuboidIsOneBoxFoldWhoseDesignStateIsTheCuboid)
     // 40 x 120 x 30: the fold runs along the 120, x is the 40 across it.
     const double s = expected_scale(120, 20, 30, o);
     const double length = 120 * s, depth = 20 * s, height = 30 * s;
-    const auto& q = box.parameters;
+    const auto& q = box.parameter_values();
     EXPECT_NEAR(q.at("width"), length, 0.02 * length);
     EXPECT_NEAR(q.at("depth_ground"), depth, 0.02 * 2 * depth);
     EXPECT_NEAR(q.at("depth_backdrop"), depth, 0.02 * 2 * depth);
@@ -135,7 +135,7 @@ TEST(FitDesign, TentPrismIsATentFold)
     ASSERT_TRUE(tent) << describe(r);
     EXPECT_TRUE(r.valid);
     const double s = expected_scale(110, 30, 36, o);
-    const auto& q = tent->parameters;
+    const auto& q = tent->parameter_values();
     EXPECT_NEAR(q.at("width"), 110 * s, 0.02 * 110 * s);
     EXPECT_NEAR(q.at("foot"), 30 * s, 0.02 * 60 * s);
     EXPECT_NEAR(q.at("foot_backdrop"), 30 * s, 0.02 * 60 * s);
@@ -179,13 +179,13 @@ TEST(FitDesign, HouseIsABoxWithATentOnItsTop)
     ASSERT_TRUE(box && roof) << describe(r);
     EXPECT_EQ(box->host, "central fold");
     EXPECT_EQ(roof->host, box->name + ".top");
-    EXPECT_ALONG(box->parameters.at("width"), 100, f);
-    EXPECT_ACROSS(box->parameters.at("depth_ground"), 30, f);
-    EXPECT_UP(box->parameters.at("height"), 24, f);
-    EXPECT_ALONG(roof->parameters.at("width"), 100, f);
-    EXPECT_ACROSS(roof->parameters.at("foot"), 30, f);
-    EXPECT_ACROSS(roof->parameters.at("foot_backdrop"), 30, f);
-    EXPECT_UP(roof->parameters.at("slope"), std::hypot(30, 18), f);
+    EXPECT_ALONG(box->parameter_values().at("width"), 100, f);
+    EXPECT_ACROSS(box->parameter_values().at("depth_ground"), 30, f);
+    EXPECT_UP(box->parameter_values().at("height"), 24, f);
+    EXPECT_ALONG(roof->parameter_values().at("width"), 100, f);
+    EXPECT_ACROSS(roof->parameter_values().at("foot"), 30, f);
+    EXPECT_ACROSS(roof->parameter_values().at("foot_backdrop"), 30, f);
+    EXPECT_UP(roof->parameter_values().at("slope"), std::hypot(30, 18), f);
 }
 
 TEST(FitDesign, TruckIsAStackOfBoxFolds)
@@ -195,8 +195,8 @@ TEST(FitDesign, TruckIsAStackOfBoxFolds)
     ASSERT_EQ(r.mechanisms.size(), 3u) << describe(r);
     const Frame f(140, 20, 50, o);
     for (const auto& m : r.mechanisms)
-        EXPECT_EQ(m.type, "box_fold") << describe(r);
-    const auto& chassis = r.mechanisms[0].parameters;
+        EXPECT_EQ(m.kind_name(), "box_fold") << describe(r);
+    const auto& chassis = r.mechanisms[0].parameter_values();
     EXPECT_EQ(r.mechanisms[0].host, "central fold");
     EXPECT_ALONG(chassis.at("width"), 140, f);
     EXPECT_UP(chassis.at("height"), 14, f);
@@ -204,22 +204,22 @@ TEST(FitDesign, TruckIsAStackOfBoxFolds)
     // Cargo (y 0..80, 36 high) and cab (y 96..132, 24 high) on the chassis's top.
     const FittedMechanism* cargo = &r.mechanisms[1];
     const FittedMechanism* cab = &r.mechanisms[2];
-    if (cargo->parameters.at("offset") > cab->parameters.at("offset"))
+    if (cargo->parameter_values().at("offset") > cab->parameter_values().at("offset"))
         std::swap(cargo, cab);
     EXPECT_EQ(cargo->host, r.mechanisms[0].name + ".top");
     EXPECT_EQ(cab->host, r.mechanisms[0].name + ".top");
-    EXPECT_ALONG(cargo->parameters.at("offset"), 0, f);
-    EXPECT_ALONG(cargo->parameters.at("width"), 80, f);
-    EXPECT_UP(cargo->parameters.at("height"), 36, f);
-    EXPECT_ALONG(cab->parameters.at("offset"), 96, f);
-    EXPECT_ALONG(cab->parameters.at("width"), 36, f);
-    EXPECT_UP(cab->parameters.at("height"), 24, f);
+    EXPECT_ALONG(cargo->parameter_values().at("offset"), 0, f);
+    EXPECT_ALONG(cargo->parameter_values().at("width"), 80, f);
+    EXPECT_UP(cargo->parameter_values().at("height"), 36, f);
+    EXPECT_ALONG(cab->parameter_values().at("offset"), 96, f);
+    EXPECT_ALONG(cab->parameter_values().at("width"), 36, f);
+    EXPECT_UP(cab->parameter_values().at("height"), 24, f);
     // §4.2.2: closed, each box's end creases stand out by its half depth (20): the 16 between
     // cargo and cab is too little for both, so the panels facing each other come off.
-    EXPECT_EQ(cargo->parameters.at("back"), 0.0);
-    EXPECT_EQ(cargo->parameters.at("front"), 1.0);
-    EXPECT_EQ(cab->parameters.at("front"), 0.0);
-    EXPECT_EQ(cab->parameters.at("back"), 1.0);
+    EXPECT_EQ(cargo->parameter_values().at("back"), 0.0);
+    EXPECT_EQ(cargo->parameter_values().at("front"), 1.0);
+    EXPECT_EQ(cab->parameter_values().at("front"), 0.0);
+    EXPECT_EQ(cab->parameter_values().at("back"), 1.0);
     int trimmed = 0;
     for (const FitRepair& repair : r.repairs)
         trimmed += repair.action == "trimmed" &&
@@ -233,11 +233,11 @@ TEST(FitDesign, LBuildingIsAWingBoxCarryingTheTower)
     const FitResult r = fitted(l_building_model(), o);
     ASSERT_EQ(r.mechanisms.size(), 2u) << describe(r);
     const Frame f(100, 20, 60, o);
-    EXPECT_EQ(r.mechanisms[0].type, "box_fold");
-    EXPECT_EQ(r.mechanisms[1].type, "box_fold");
+    EXPECT_EQ(r.mechanisms[0].kind_name(), "box_fold");
+    EXPECT_EQ(r.mechanisms[1].kind_name(), "box_fold");
     EXPECT_EQ(r.mechanisms[1].host, r.mechanisms[0].name + ".top");
-    const auto& wing = r.mechanisms[0].parameters;
-    const auto& tower = r.mechanisms[1].parameters;
+    const auto& wing = r.mechanisms[0].parameter_values();
+    const auto& tower = r.mechanisms[1].parameter_values();
     EXPECT_ALONG(wing.at("width"), 100, f);
     EXPECT_UP(wing.at("height"), 24, f);
     EXPECT_ACROSS(wing.at("depth_ground"), 20, f);
@@ -260,10 +260,10 @@ TEST(FitDesign, TurnedMovedScaledCopyGivesTheSameDesign)
         const FitResult b = fitted(moved(model, turn, 3.7, Vec3(120, -45, 1000)), o);
         ASSERT_EQ(a.mechanisms.size(), b.mechanisms.size()) << describe(a) << describe(b);
         for (size_t i = 0; i < a.mechanisms.size(); ++i) {
-            EXPECT_EQ(a.mechanisms[i].type, b.mechanisms[i].type);
+            EXPECT_EQ(a.mechanisms[i].kind_name(), b.mechanisms[i].kind_name());
             EXPECT_EQ(a.mechanisms[i].host, b.mechanisms[i].host);
-            for (const auto& [k, v] : a.mechanisms[i].parameters)
-                EXPECT_NEAR(b.mechanisms[i].parameters.at(k), v, 0.01 * 105)
+            for (const auto& [k, v] : a.mechanisms[i].parameter_values())
+                EXPECT_NEAR(b.mechanisms[i].parameter_values().at(k), v, 0.01 * 105)
                     << model.source << " " << a.mechanisms[i].name << " " << k;
         }
         // model_to_card of the copy, composed with the move, is the original's.
@@ -290,8 +290,8 @@ TEST(FitDesign, UpAndFacingOverrideTheAlignment)
     const FitResult r = fitted(moved(cuboid_model(), lie, 1.0, Vec3::Zero()), o);
     ASSERT_EQ(r.mechanisms.size(), 1u) << describe(r);
     const Frame f(120, 20, 30, o);
-    EXPECT_UP(r.mechanisms[0].parameters.at("height"), 30, f);
-    EXPECT_ACROSS(r.mechanisms[0].parameters.at("depth_ground"), 20, f);
+    EXPECT_UP(r.mechanisms[0].parameter_values().at("height"), 30, f);
+    EXPECT_ACROSS(r.mechanisms[0].parameter_values().at("depth_ground"), 20, f);
     // model_to_card takes the given up to +z and facing to +x.
     const Mat3 linear = r.model_to_card.topLeftCorner<3, 3>();
     EXPECT_GT((linear * *o.up).normalized().z(), 0.999);
@@ -306,7 +306,7 @@ TEST(FitDesign, SameSeedSameDesign)
     const FitResult b = fitted(truck_model(), o);
     ASSERT_EQ(a.mechanisms.size(), b.mechanisms.size());
     for (size_t i = 0; i < a.mechanisms.size(); ++i)
-        EXPECT_EQ(a.mechanisms[i].parameters, b.mechanisms[i].parameters);
+        EXPECT_EQ(a.mechanisms[i].parameter_values(), b.mechanisms[i].parameter_values());
     EXPECT_EQ(a.ransac_draws, b.ransac_draws);
     EXPECT_EQ(a.model_to_card, b.model_to_card);
 }
@@ -366,13 +366,13 @@ TEST(FitDesign, LowAnnexesOnTheSidesAreStepFolds)
     const Frame f(100, 35, 30, o);
     const FittedMechanism* box = find_type(r, "box_fold");
     ASSERT_TRUE(box) << describe(r);
-    EXPECT_ACROSS(box->parameters.at("depth_ground"), 20, f);
-    EXPECT_UP(box->parameters.at("height"), 30, f);
+    EXPECT_ACROSS(box->parameter_values().at("depth_ground"), 20, f);
+    EXPECT_UP(box->parameter_values().at("height"), 30, f);
     int sides = 0;
     for (int k = 0; k < 2; ++k) {
         const FittedMechanism* step = find_type(r, "step_fold", k);
         ASSERT_TRUE(step) << describe(r);
-        const auto& q = step->parameters;
+        const auto& q = step->parameter_values();
         // On the ground side the page is the step's ground; on the backdrop side, the wall is.
         const bool ground_side = step->host == box->name + ".side_ground";
         EXPECT_TRUE(ground_side || step->host == box->name + ".side_backdrop") << step->host;
@@ -383,7 +383,7 @@ TEST(FitDesign, LowAnnexesOnTheSidesAreStepFolds)
         // Which end of the box is y = 0 is the model's skew: the annex starts 20 from one end (and
         // ends 30 from the other).
         const double from_end =
-            std::min(q.at("offset"), box->parameters.at("width") - q.at("offset") - q.at("width"));
+            std::min(q.at("offset"), box->parameter_values().at("width") - q.at("offset") - q.at("width"));
         EXPECT_ALONG(from_end, 20, f);
     }
     EXPECT_EQ(sides, 3);
@@ -506,36 +506,36 @@ TEST(FitDesign, LInPlanIsTwoBoxesOnTheWingsBackWallAndAStep)
         const double tol = 0.02 * std::sqrt(60 * 60 + 50 * 50 + 30 * 30) * s; // 2 % of diagonal
         const FittedMechanism *wing = nullptr, *arm = nullptr, *step = nullptr;
         for (const FittedMechanism& m : r.mechanisms) {
-            if (m.type == "step_fold")
+            if (m.kind_name() == "step_fold")
                 step = &m;
-            else if (m.type == "box_fold" && m.parameters.at("width") > 30 * s)
+            else if (m.kind_name() == "box_fold" && m.parameter_values().at("width") > 30 * s)
                 wing = &m;
-            else if (m.type == "box_fold")
+            else if (m.kind_name() == "box_fold")
                 arm = &m;
         }
         ASSERT_TRUE(wing && arm && step) << describe(r);
         for (const FittedMechanism* box : {wing, arm}) {
             EXPECT_EQ(box->host, "central fold");
-            EXPECT_NEAR(box->parameters.at("depth_ground"), 20 * s, tol) << box->name;
-            EXPECT_NEAR(box->parameters.at("depth_backdrop"), 20 * s, tol) << box->name;
-            EXPECT_NEAR(box->parameters.at("height"), 30 * s, tol) << box->name;
+            EXPECT_NEAR(box->parameter_values().at("depth_ground"), 20 * s, tol) << box->name;
+            EXPECT_NEAR(box->parameter_values().at("depth_backdrop"), 20 * s, tol) << box->name;
+            EXPECT_NEAR(box->parameter_values().at("height"), 30 * s, tol) << box->name;
         }
-        EXPECT_NEAR(wing->parameters.at("width"), 40 * s, tol);
-        EXPECT_NEAR(arm->parameters.at("width"), 20 * s, tol);
+        EXPECT_NEAR(wing->parameter_values().at("width"), 40 * s, tol);
+        EXPECT_NEAR(arm->parameter_values().at("width"), 20 * s, tol);
         // Side by side along the fold: the arm at one end of the L's 60, the wing beyond it.
-        const double arm_end = arm->parameters.at("offset") + arm->parameters.at("width");
-        const double wing_end = wing->parameters.at("offset") + wing->parameters.at("width");
-        EXPECT_NEAR(std::min(std::abs(arm_end - wing->parameters.at("offset")),
-                             std::abs(wing_end - arm->parameters.at("offset"))),
+        const double arm_end = arm->parameter_values().at("offset") + arm->parameter_values().at("width");
+        const double wing_end = wing->parameter_values().at("offset") + wing->parameter_values().at("width");
+        EXPECT_NEAR(std::min(std::abs(arm_end - wing->parameter_values().at("offset")),
+                             std::abs(wing_end - arm->parameter_values().at("offset"))),
                     0.0, tol);
         // The step stands on the arm's back wall (the backdrop side, or the ground side when
         // NPCA turns the card): 10 along the page, as tall as the wall (a step stops at 98 % of
         // its wall, the generator's bound).
         const bool behind = step->host == arm->name + ".side_backdrop";
         ASSERT_TRUE(behind || step->host == arm->name + ".side_ground") << describe(r);
-        const auto& q = step->parameters;
+        const auto& q = step->parameter_values();
         EXPECT_NEAR(q.at(behind ? "run_backdrop" : "run_ground"), 10 * s, tol);
         EXPECT_NEAR(q.at(behind ? "run_ground" : "run_backdrop"), 30 * s, tol);
-        EXPECT_NEAR(step->parameters.at("width"), 20 * s, tol);
+        EXPECT_NEAR(step->parameter_values().at("width"), 20 * s, tol);
     }
 }

@@ -45,9 +45,9 @@ Design box_design(double height = kHeight)
     bp.height = height;
     EXPECT_TRUE(add_box_fold(d.scaffold, d.host, bp, "B1").ok);
     FittedMechanism m;
-    m.type = "box_fold";
-    m.name = "B1";
-    m.host = "central fold";
+    static_cast<DesignedMechanism&>(m) =
+        DesignedMechanism::of_kind(MechanismKind::box_fold, "B1", "central fold");
+    m.params = bp;
     d.mechanisms.push_back(m);
     return d;
 }
@@ -86,12 +86,13 @@ const Patch& patch_named(const Scaffold& s, const std::string& name)
 
 TEST(FitOutlines, PrincipalPartsFollowFigure53)
 {
-    EXPECT_EQ(principal_parts("box_fold"),
+    EXPECT_EQ(principal_parts(MechanismKind::box_fold),
               (std::vector<std::string>{"L", "R", "TG", "TB", "FL", "FR", "BL", "BR"}));
-    EXPECT_EQ(principal_parts("tent_fold"),
+    EXPECT_EQ(principal_parts(MechanismKind::tent_fold),
               (std::vector<std::string>{"slope_ground", "slope_backdrop"}));
-    EXPECT_EQ(principal_parts("step_fold"), (std::vector<std::string>{"riser", "tread"}));
-    EXPECT_TRUE(principal_parts("unknown").empty());
+    EXPECT_EQ(principal_parts(MechanismKind::step_fold),
+              (std::vector<std::string>{"riser", "tread"}));
+    EXPECT_TRUE(principal_parts(MechanismKind::rotation_arm).empty()); // not a shape mechanism
 }
 
 TEST(FitOutlines, AWheelArchGivesTheAnalyticArea)

@@ -46,15 +46,15 @@ TEST(FitMechanismMapping, AVFoldShapedPrismBecomesATentBecauseItsWingsCoverHalfT
     const double total = 1600.0 + slopes + 1200.0;
     const Mapping mapped = map_mechanisms(one_prism_on_the_card(spine));
     ASSERT_EQ(mapped.plans.size(), 1u);
-    EXPECT_EQ(mapped.plans[0].type, "tent_fold");
+    EXPECT_EQ(mapped.plans[0].kind_name(), "tent_fold");
     EXPECT_NEAR(mapped.coverage_error, 0.49258, 1e-5);
     EXPECT_NEAR(mapped.coverage_error, 1.0 - slopes / total, 1e-12);
 
-    const MechanismPlan v = plan_mechanism("v_fold", spine, one_prism_on_the_card(spine).hosts[0]);
+    const MechanismPlan v = plan_mechanism(MechanismKind::v_fold, spine, one_prism_on_the_card(spine).hosts[0]);
     EXPECT_NEAR(v.coverage_error(), 0.74629, 1e-5);
     // Its spine runs from O over the prism's far end: √(40² + 30²) = 50 mm at atan(30/40).
-    EXPECT_NEAR(v.parameters.at("spine"), 50.0, 1e-12);
-    EXPECT_NEAR(v.parameters.at("spine_angle"), std::atan2(30.0, 40.0), 1e-12);
+    EXPECT_NEAR(v.parameter_values().at("spine"), 50.0, 1e-12);
+    EXPECT_NEAR(v.parameter_values().at("spine_angle"), std::atan2(30.0, 40.0), 1e-12);
 }
 
 TEST(FitMechanismMapping, NoProportionOfPrismMakesTheVFoldWin)
@@ -68,12 +68,12 @@ TEST(FitMechanismMapping, NoProportionOfPrismMakesTheVFoldWin)
                 const Prism tri = triangular(length, -half, half, 0.0, height);
                 const Mapping mapped = map_mechanisms(one_prism_on_the_card(tri));
                 ASSERT_EQ(mapped.plans.size(), 1u);
-                EXPECT_EQ(mapped.plans[0].type, "tent_fold")
+                EXPECT_EQ(mapped.plans[0].kind_name(), "tent_fold")
                     << length << " " << half << " " << height;
                 const double slopes = 2 * length * std::hypot(half, height);
                 const double total = length * 2 * half + slopes + 2 * half * height;
                 const MechanismPlan v =
-                    plan_mechanism("v_fold", tri, one_prism_on_the_card(tri).hosts[0]);
+                    plan_mechanism(MechanismKind::v_fold, tri, one_prism_on_the_card(tri).hosts[0]);
                 EXPECT_NEAR(v.coverage_error() - mapped.coverage_error, 0.5 * slopes / total,
                             1e-12);
 
@@ -81,13 +81,13 @@ TEST(FitMechanismMapping, NoProportionOfPrismMakesTheVFoldWin)
                 box.kind = Prism::Kind::rectangular;
                 const Mapping boxed = map_mechanisms(one_prism_on_the_card(box));
                 ASSERT_EQ(boxed.plans.size(), 1u);
-                EXPECT_EQ(boxed.plans[0].type, "box_fold");
+                EXPECT_EQ(boxed.plans[0].kind_name(), "box_fold");
                 const double across = 2 * half;
                 const double box_total =
                     2 * length * across + 2 * length * height + 2 * across * height;
                 EXPECT_NEAR(boxed.coverage_error, length * across / box_total, 1e-12);
                 const MechanismPlan vb =
-                    plan_mechanism("v_fold", box, one_prism_on_the_card(box).hosts[0]);
+                    plan_mechanism(MechanismKind::v_fold, box, one_prism_on_the_card(box).hosts[0]);
                 EXPECT_NEAR(vb.coverage_error(), 1.0 - length * height / box_total, 1e-12);
             }
 }

@@ -5,7 +5,7 @@
 
 #include "popup/fitting/mechanism_mapping.hpp"
 #include "popup/model/card.hpp"
-#include "popup/model/designed_card.hpp"
+#include "popup/mechanisms/designed_card.hpp"
 #include "popup/model/scaffold.hpp"
 #include "popup/simulation/check_validity.hpp"
 

@@ -4,17 +4,17 @@
 
 #include "popup/input/model_mesh.hpp"
 #include "popup/model/cancel_flag.hpp"
-#include "popup/model/designed_card.hpp"
+#include "popup/mechanisms/designed_card.hpp"
 #include "popup/model/scaffold.hpp"
 #include "popup/sheets/sheet_layout.hpp"
 
 namespace popup {
 
-/// The parts of a mechanism of core kind `type` that take the model's outline (thesis Fig 5.3,
+/// The parts of a mechanism of `kind` that take the model's outline (thesis Fig 5.3,
 /// the shaded principal faces; §5.1.3): box fold L, R, TG, TB and its end panels (FL, FR, BL,
 /// BR, numbered when stacked), tent fold both slopes, step fold riser and tread, v-fold both
 /// wings. Part-name prefixes; a mechanism's patches whose part starts with one of them qualify.
-std::vector<std::string> principal_parts(const std::string& type);
+std::vector<std::string> principal_parts(MechanismKind kind);
 
 /// What the outline stage did.
 struct OutlineOutcome {

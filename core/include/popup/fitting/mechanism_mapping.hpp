@@ -1,31 +1,28 @@
 #pragma once
-#include <map>
 #include <string>
 #include <vector>
 
 #include "popup/fitting/prism_ransac.hpp"
+#include "popup/mechanisms/designed_mechanism.hpp"
 
 namespace popup {
 
-/// One primitive turned into a mechanism (thesis Table 5.1), with what its generator needs.
-struct MechanismPlan {
-    std::string type; ///< "box_fold", "step_fold", "v_fold", "tent_fold"
-    std::string name; ///< B1, T1, S1, V1 ... numbered per type in host order
-    std::string host; ///< "central fold" or "<name>.<part>"
-    int prism = -1;   ///< index into the fitted prisms
-    int parent = -1;  ///< index of the plan it stands on, -1 for the card
-    std::map<std::string, double> parameters; ///< params struct field -> value (mm, radians)
-    double principal_area = 0.0;              ///< faces of the prism its patches lie on (Fig 5.3)
-    double face_area = 0.0;                   ///< all faces of the prism
+/// One primitive turned into a mechanism (thesis Table 5.1): a box, step, tent or v-fold named
+/// B1, T1, S1, V1... per kind in host order, with what its generator needs.
+struct MechanismPlan : DesignedMechanism {
+    int prism = -1;              ///< index into the fitted prisms
+    int parent = -1;             ///< index of the plan it stands on, -1 for the card
+    double principal_area = 0.0; ///< faces of the prism its patches lie on (Fig 5.3)
+    double face_area = 0.0;      ///< all faces of the prism
     double coverage_error() const { return face_area > 0 ? 1.0 - principal_area / face_area : 1; }
 };
 
 /// What a prism may become on its host (Table 5.1 restricted to what the generators build:
 /// a box fold and a tent need a flat host, a step is a prism only on a right-angle host).
-std::vector<std::string> mechanism_options(const Prism& prism, const PrismHost& host);
+std::vector<MechanismKind> mechanism_options(const Prism& prism, const PrismHost& host);
 
-/// The mechanism of `type` for `prism` on `host`: its parameters and covered areas.
-MechanismPlan plan_mechanism(const std::string& type, const Prism& prism, const PrismHost& host);
+/// The mechanism of `kind` for `prism` on `host`: its parameters and covered areas.
+MechanismPlan plan_mechanism(MechanismKind kind, const Prism& prism, const PrismHost& host);
 
 /// Table 5.1 mapping, exhaustive over the combinations: every prism takes one of its options,
 /// a prism standing on another's top or side needs that one to be a box fold, and the

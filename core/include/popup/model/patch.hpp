@@ -39,4 +39,8 @@ struct Patch {
     double area() const;
 };
 
+/// How every message names a patch: "patch 5 (BoxFold.TG)", or "patch 5" when it has no name.
+/// The Workbench replaces this exact text with the part's maker title (patch_titles.py).
+std::string patch_subject(const Patch& patch);
+
 } // namespace popup

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "popup/model/card.hpp"
-#include "popup/model/designed_card.hpp"
+#include "popup/mechanisms/designed_card.hpp"
 #include "popup/model/result.hpp"
 #include "popup/model/scaffold.hpp"
 #include "popup/motion/motion_targets.hpp"

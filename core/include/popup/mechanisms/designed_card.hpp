@@ -2,22 +2,19 @@
 // What an automatic design hands the workbench, whichever pipeline made it (a model's fit or an
 // animation's motion): the mechanisms to build, the changes made on the way, the parts' outlines.
 // Below both pipelines, so motion does not include fitting's driver.
-#include <map>
 #include <string>
 #include <vector>
 
+#include "popup/mechanisms/designed_mechanism.hpp"
 #include "popup/model/profile.hpp"
 
 namespace popup {
 
-/// One mechanism of the result: what a FreeCAD feature of `type` needs to be made.
-struct FittedMechanism {
-    std::string type; ///< core generator kind: "box_fold", "step_fold", "v_fold", "tent_fold"
-    std::string name; ///< its name; offered pairs are "<name>.<part>"
-    std::string host; ///< "central fold" or "<other name>.<part>"
-    std::map<std::string, double> parameters; ///< params struct field -> value (mm, radians)
-    std::string primitive;                    ///< what it maps, e.g. "rectangular prism 2"
-    double coverage_error = 0.0;              ///< thesis eq. 5.1 for its primitive
+/// One mechanism of the result: what a FreeCAD feature of its kind needs to be made, and what
+/// it stands for.
+struct FittedMechanism : DesignedMechanism {
+    std::string primitive;       ///< what it maps, e.g. "rectangular prism 2"
+    double coverage_error = 0.0; ///< thesis eq. 5.1 for its primitive
 };
 
 /// A mechanism the pipeline left out or changed, and why.
