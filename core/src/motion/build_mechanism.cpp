@@ -43,7 +43,7 @@ Result<std::vector<MechanismParts>> build_mechanism(Scaffold& scaffold, const Ba
     FittedMechanism row;
     row.name = name;
     row.host = "central fold";
-    switch (m.kind) {
+    switch (m.kind()) {
     case MotionKind::rotation: {
         const RotationArmParams r = rotation_params(m);
         row.type = "rotation_arm";
