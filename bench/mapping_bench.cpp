@@ -10,6 +10,7 @@
 
 #include "motion/chain_mapping.hpp"
 #include "motion/motion_kinematics.hpp"
+#include "motion/motion_parameters.hpp"
 
 namespace {
 
@@ -19,9 +20,7 @@ using namespace popup::motion;
 // A rotation arm's tip over 8000 samples with a 1 mm wobble along the fold (capture jitter).
 ChainTarget long_path()
 {
-    MotionMechanism arm;
-    arm.kind = MotionKind::rotation;
-    arm.p = {60, 40, 30, 25};
+    const MotionMechanism arm = rotation_mechanism(60, 40, 30, 25);
     ChainTarget t;
     t.weight = 1;
     for (int k = 0; k < 8000; ++k) {

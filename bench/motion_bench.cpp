@@ -32,23 +32,10 @@ EightChains eight_chains()
     p.diagonal = 180;
     std::vector<MotionMechanism> truths;
     for (int i = 0; i < 8; ++i) {
-        MotionMechanism m;
         const double y = 5 + 25 * i;
-        switch (i % 3) {
-        case 0:
-            m.kind = MotionKind::rotation;
-            m.p = {y, 20, 15, 15};
-            break;
-        case 1:
-            m.kind = MotionKind::vertical;
-            m.p = {y + 10, 8, 20, 40 * M_PI / 180};
-            break;
-        default:
-            m.kind = MotionKind::horizontal;
-            m.p = {y, 14, 30, 10, 40.0 + 5.0 * i};
-            break;
-        }
-        truths.push_back(m);
+        truths.push_back(i % 3 == 0   ? rotation_mechanism(y, 20, 15, 15)
+                         : i % 3 == 1 ? vertical_mechanism(y + 10, 8, 20, 40 * M_PI / 180)
+                                      : horizontal_mechanism(y, 14, 30, 10, 40.0 + 5.0 * i));
     }
     for (int i = 0; i < 8; ++i) {
         ChainTarget t;
@@ -61,7 +48,7 @@ EightChains eight_chains()
         }
         p.chains.push_back(t);
         p.candidates.push_back(fit_candidates(t, p.card, 25));
-        e.start.slots.push_back({p.candidates.back()[int(truths[i].kind)].mechanism, {i}});
+        e.start.slots.push_back({p.candidates.back()[int(truths[i].kind())].mechanism, {i}});
     }
     prepare_alike(p);
     return e;

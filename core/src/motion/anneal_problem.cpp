@@ -64,7 +64,7 @@ std::vector<Vec2> carried_path(const Slot& slot, const ChainTarget& t)
 {
     if (slot.printed)
         return printed_path(t);
-    if (slot.chains.size() > 1 && slot.mechanism.kind == MotionKind::rotation &&
+    if (slot.chains.size() > 1 && slot.mechanism.kind() == MotionKind::rotation &&
         !t.target.empty()) {
         // A merged arm turns each part about the arm's hinge from its own open place.
         std::vector<Vec2> out;
@@ -99,7 +99,7 @@ CollisionVolume slot_volume(const AnnealProblem& p, const Slot& slot)
     if (slot.printed)
         return {};
     CollisionVolume v = collision_volume(slot.mechanism, p.volumes);
-    if (slot.chains.size() < 2 || slot.mechanism.kind == MotionKind::rotation)
+    if (slot.chains.size() < 2 || slot.mechanism.kind() == MotionKind::rotation)
         return v;
     const Vec3 open = mechanism_point(slot.mechanism, M_PI);
     std::vector<Vec3> offsets;
@@ -132,7 +132,7 @@ double slot_cost(const AnnealProblem& p, const Slot& slot)
     // E_d charges the mechanisms that set a height (v-box, diagonal nose, floating layer). The
     // rotation arm and the extruding patch lie flat: the thesis stands them on a floating layer
     // at the chain's depth, so their disparity is not charged (docs/DESIGN.md).
-    const MotionKind kind = slot.mechanism.kind;
+    const MotionKind kind = slot.mechanism.kind();
     const bool flat =
         !slot.printed && (kind == MotionKind::rotation || kind == MotionKind::horizontal);
     const double H =

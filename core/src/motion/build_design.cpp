@@ -49,7 +49,7 @@ Result<double> build_design(MotionDesign& d, MotionResult& r, const CancelFlag* 
         for (int i = 0; i < int(state.slots.size()); ++i) {
             const Slot& s = state.slots[i];
             const std::string name =
-                mechanism_name(s.mechanism.kind, p.chains[s.chains.front()].name);
+                mechanism_name(s.mechanism.kind(), p.chains[s.chains.front()].name);
             Result<std::vector<MechanismParts>> built =
                 build_mechanism(scaffold, host, s.mechanism, name, rows);
             if (!built.ok) {

@@ -46,7 +46,7 @@ Result<std::vector<MechanismParts>> build_mechanism(Scaffold& scaffold, const Ba
     FittedMechanism row;
     row.name = name;
     row.host = "central fold";
-    switch (m.kind) {
+    switch (m.kind()) {
     case MotionKind::rotation: {
         const RotationArmParams r = rotation_params(m);
         row = row_of(MechanismKind::rotation_arm, r, name, row.host);

@@ -9,6 +9,7 @@
 #include "motion_feasibility.hpp"
 #include "motion_kinematics.hpp"
 #include "motion_parameters.hpp"
+#include "parameter_table.hpp"
 
 namespace popup::motion {
 
@@ -63,10 +64,11 @@ MotionMechanism polish(MotionMechanism m, const std::function<double(const Motio
     std::vector<MotionMechanism> simplex(n + 1, m);
     std::vector<double> value(n + 1);
     for (int i = 0; i < n; ++i) {
-        const ParameterInfo info = parameter_info(m.kind, i);
-        const double step =
-            info.role == ParameterRole::angle ? 0.1 : std::max(2.0, 0.1 * std::abs(m.p[i]));
-        simplex[i + 1].p[i] += step;
+        const ParameterInfo info = parameter_info(m.kind(), i);
+        const double step = info.role == ParameterRole::angle
+                                ? 0.1
+                                : std::max(2.0, 0.1 * std::abs(parameter(m, i)));
+        parameter(simplex[i + 1], i) += step;
     }
     for (int i = 0; i <= n; ++i)
         value[i] = f(simplex[i]);
@@ -74,7 +76,7 @@ MotionMechanism polish(MotionMechanism m, const std::function<double(const Motio
     auto blend = [&](const MotionMechanism& a, const MotionMechanism& b, double t) {
         MotionMechanism c = a;
         for (int i = 0; i < n; ++i)
-            c.p[i] = a.p[i] + t * (b.p[i] - a.p[i]);
+            parameter(c, i) = parameter(a, i) + t * (parameter(b, i) - parameter(a, i));
         return c;
     };
     while (used < evaluations) {
@@ -87,8 +89,8 @@ MotionMechanism polish(MotionMechanism m, const std::function<double(const Motio
         for (int i = 0; i < n; ++i) {
             double s = 0;
             for (int k = 0; k < n; ++k)
-                s += simplex[order[k]].p[i];
-            centroid.p[i] = s / n;
+                s += parameter(simplex[order[k]], i);
+            parameter(centroid, i) = s / n;
         }
         const MotionMechanism reflected = blend(centroid, simplex[worst], -1.0);
         const double fr = f(reflected);
@@ -130,7 +132,7 @@ MotionMechanism polish(MotionMechanism m, const std::function<double(const Motio
     return simplex[best];
 }
 
-// Moves m along the fold (its offset, p[0]) so that its closed-form vertices at θ = 0 lie within
+// Moves m along the fold (its fold_offset) so that its closed-form vertices at θ = 0 lie within
 // [0, W] along the fold, when they can (a mechanism longer than the card stays as it is).
 void fit_along_fold_when_closed(MotionMechanism& m, double W)
 {
@@ -239,7 +241,7 @@ Candidate CandidateFit::finish(MotionMechanism m, int evaluations) const
     // stalls short of the minimum on the diagonal's 8 nested parameters (0.35 mm instead of
     // 0.04 mm on rig_diagonal); the others converge in one round.
     c.mechanism = m;
-    const int rounds = m.kind == MotionKind::diagonal ? diagonal_polish_rounds : 1;
+    const int rounds = m.kind() == MotionKind::diagonal ? diagonal_polish_rounds : 1;
     for (int round = 0; round < rounds; ++round)
         c.mechanism = polish(c.mechanism, cost_of(), evaluations);
     c.error_mm = motion_error(c.mechanism, full);
@@ -251,8 +253,7 @@ Candidate CandidateFit::rotation() const
     // Rotation: at 180° the tip is at (−h, offset + l) (docs/MATH.md, Rotation), so the last
     // pose gives h and offset + l; the spine l is the 1-D search of eq 6.2 (the y path, the
     // only part that depends on l), for a few runs w below the arm limit h <= l²/w.
-    MotionMechanism m;
-    m.kind = MotionKind::rotation;
+    MotionMechanism m = default_mechanism(MotionKind::rotation);
     const double h = clamp(-A1.x(), 2.0, D - 2);
     double best = inf;
     for (double ratio : {0.2, 0.4, 0.6, 0.8}) {
@@ -374,7 +375,7 @@ Candidate CandidateFit::diagonal() const
     if (std::isfinite(c.error_mm) && !diagonal_wings_fit(c.mechanism, card)) {
         MotionMechanism q = c.mechanism;
         for (int k = 0; k < 60 && !diagonal_wings_fit(q, card); ++k)
-            diagonal_run(q) *= 0.95;
+            q.diagonal().v_fold.run *= 0.95;
         auto bounded = [&](const MotionMechanism& x) {
             return diagonal_wings_fit(x, card) ? cost(x) : inf;
         };
@@ -452,11 +453,12 @@ MotionKind best_mapping(const std::array<Candidate, motion_kind_count>& c, const
     // Paths two mechanisms both make (within mapping_tie_fraction) go to the one with
     // fewer parameters: a diagonal whose step sits still on its wings also rises along the fold
     // exactly, but a vertical path is the v-box's (Table 6.1).
-    // A rotation off the fold counts its hinge too.
+    // A rotation off the fold counts its hinge too. A hand-made candidate may hold no mechanism
+    // of its kind: it counts as the kind's defaults (a rotation on the fold).
     auto count = [&](int k) {
-        MotionMechanism m = c[k].mechanism;
-        m.kind = MotionKind(k);
-        return active_parameter_count(m);
+        const MotionMechanism& m = c[k].mechanism;
+        const MotionKind kind = MotionKind(k);
+        return active_parameter_count(m.kind() == kind ? m : default_mechanism(kind));
     };
     const double tie = c[best].error_mm + mapping_tie_fraction * diagonal;
     for (int k = 0; k < motion_kind_count; ++k)

@@ -64,7 +64,7 @@ void release_far_remaps(MotionDesign& d)
     std::map<int, std::string>& reasons = d.reasons;
     for (int i = int(state.slots.size()) - 1; i >= 0; --i) {
         const Slot& s = state.slots[i];
-        if (s.chains.size() != 1 || s.mechanism.kind == MotionKind::stationary)
+        if (s.chains.size() != 1 || s.mechanism.kind() == MotionKind::stationary)
             continue;
         const int j = s.chains.front();
         const Candidate& own = p.candidates[j][int(mapped[j])];
@@ -87,8 +87,8 @@ void release_far_remaps(MotionDesign& d)
             << " mm from its path) collides with the one carrying "
             << chain_names(p, state.slots[other]) << " (volumes overlap by " << worst->depth
             << " mm) and " << why_not_shared(p, j, state.slots[other]) << "; the search's "
-            << to_string(s.mechanism.kind) << " instead misses it by " << error << " mm, more than "
-            << remap_bound << " of the character's diagonal worse";
+            << to_string(s.mechanism.kind()) << " instead misses it by " << error
+            << " mm, more than " << remap_bound << " of the character's diagonal worse";
         // Alike chains may share the other's patch (thesis §6.4.3, merging) rather than stand
         // still, when that costs less.
         std::map<int, std::string> demoted_reasons = reasons;
@@ -116,7 +116,7 @@ void repair_collisions(MotionDesign& d)
         const int loser = loser_of(p, state, worst.a, worst.b);
         const int other = loser == worst.a ? worst.b : worst.a;
         std::ostringstream why;
-        why << "its " << to_string(state.slots[loser].mechanism.kind)
+        why << "its " << to_string(state.slots[loser].mechanism.kind())
             << " mechanism collides with the one carrying " << chain_names(p, state.slots[other])
             << " (volumes overlap by " << worst.depth << " mm) and "
             << why_not_shared(p, state.slots[loser].chains.front(), state.slots[other]);

@@ -80,7 +80,7 @@ void report_design(const MotionDesign& design, MotionResult& r)
         const int i = slot_of[j];
         if (i >= 0) {
             const Slot& s = state.slots[i];
-            cr.mapping = to_string(s.mechanism.kind);
+            cr.mapping = to_string(s.mechanism.kind());
             if (i < int(slot_mechanisms.size()))
                 cr.mechanisms = slot_mechanisms[i];
             cr.achieved = carried_path(s, c);
@@ -97,7 +97,7 @@ void report_design(const MotionDesign& design, MotionResult& r)
                     << p.alike_fraction * p.diagonal << " mm RMS; each part keeps its place on the "
                     << "patch)";
                 cr.reason = why.str();
-            } else if (s.mechanism.kind == MotionKind::stationary) {
+            } else if (s.mechanism.kind() == MotionKind::stationary) {
                 cr.status = "stationary";
                 const std::string hit = generic(j) ? conflict(j, i) : std::string();
                 cr.reason = !hit.empty()       ? hit + "; a floating layer carries it"

@@ -31,7 +31,7 @@ void restore_own_fits(const AnnealProblem& p, const std::vector<MotionKind>& map
             continue;
         Slot trial = s;
         trial.mechanism = own.mechanism;
-        const double tie = s.mechanism.kind == mapped[j]
+        const double tie = s.mechanism.kind() == mapped[j]
                                ? 0.0
                                : p.chains[j].weight * p.motion_weight * mapping_tie_fraction;
         if (!(slot_cost(p, trial) < slot_cost(p, s) + tie))
@@ -55,14 +55,14 @@ void print_pointless(const AnnealProblem& p, AnnealState& state,
                      std::map<int, std::string>& reasons)
 {
     for (Slot& s : state.slots) {
-        if (s.printed || s.chains.size() != 1 || s.mechanism.kind == MotionKind::stationary)
+        if (s.printed || s.chains.size() != 1 || s.mechanism.kind() == MotionKind::stationary)
             continue;
         const int j = s.chains.front();
         const double moved = carried_error(s, p.chains[j]), printed = printed_error(p, j);
         if (moved < printed - 1e-9)
             continue;
         std::ostringstream why;
-        why << "its " << to_string(s.mechanism.kind) << " mechanism followed its path no closer ("
+        why << "its " << to_string(s.mechanism.kind()) << " mechanism followed its path no closer ("
             << moved << " mm, eq 6.6) than its part printed on the page (" << printed
             << " mm): printed, leaving the room to the others";
         reasons[j] = why.str();

@@ -13,7 +13,7 @@ double demotion_cost(const AnnealProblem& p, const Slot& s)
 {
     double before = 0, after = 0;
     Slot demoted = s;
-    if (s.mechanism.kind == MotionKind::stationary) {
+    if (s.mechanism.kind() == MotionKind::stationary) {
         demoted.printed = true;
     } else {
         int heaviest = s.chains.front();
@@ -41,7 +41,7 @@ void demote(const AnnealProblem& p, AnnealState& state, int i, const std::string
     Slot& s = state.slots[i];
     for (int j : s.chains)
         reasons[j] = why;
-    if (s.mechanism.kind != MotionKind::stationary) {
+    if (s.mechanism.kind() != MotionKind::stationary) {
         int heaviest = s.chains.front();
         for (int j : s.chains)
             if (p.chains[j].weight > p.chains[heaviest].weight)

@@ -35,7 +35,7 @@ void lift_moving_chains(MotionDesign& d)
                 i = k;
         const Candidate& own = p.candidates[j][int(mapped[j])];
         if (i < 0 || !std::isfinite(own.error_mm) ||
-            (!state.slots[i].printed && state.slots[i].mechanism.kind == mapped[j]))
+            (!state.slots[i].printed && state.slots[i].mechanism.kind() == mapped[j]))
             continue;
         AnnealState trial = state;
         trial.slots[i].printed = false;

@@ -81,7 +81,7 @@ void mechanism_parts(const MotionMechanism& m, double theta, std::vector<Mechani
     const double d = theta / 2;
     const Vec2 g = ground_dir(theta), b = backdrop_dir(theta);
     PartWriter parts{out};
-    switch (m.kind) {
+    switch (m.kind()) {
     case MotionKind::rotation: {
         // O, S, R, S' and the arm's tip P (docs/MATH.md, Rotation). The arm's wing O-S-P is cut
         // along the spine O-R (R lies on S-P): O-S-R has x = α w sin δ ≥ 0, O-R-P x ≤ 0 in its

@@ -6,6 +6,7 @@
 
 #include "motion_feasibility.hpp"
 #include "motion_parameters.hpp"
+#include "parameter_table.hpp"
 
 namespace popup::motion {
 
@@ -152,13 +153,13 @@ private:
                 return false; // nothing to change: the part lies on the page
             std::vector<int> params;
             for (int k = 0; k < active_parameter_count(s.mechanism); ++k)
-                if ((parameter_info(s.mechanism.kind, k).role == ParameterRole::position) ==
+                if ((parameter_info(s.mechanism.kind(), k).role == ParameterRole::position) ==
                     translate)
                     params.push_back(k);
             if (params.empty())
                 return false;
             const int k = params[pick(int(params.size()))];
-            s.mechanism.p[k] += step(parameter_info(s.mechanism.kind, k).role);
+            parameter(s.mechanism, k) += step(parameter_info(s.mechanism.kind(), k).role);
             if (!feasible(s.mechanism, p_.card))
                 return false;
             q.removed = {i};
@@ -188,9 +189,11 @@ private:
             const Slot &a = state_.slots[i], &b = state_.slots[j];
             const double wa = chain_weight(p_, a), wb = chain_weight(p_, b);
             Slot m = wa >= wb ? a : b;
-            if (a.mechanism.kind == b.mechanism.kind && wa + wb > 0)
-                for (int k = 0; k < parameter_count(m.mechanism.kind); ++k)
-                    m.mechanism.p[k] = (wa * a.mechanism.p[k] + wb * b.mechanism.p[k]) / (wa + wb);
+            if (a.mechanism.kind() == b.mechanism.kind() && wa + wb > 0)
+                for (int k = 0; k < parameter_count(m.mechanism.kind()); ++k)
+                    parameter(m.mechanism, k) =
+                        (wa * parameter(a.mechanism, k) + wb * parameter(b.mechanism, k)) /
+                        (wa + wb);
             m.chains = a.chains;
             m.chains.insert(m.chains.end(), b.chains.begin(), b.chains.end());
             std::sort(m.chains.begin(), m.chains.end());
@@ -228,7 +231,7 @@ private:
         const int chain = s.chains.front();
         std::vector<int> kinds;
         for (int k = 0; k < motion_kind_count; ++k)
-            if ((s.printed || k != int(s.mechanism.kind)) &&
+            if ((s.printed || k != int(s.mechanism.kind())) &&
                 (!still(chain) || k == int(MotionKind::stationary)) &&
                 std::isfinite(p_.candidates[chain][k].error_mm))
                 kinds.push_back(k);

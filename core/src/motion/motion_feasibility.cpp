@@ -6,6 +6,7 @@
 
 #include "mechanism_parts.hpp"
 #include "motion_parameters.hpp"
+#include "parameter_table.hpp"
 #include "popup/sheets/sheet_layout.hpp"
 
 namespace popup::motion {
@@ -67,7 +68,7 @@ Violation rotation_violation(const MotionMechanism& m, const CardParams& card)
     // rotation_layer_height keeps above Run and Arm).
     const FloatingLayerParams f = rotation_layer(m);
     if (!(f.support >= shortest_crease() && f.support < D - margin))
-        return fail("hinge", rotation_hinge(m),
+        return fail("hinge", m.rotation().hinge,
                     "with |hinge| in [shortest glued crease, card depth - 1)");
     if (!(r.run > margin && r.run < D - f.support - margin))
         return fail("run", r.run, "in (1, card depth - |hinge| - 1)");
@@ -82,10 +83,10 @@ Violation rotation_violation(const MotionMechanism& m, const CardParams& card)
         return fail("run", r.run, "in [tan 20°, tan 70°] × spine (the glued wing's crease)");
     // Closed, the support stands on the page from s to s + height.
     if (!(f.support + f.height < D - margin))
-        return fail("hinge", rotation_hinge(m),
+        return fail("hinge", m.rotation().hinge,
                     "with the layer's height under the closed card's top");
     if (!layer_strip_fits(f, card))
-        return fail("hinge", rotation_hinge(m),
+        return fail("hinge", m.rotation().hinge,
                     "with the layer's height, unfolded with its tabs, within the card's open "
                     "sheet (2 × depth)");
     return {};
@@ -181,8 +182,9 @@ Violation layer_violation(const MotionMechanism& m, const CardParams& card)
     // Glued creases: along the fold (width), the end panels' joints (height, support).
     if (!(std::min({f.width, f.height, f.support}) >= shortest_crease()))
         return fail("width", f.width, "with height and support >= the shortest glued crease");
-    if (!(std::abs(layer_anchor(m)) <= f.support + f.overhang))
-        return fail("anchor", layer_anchor(m), "on the platform (|anchor| <= support + overhang)");
+    const double anchor = m.stationary().anchor;
+    if (!(std::abs(anchor) <= f.support + f.overhang))
+        return fail("anchor", anchor, "on the platform (|anchor| <= support + overhang)");
     if (!layer_strip_fits(f, card))
         return fail("support", f.support,
                     "with height and overhang, unfolded with its tabs, within the card's open "
@@ -193,11 +195,11 @@ Violation layer_violation(const MotionMechanism& m, const CardParams& card)
 Violation first_violation(const MotionMechanism& m, const CardParams& card)
 {
     const double W = card.width, D = card.depth;
-    for (int i = 0; i < parameter_count(m.kind); ++i)
-        if (!std::isfinite(m.p[i]))
-            return fail(parameter_info(m.kind, i).name, m.p[i], "finite");
+    for (int i = 0; i < parameter_count(m.kind()); ++i)
+        if (!std::isfinite(parameter(m, i)))
+            return fail(parameter_info(m.kind(), i).name, parameter(m, i), "finite");
     Violation v;
-    switch (m.kind) {
+    switch (m.kind()) {
     case MotionKind::rotation:
         v = rotation_violation(m, card);
         break;
@@ -236,7 +238,7 @@ bool diagonal_wings_fit(const MotionMechanism& m, const CardParams& card)
     // piece spans twice A's distance from it; along it, the wing's shadow on O–P. The card is
     // the largest whose open sheet (W × 2D) fits the paper, so the piece, grown by a glue tab on
     // each side, must fit W × 2D one way or the other.
-    if (m.kind != MotionKind::diagonal)
+    if (m.kind() != MotionKind::diagonal)
         return true;
     thread_local std::vector<MechanismPart> opened;
     mechanism_parts(m, M_PI, opened);

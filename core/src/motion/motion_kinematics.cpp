@@ -6,7 +6,7 @@ namespace popup::motion {
 
 Vec3 mechanism_point(const MotionMechanism& m, double theta)
 {
-    switch (m.kind) {
+    switch (m.kind()) {
     case MotionKind::rotation:
         if (rotation_off_fold(m))
             return rotation_arm_tip_on_layer_side(rotation_params(m), rotation_layer(m),
@@ -27,7 +27,7 @@ Vec3 mechanism_point(const MotionMechanism& m, double theta)
     }
     case MotionKind::stationary: {
         const FloatingLayerParams f = layer_params(m);
-        const double anchor = layer_anchor(m);
+        const double anchor = m.stationary().anchor;
         const Vec2 along = anchor >= 0 ? ground_dir(theta) : backdrop_dir(theta);
         return at(Vec2(0, f.height) + std::abs(anchor) * along, f.offset + f.width / 2);
     }

@@ -23,13 +23,13 @@ void start_layout(MotionDesign& d)
     // chain's floating layer only where it takes no room from them; else its part starts printed
     // on the page (the search may still lift it).
     std::stable_sort(start.slots.begin(), start.slots.end(), [](const Slot& a, const Slot& b) {
-        return (a.mechanism.kind != MotionKind::stationary) >
-               (b.mechanism.kind != MotionKind::stationary);
+        return (a.mechanism.kind() != MotionKind::stationary) >
+               (b.mechanism.kind() != MotionKind::stationary);
     });
     std::vector<CollisionVolume> placed;
     for (Slot& slot : start.slots) {
         const CollisionVolume v = slot_volume(p, slot);
-        if (slot.mechanism.kind == MotionKind::stationary)
+        if (slot.mechanism.kind() == MotionKind::stationary)
             for (const CollisionVolume& other : placed)
                 if (collide(v, other)) {
                     slot.printed = true;

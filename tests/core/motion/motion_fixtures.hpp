@@ -11,6 +11,7 @@
 #include "motion/build_mechanism.hpp"
 #include "motion/motion_kinematics.hpp"
 #include "motion/motion_parameters.hpp"
+#include "motion/parameter_table.hpp"
 #include "popup/model/card.hpp"
 #include "popup/motion/motion_targets.hpp"
 
@@ -37,36 +38,27 @@ inline CardParams card_for_a4_sheets()
 /// One feasible mechanism of each kind on an A4 card (210 × 148 mm), parameters chosen by hand.
 inline MotionMechanism sample_mechanism(MotionKind kind)
 {
-    MotionMechanism m;
-    m.kind = kind;
     switch (kind) {
     case MotionKind::rotation:
-        m.p = {60, 40, 30, 25};
-        break;
+        return rotation_mechanism(60, 40, 30, 25);
     case MotionKind::vertical:
-        m.p = {80, 20, 30, 40 * M_PI / 180};
-        break;
+        return vertical_mechanism(80, 20, 30, 40 * M_PI / 180);
     case MotionKind::horizontal:
-        m.p = {50, 30, 40, 15, 60};
-        break;
+        return horizontal_mechanism(50, 30, 40, 15, 60);
     case MotionKind::diagonal:
-        m.p = {70, 60, 50 * M_PI / 180, 50, 10, 12, 16, 12}; // glued creases: >= 11.1 mm
-        break;
+        // glued creases: >= 11.1 mm
+        return diagonal_mechanism(70, 60, 50 * M_PI / 180, 50, 10, 12, 16, 12);
     case MotionKind::stationary:
-        m.p = {40, 30, 20, 15, 10, 18};
         break;
     }
-    return m;
+    return layer_mechanism(40, 30, 20, 15, 10, 18);
 }
 
 /// A rotation off the central fold: the arm on the side pair of a floating layer whose supports
 /// stand 30 mm from the fold (side +1: the ground's, −1: the backdrop's).
 inline MotionMechanism off_fold_rotation(double side)
 {
-    MotionMechanism m;
-    m.kind = MotionKind::rotation;
-    m.p = {50, 40, 25, 30, side * 30};
-    return m;
+    return rotation_mechanism(50, 40, 25, 30, side * 30);
 }
 
 /// A mechanism built on the A4 card's central fold with the library's generators, and the ids
@@ -134,14 +126,6 @@ inline MotionTargets targets_of(const std::vector<Chain>& chains)
         t.paths.push_back(p);
     }
     return t;
-}
-
-inline MotionMechanism mechanism(MotionKind kind, std::array<double, max_parameters> p)
-{
-    MotionMechanism m;
-    m.kind = kind;
-    m.p = p;
-    return m;
 }
 
 } // namespace popup::motion::testing

@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <limits>
+#include <set>
+#include <string>
 
 #include "motion/chain_mapping.hpp"
 #include "motion/motion_feasibility.hpp"
@@ -16,7 +18,7 @@ namespace {
 ChainTarget target_of(const MotionMechanism& m)
 {
     ChainTarget t;
-    t.name = to_string(m.kind);
+    t.name = to_string(m.kind());
     t.weight = 1;
     for (int k = 0; k <= 40; ++k) {
         const double s = k / 40.0;
@@ -48,16 +50,18 @@ TEST(ChainMapping, RecoversTypeAndParametersOfClosedFormPaths)
         const Candidate& c = candidates[int(kind)];
         EXPECT_LT(c.error_mm, 0.05) << to_string(kind);
         // The point path pins these parameters down (the rest only shape the paper).
-        std::vector<int> pinned;
+        std::set<std::string> pinned;
         if (kind == MotionKind::rotation)
-            pinned = {0, 1, 2, 3}; // offset, spine, run, arm: P_x gives h, P_y the rest
+            pinned = {"offset", "spine", "run", "arm"}; // P_x gives h, P_y the rest
         if (kind == MotionKind::vertical)
-            pinned = {0, 2, 3}; // offset, height, wall angle (side only sizes the walls)
+            pinned = {"offset", "height", "wall_angle"}; // side only sizes the walls
         if (kind == MotionKind::horizontal)
-            pinned = {4}; // reach; the runs only through their ratio
-        for (int i : pinned) {
+            pinned = {"reach"}; // the runs only through their ratio
+        for (int i = 0; i < parameter_count(kind); ++i) {
+            if (!pinned.count(parameter_info(kind, i).name))
+                continue;
             const double scale = parameter_info(kind, i).role == ParameterRole::angle ? 100 : 1;
-            EXPECT_NEAR(c.mechanism.p[i] * scale, truth.p[i] * scale, tolerance)
+            EXPECT_NEAR(parameter(c.mechanism, i) * scale, parameter(truth, i) * scale, tolerance)
                 << to_string(kind) << " " << parameter_info(kind, i).name;
         }
     }
@@ -80,19 +84,19 @@ TEST(ChainMapping, RecoversARotationOffTheFold)
         EXPECT_EQ(best_mapping(candidates, t, 2.0, 200.0), MotionKind::rotation);
         const Candidate& c = candidates[int(MotionKind::rotation)];
         EXPECT_LT(c.error_mm, 0.05);
-        const auto& p = c.mechanism.p;
-        const auto& q = truth.p;
-        SCOPED_TRACE(::testing::Message() << "fitted offset " << p[0] << ", spine " << p[1]
-                                          << ", run " << p[2] << ", arm " << p[3] << ", hinge "
-                                          << p[4] << "; error " << c.error_mm << " mm");
-        EXPECT_GT(p[4] * side, 0) << "the hinge on the other side: " << p[4];
+        const RotationMotion& p = c.mechanism.rotation();
+        const RotationMotion& q = truth.rotation();
+        SCOPED_TRACE(::testing::Message() << "fitted offset " << p.offset << ", spine " << p.spine
+                                          << ", run " << p.run << ", arm " << p.arm << ", hinge "
+                                          << p.hinge << "; error " << c.error_mm << " mm");
+        EXPECT_GT(p.hinge * side, 0) << "the hinge on the other side: " << p.hinge;
         if (side > 0)
-            EXPECT_NEAR(std::abs(p[4]) + p[2], std::abs(q[4]) + q[2], tolerance);
+            EXPECT_NEAR(std::abs(p.hinge) + p.run, std::abs(q.hinge) + q.run, tolerance);
         else
-            EXPECT_NEAR(p[4], q[4], tolerance);
-        EXPECT_NEAR(p[0] + p[1], q[0] + q[1], tolerance);
-        EXPECT_NEAR(p[1] / p[2], q[1] / q[2], 0.01 * q[1] / q[2]);
-        EXPECT_NEAR(p[2] + p[3], q[2] + q[3], tolerance);
+            EXPECT_NEAR(p.hinge, q.hinge, tolerance);
+        EXPECT_NEAR(p.offset + p.spine, q.offset + q.spine, tolerance);
+        EXPECT_NEAR(p.spine / p.run, q.spine / q.run, 0.01 * q.spine / q.run);
+        EXPECT_NEAR(p.run + p.arm, q.run + q.arm, tolerance);
     }
 }
 
@@ -104,10 +108,11 @@ TEST(ChainMapping, SlidingTheArmsVertexAlongItsHingeKeepsThePath)
 {
     for (double side : {1.0, -1.0}) {
         const MotionMechanism a = testing::off_fold_rotation(side);
-        MotionMechanism b = a;
-        const double k = 0.3, l = a.p[1], w = a.p[2];
-        const double hinge = side > 0 ? a.p[4] + k * w : a.p[4];
-        b.p = {a.p[0] + k * l, (1 - k) * l, (1 - k) * w, a.p[3] + k * w, hinge};
+        const RotationMotion& r = a.rotation();
+        const double k = 0.3, l = r.spine, w = r.run;
+        const double hinge = side > 0 ? r.hinge + k * w : r.hinge;
+        const MotionMechanism b =
+            rotation_mechanism(r.offset + k * l, (1 - k) * l, (1 - k) * w, r.arm + k * w, hinge);
         ASSERT_EQ(infeasibility(b, testing::a4_card()), "");
         for (int i = 0; i <= 36; ++i) {
             const double theta = M_PI * i / 36;
@@ -123,7 +128,8 @@ TEST(ChainMapping, HorizontalRunsRatioIsRecovered)
     const MotionMechanism truth = testing::sample_mechanism(MotionKind::horizontal);
     const auto candidates = fit_candidates(target_of(truth), testing::a4_card(), 25);
     const MotionMechanism& m = candidates[int(MotionKind::horizontal)].mechanism;
-    EXPECT_NEAR(m.p[3] / m.p[2], truth.p[3] / truth.p[2], 0.01);
+    const HorizontalMotion &h = m.horizontal(), &t = truth.horizontal();
+    EXPECT_NEAR(h.run_backdrop / h.run_ground, t.run_backdrop / t.run_ground, 0.01);
 }
 
 TEST(ChainMapping, DiagonalPathIsMappedToTheDiagonalTranslation)
@@ -154,9 +160,7 @@ TEST(ChainMapping, ADiagonalWhoseClosedSpineReachesPastTheFoldsEndIsStillFitted)
     // tools/make_animations.py's diagonal (rig_diagonal): closed, its standing spine lies down
     // past O towards y < 0 for the default start values, which were refused unpolished. The
     // truth is on the card (infeasibility is empty for it), so a fit within 1 % must exist.
-    MotionMechanism truth;
-    truth.kind = MotionKind::diagonal;
-    truth.p = {40, 60, M_PI / 4, 55, 6, 12, 30, 12};
+    const MotionMechanism truth = diagonal_mechanism(40, 60, M_PI / 4, 55, 6, 12, 30, 12);
     ASSERT_EQ(infeasibility(truth, testing::a4_card()), "");
     const ChainTarget t = target_of(truth);
     const auto candidates = fit_candidates(t, testing::a4_card(), 25);

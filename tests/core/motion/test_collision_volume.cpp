@@ -116,16 +116,9 @@ constexpr MotionKind all_kinds[] = {MotionKind::vertical, MotionKind::diagonal,
 // The known mechanisms of tools/make_animations.py (MECHANISMS), which rig_four animates at once.
 std::vector<MotionMechanism> rig_four_mechanisms()
 {
-    std::vector<MotionMechanism> m(4);
-    m[0].kind = MotionKind::rotation;
-    m[0].p = {168, 40, 22, 32};
-    m[1].kind = MotionKind::vertical;
-    m[1].p = {106, 25, 35, 35 * M_PI / 180};
-    m[2].kind = MotionKind::horizontal;
-    m[2].p = {150, 14, 40, 15, 70};
-    m[3].kind = MotionKind::diagonal;
-    m[3].p = {40, 60, 45 * M_PI / 180, 55, 6, 12, 30, 12};
-    return m;
+    return {rotation_mechanism(168, 40, 22, 32), vertical_mechanism(106, 25, 35, 35 * M_PI / 180),
+            horizontal_mechanism(150, 14, 40, 15, 70),
+            diagonal_mechanism(40, 60, 45 * M_PI / 180, 55, 6, 12, 30, 12)};
 }
 
 TEST(CollisionVolume, EveryClosedFormVertexAt1000AnglesLiesInItsPiecesBox)
@@ -143,7 +136,7 @@ TEST(CollisionVolume, EveryClosedFormVertexAt1000AnglesLiesInItsPiecesBox)
         for (int tries = 0, kept = 0; tries < 200 && kept < 6; ++tries) {
             MotionMechanism m = sample;
             for (int i = 0; i < parameter_count(kind); ++i)
-                m.p[i] *= scale(rng);
+                parameter(m, i) *= scale(rng);
             if (infeasibility(m, card).empty()) {
                 mechanisms.push_back(m);
                 ++kept;
@@ -193,9 +186,9 @@ TEST(CollisionVolume, EveryClosedFormVertexAt1000AnglesLiesInItsPiecesBox)
                     wrong_side += v.sides[i] * x.x() < -1e-9;
                 }
         }
-        EXPECT_EQ(outside, 0) << to_string(m.kind) << " p0 = " << m.p[0] << ": " << worst
-                              << " mm out";
-        EXPECT_EQ(wrong_side, 0) << to_string(m.kind);
+        EXPECT_EQ(outside, 0) << to_string(m.kind()) << " offset = " << fold_offset(m) << ": "
+                              << worst << " mm out";
+        EXPECT_EQ(wrong_side, 0) << to_string(m.kind());
     }
 }
 
@@ -217,7 +210,7 @@ TEST(CollisionVolume, TheRigsFourMechanismsAreValidTogetherAndTheirVolumesApart)
     for (std::size_t i = 0; i < v.size(); ++i)
         for (std::size_t j = i + 1; j < v.size(); ++j)
             EXPECT_EQ(collision_depth(v[i], v[j]), 0.0)
-                << to_string(four[i].kind) << " and " << to_string(four[j].kind);
+                << to_string(four[i].kind()) << " and " << to_string(four[j].kind());
 }
 
 TEST(CollisionVolume, DepthOfTwoCopiesAlongTheFoldIsTheirOverlapAlongIt)
@@ -229,20 +222,20 @@ TEST(CollisionVolume, DepthOfTwoCopiesAlongTheFoldIsTheirOverlapAlongIt)
     // thick), and no pair of pieces overlaps more on y, which all their boxes have as an axis:
     // D_c = bands × (width + 2·clearance − d), and 0 from d = width + 2·clearance on.
     MotionMechanism a = testing::sample_mechanism(MotionKind::horizontal);
-    const double width = a.p[1];
+    const double width = a.horizontal().width;
     const VolumeOptions options;
     const CollisionVolume va = collision_volume(a, options);
     double previous = std::numeric_limits<double>::infinity();
     for (double d : {width + 0.05, width + 0.3, width + 0.6, width + 0.95}) {
         MotionMechanism b = a;
-        b.p[0] += d;
+        b.horizontal().offset += d;
         const double depth = collision_depth(va, collision_volume(b, options));
         EXPECT_NEAR(depth, options.bands * (width + 2 * options.clearance - d), 1e-9) << d;
         EXPECT_LT(depth, previous);
         previous = depth;
     }
     MotionMechanism b = a;
-    b.p[0] += width + 2 * options.clearance + 1e-6;
+    b.horizontal().offset += width + 2 * options.clearance + 1e-6;
     EXPECT_EQ(collision_depth(va, collision_volume(b, options)), 0.0);
 }
 
@@ -259,7 +252,7 @@ TEST(CollisionVolume, CollideAnswersWhetherTheDepthIsPositive)
             const CollisionVolume va = collision_volume(a, options);
             for (double dy = -60; dy <= 60; dy += 7.5) {
                 MotionMechanism b = testing::sample_mechanism(MotionKind(kb));
-                b.p[0] += dy;
+                fold_offset(b) += dy;
                 const CollisionVolume vb = collision_volume(b, options);
                 const bool depth = collision_depth(va, vb) > 0;
                 EXPECT_EQ(collide(va, vb), depth) << ka << " " << kb << " dy " << dy;

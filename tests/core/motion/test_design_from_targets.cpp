@@ -13,7 +13,6 @@ namespace popup::motion {
 namespace {
 
 using testing::Chain;
-using testing::mechanism;
 using testing::targets_of;
 
 MotionOptions quick(std::uint64_t seed = 1)
@@ -37,9 +36,9 @@ const ChainReport& chain(const MotionResult& r, const std::string& name)
 TEST(DesignFromTargets, SeparateChainsAreAnimatedAsTheirMechanismsAndTheCardIsValid)
 {
     const std::vector<Chain> chains = {
-        {"arm", mechanism(MotionKind::rotation, {20, 40, 30, 25}), 0.4},
-        {"head", mechanism(MotionKind::vertical, {95, 20, 30, 40 * M_PI / 180}), 0.3},
-        {"tail", mechanism(MotionKind::horizontal, {150, 30, 40, 15, 60}), 0.3}};
+        {"arm", rotation_mechanism(20, 40, 30, 25), 0.4},
+        {"head", vertical_mechanism(95, 20, 30, 40 * M_PI / 180), 0.3},
+        {"tail", horizontal_mechanism(150, 30, 40, 15, 60), 0.3}};
     const Result<MotionResult> r = design_from_targets(targets_of(chains), quick());
     ASSERT_TRUE(r.ok);
     EXPECT_TRUE(r.value.valid);
@@ -63,9 +62,8 @@ TEST(DesignFromTargets, SeparateChainsAreAnimatedAsTheirMechanismsAndTheCardIsVa
 
 TEST(DesignFromTargets, TwoCrossingArmsThatMoveAlikeAreMerged)
 {
-    const std::vector<Chain> chains = {
-        {"left_arm", mechanism(MotionKind::rotation, {60, 40, 30, 25}), 0.5},
-        {"right_arm", mechanism(MotionKind::rotation, {61, 40, 30, 26}), 0.5}};
+    const std::vector<Chain> chains = {{"left_arm", rotation_mechanism(60, 40, 30, 25), 0.5},
+                                       {"right_arm", rotation_mechanism(61, 40, 30, 26), 0.5}};
     const Result<MotionResult> r = design_from_targets(targets_of(chains), quick());
     ASSERT_TRUE(r.ok);
     EXPECT_TRUE(r.value.valid);
@@ -84,8 +82,8 @@ TEST(DesignFromTargets, TwoConflictingChainsThatMoveDifferentlyLeaveOneStationar
     // the lighter chain giving way (its floating layer would collide too: printed on the page).
     // With annealing the search may remap instead (see the next test).
     const std::vector<Chain> chains = {
-        {"arm", mechanism(MotionKind::rotation, {30, 40, 30, 25}), 0.6},
-        {"neck", mechanism(MotionKind::vertical, {45, 20, 30, 40 * M_PI / 180}), 0.4}};
+        {"arm", rotation_mechanism(30, 40, 30, 25), 0.6},
+        {"neck", vertical_mechanism(45, 20, 30, 40 * M_PI / 180), 0.4}};
     MotionOptions o = quick();
     o.view.card_width = 80;
     o.iterations = 0;
@@ -105,8 +103,8 @@ TEST(DesignFromTargets, ConflictingChainsAnnealedWithTheDefaultIterationsLeaveOn
     // mechanism far worse than its own (by more than 0.1 of the diagonal) does not resolve it,
     // so one chain ends stationary, named by the other, and the other follows its own path.
     const std::vector<Chain> chains = {
-        {"arm", mechanism(MotionKind::rotation, {30, 40, 30, 25}), 0.6},
-        {"neck", mechanism(MotionKind::vertical, {45, 20, 30, 40 * M_PI / 180}), 0.4}};
+        {"arm", rotation_mechanism(30, 40, 30, 25), 0.6},
+        {"neck", vertical_mechanism(45, 20, 30, 40 * M_PI / 180), 0.4}};
     MotionOptions o = quick();
     o.view.card_width = 80;
     o.iterations = MotionOptions{}.iterations;
@@ -129,9 +127,9 @@ TEST(DesignFromTargets, ConflictingChainsAnnealedWithTheDefaultIterationsLeaveOn
 TEST(DesignFromTargets, TheSameSeedGivesTheSameDesign)
 {
     const std::vector<Chain> chains = {
-        {"arm", mechanism(MotionKind::rotation, {20, 40, 30, 25}), 0.5},
-        {"leg", mechanism(MotionKind::rotation, {40, 40, 30, 20}), 0.3},
-        {"head", mechanism(MotionKind::vertical, {95, 20, 30, 40 * M_PI / 180}), 0.2}};
+        {"arm", rotation_mechanism(20, 40, 30, 25), 0.5},
+        {"leg", rotation_mechanism(40, 40, 30, 20), 0.3},
+        {"head", vertical_mechanism(95, 20, 30, 40 * M_PI / 180), 0.2}};
     const Result<MotionResult> a = design_from_targets(targets_of(chains), quick(7));
     const Result<MotionResult> b = design_from_targets(targets_of(chains), quick(7));
     ASSERT_TRUE(a.ok && b.ok);
@@ -148,12 +146,11 @@ TEST(DesignFromTargets, CrowdedChainsNeverEndColliding)
 {
     // Five chains crowding the middle of the fold: whatever the seed, the returned card passes
     // the full simulator.
-    const std::vector<Chain> chains = {
-        {"a", mechanism(MotionKind::rotation, {60, 40, 30, 25}), 0.3},
-        {"b", mechanism(MotionKind::vertical, {80, 20, 30, 40 * M_PI / 180}), 0.2},
-        {"c", mechanism(MotionKind::horizontal, {70, 30, 40, 15, 60}), 0.2},
-        {"d", mechanism(MotionKind::rotation, {75, 30, 20, 20}), 0.2},
-        {"e", mechanism(MotionKind::stationary, {50, 40, 20, 15, 10, -18}), 0.1, 0.8}};
+    const std::vector<Chain> chains = {{"a", rotation_mechanism(60, 40, 30, 25), 0.3},
+                                       {"b", vertical_mechanism(80, 20, 30, 40 * M_PI / 180), 0.2},
+                                       {"c", horizontal_mechanism(70, 30, 40, 15, 60), 0.2},
+                                       {"d", rotation_mechanism(75, 30, 20, 20), 0.2},
+                                       {"e", layer_mechanism(50, 40, 20, 15, 10, -18), 0.1, 0.8}};
     for (std::uint64_t seed : {1u, 2u, 3u}) {
         const Result<MotionResult> r = design_from_targets(targets_of(chains), quick(seed));
         ASSERT_TRUE(r.ok);

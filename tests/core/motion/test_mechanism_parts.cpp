@@ -50,9 +50,10 @@ TEST(MechanismParts, EveryPatchStaysWithinTheCardsReachAcrossTheFold)
         double worst = -1e9;
         for (int trial = 0; trial < 3000; ++trial) {
             MotionMechanism m = start;
-            for (int i = 0; i < parameter_count(m.kind); ++i)
-                m.p[i] += step(rng) *
-                          (parameter_info(m.kind, i).role == ParameterRole::angle ? 0.2 : 12.0);
+            for (int i = 0; i < parameter_count(m.kind()); ++i)
+                parameter(m, i) +=
+                    step(rng) *
+                    (parameter_info(m.kind(), i).role == ParameterRole::angle ? 0.2 : 12.0);
             if (!feasible(m, card))
                 continue;
             ++tried;

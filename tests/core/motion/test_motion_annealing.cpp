@@ -11,17 +11,15 @@ namespace popup::motion {
 namespace {
 
 using testing::Chain;
-using testing::mechanism;
 using testing::targets_of;
 
 TEST(Annealing, IncrementalEvaluationFollowsTheFullReevaluation)
 {
     // The cached per-mechanism errors and pairwise depths must give the same search as
     // recomputing everything: same seed, same accepted moves, same best state.
-    const std::vector<Chain> chains = {
-        {"a", mechanism(MotionKind::rotation, {60, 40, 30, 25}), 0.4},
-        {"b", mechanism(MotionKind::vertical, {80, 20, 30, 40 * M_PI / 180}), 0.3},
-        {"c", mechanism(MotionKind::rotation, {75, 30, 20, 20}), 0.3}};
+    const std::vector<Chain> chains = {{"a", rotation_mechanism(60, 40, 30, 25), 0.4},
+                                       {"b", vertical_mechanism(80, 20, 30, 40 * M_PI / 180), 0.3},
+                                       {"c", rotation_mechanism(75, 30, 20, 20), 0.3}};
     const MotionTargets t = targets_of(chains);
     AnnealProblem p;
     p.card.width = 210;
@@ -36,7 +34,8 @@ TEST(Annealing, IncrementalEvaluationFollowsTheFullReevaluation)
         c.weight = chains[j].weight;
         p.chains.push_back(c);
         p.candidates.push_back(fit_candidates(c, p.card, 25));
-        start.slots.push_back({p.candidates.back()[int(chains[j].truth.kind)].mechanism, {int(j)}});
+        start.slots.push_back(
+            {p.candidates.back()[int(chains[j].truth.kind())].mechanism, {int(j)}});
     }
     prepare_alike(p);
     AnnealOptions o;
@@ -65,10 +64,10 @@ TEST(Annealing, ADeepCollisionAtTheStartIsResolved)
     AnnealState start;
     for (int i = 0; i < 8; ++i) {
         const double y = 5 + 25 * i;
-        const MotionMechanism truth =
-            i % 3 == 0   ? mechanism(MotionKind::rotation, {y, 20, 15, 15})
-            : i % 3 == 1 ? mechanism(MotionKind::vertical, {y + 10, 8, 20, 40 * M_PI / 180})
-                         : mechanism(MotionKind::horizontal, {y, 14, 30, 10, 40.0 + 5.0 * i});
+        const MotionMechanism truth = i % 3 == 0 ? rotation_mechanism(y, 20, 15, 15)
+                                      : i % 3 == 1
+                                          ? vertical_mechanism(y + 10, 8, 20, 40 * M_PI / 180)
+                                          : horizontal_mechanism(y, 14, 30, 10, 40.0 + 5.0 * i);
         ChainTarget t;
         t.name = "chain" + std::to_string(i);
         t.weight = 1.0 / 8;
@@ -79,7 +78,7 @@ TEST(Annealing, ADeepCollisionAtTheStartIsResolved)
         }
         p.chains.push_back(t);
         p.candidates.push_back(fit_candidates(t, p.card, 25));
-        start.slots.push_back({p.candidates.back()[int(truth.kind)].mechanism, {i}});
+        start.slots.push_back({p.candidates.back()[int(truth.kind())].mechanism, {i}});
     }
     prepare_alike(p);
     ASSERT_GT(state_collision(p, start), 20.0);

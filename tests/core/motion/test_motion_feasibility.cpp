@@ -21,11 +21,11 @@ TEST(MotionFeasibility, InfeasibleParametersAreNamed)
     CardParams card;
     card.depth = 148;
     MotionMechanism m = sample_mechanism(MotionKind::rotation);
-    m.p[3] = 100; // arm far beyond spine²/run = 53 mm
+    m.rotation().arm = 100; // arm far beyond spine²/run = 53 mm
     const std::string why = infeasibility(m, card);
     EXPECT_NE(why.find("arm = 100"), std::string::npos) << why;
     m = sample_mechanism(MotionKind::horizontal);
-    m.p[3] = 45; // run_backdrop above run_ground
+    m.horizontal().run_backdrop = 45; // run_backdrop above run_ground
     EXPECT_NE(infeasibility(m, card).find("run_backdrop"), std::string::npos);
 }
 
@@ -36,21 +36,22 @@ TEST(MotionFeasibility, AnOffFoldArmsGluedCreaseKeepsItsTabRoom)
     const CardParams card = testing::a4_card();
     for (double side : {1.0, -1.0}) {
         MotionMechanism m = testing::off_fold_rotation(side); // spine 40, run 25
-        m.p[3] = 10;                                          // arm under spine²/run
+        RotationMotion& r = m.rotation();
+        r.arm = 10; // arm under spine²/run
         EXPECT_EQ(infeasibility(m, card), "") << side;
-        m.p[2] = 14.0; // 19.3° from the hinge
+        r.run = 14.0; // 19.3° from the hinge
         EXPECT_NE(infeasibility(m, card).find("run = 14"), std::string::npos) << side;
-        m.p[2] = 15.0;
+        r.run = 15.0;
         EXPECT_EQ(infeasibility(m, card), "") << side;
-        m.p[2] = 100.0; // 68.2°: still in, the tallest the card allows with a 30 mm hinge
-        m.p[3] = 5;
+        r.run = 100.0; // 68.2°: still in, the tallest the card allows with a 30 mm hinge
+        r.arm = 5;
         EXPECT_EQ(infeasibility(m, card), "") << side;
     }
     MotionMechanism steep = testing::off_fold_rotation(1);
-    steep.p[1] = 12; // spine 12, run 25: 64.4° in; run 40: 73.3° out
-    steep.p[3] = 2;
+    steep.rotation().spine = 12; // spine 12, run 25: 64.4° in; run 40: 73.3° out
+    steep.rotation().arm = 2;
     EXPECT_EQ(infeasibility(steep, card), "");
-    steep.p[2] = 40;
+    steep.rotation().run = 40;
     EXPECT_NE(infeasibility(steep, card).find("tan 70"), std::string::npos)
         << infeasibility(steep, card);
 }
@@ -68,9 +69,10 @@ TEST(MotionFeasibility, FeasibleAgreesWithInfeasibility)
             k < motion_kind_count ? sample_mechanism(MotionKind(k)) : testing::off_fold_rotation(1);
         for (int trial = 0; trial < 400; ++trial) {
             MotionMechanism m = start;
-            for (int i = 0; i < parameter_count(m.kind); ++i)
-                m.p[i] += step(rng) *
-                          (parameter_info(m.kind, i).role == ParameterRole::angle ? 0.3 : 15.0);
+            for (int i = 0; i < parameter_count(m.kind()); ++i)
+                parameter(m, i) +=
+                    step(rng) *
+                    (parameter_info(m.kind(), i).role == ParameterRole::angle ? 0.3 : 15.0);
             const bool ok = infeasibility(m, card).empty();
             EXPECT_EQ(feasible(m, card), ok) << k << " trial " << trial;
             (ok ? yes : no) += 1;
@@ -101,9 +103,8 @@ TEST(MotionFeasibility, ADiagonalsWingsMustFitTheCardsSheet)
     // one piece 378 mm long: diagonal_wings_fit says no, and the sheets indeed cannot lay it out
     // on A4. Feasible diagonals drawn at random that it passes all lay out on A4.
     const CardParams card = testing::card_for_a4_sheets();
-    MotionMechanism long_run;
-    long_run.kind = MotionKind::diagonal;
-    long_run.p = {27.45, 193.22, 40.19 * M_PI / 180, 40.72, 10, 12, 16, 12};
+    const MotionMechanism long_run =
+        diagonal_mechanism(27.45, 193.22, 40.19 * M_PI / 180, 40.72, 10, 12, 16, 12);
     EXPECT_EQ(infeasibility(long_run, card), "");
     EXPECT_FALSE(diagonal_wings_fit(long_run, card));
     {
@@ -121,10 +122,11 @@ TEST(MotionFeasibility, ADiagonalsWingsMustFitTheCardsSheet)
     int passed = 0, refused = 0;
     for (int trial = 0; trial < 5000 && passed < 12; ++trial) {
         MotionMechanism m = long_run;
-        m.p[0] = offset(rng);
-        m.p[1] = run(rng);
-        m.p[2] = angle(rng) * M_PI / 180;
-        m.p[3] = spine(rng);
+        VFoldParams& v = m.diagonal().v_fold;
+        v.offset = offset(rng);
+        v.run = run(rng);
+        v.hinge_angle = angle(rng) * M_PI / 180;
+        v.spine = spine(rng);
         if (!infeasibility(m, card).empty())
             continue;
         if (!diagonal_wings_fit(m, card)) {
@@ -133,7 +135,7 @@ TEST(MotionFeasibility, ADiagonalsWingsMustFitTheCardsSheet)
         }
         ++passed;
         EXPECT_TRUE(lays_out_on_a4(m))
-            << "run " << m.p[1] << " angle " << m.p[2] << " spine " << m.p[3];
+            << "run " << v.run << " angle " << v.hinge_angle << " spine " << v.spine;
     }
     EXPECT_GE(passed, 12);
     EXPECT_GT(refused, 0);
@@ -155,9 +157,10 @@ TEST(MotionFeasibility, EveryFeasibleMechanismLaysOutOnTheCardsPaper)
         int laid_out = 0;
         for (int trial = 0; trial < 3000 && laid_out < 20; ++trial) {
             MotionMechanism m = start;
-            for (int i = 0; i < parameter_count(m.kind); ++i)
-                m.p[i] += step(rng) *
-                          (parameter_info(m.kind, i).role == ParameterRole::angle ? 0.3 : 30.0);
+            for (int i = 0; i < parameter_count(m.kind()); ++i)
+                parameter(m, i) +=
+                    step(rng) *
+                    (parameter_info(m.kind(), i).role == ParameterRole::angle ? 0.3 : 30.0);
             if (!feasible(m, card) || !diagonal_wings_fit(m, card))
                 continue;
             ASSERT_TRUE(lays_out_on_a4(m)) << "kind " << k;
@@ -173,22 +176,18 @@ TEST(MotionFeasibility, AFloatingLayerMustUnfoldOntoTheCardsSheet)
     // fold unfolds into a strip 2 (76.5 + 58.75) + 2 tabs of 8 mm = 286.5 mm, over the A4 card's
     // open sheet (2 × 136.5 = 273 mm): refused, naming the hinge.
     const CardParams card = testing::card_for_a4_sheets();
-    MotionMechanism arm;
-    arm.kind = MotionKind::rotation;
-    arm.p = {64.95, 54.68, 75.50, 6.47, 58.75};
+    MotionMechanism arm = rotation_mechanism(64.95, 54.68, 75.50, 6.47, 58.75);
     const std::string why = infeasibility(arm, card);
     EXPECT_NE(why.find("hinge"), std::string::npos) << why;
     EXPECT_NE(why.find("open sheet"), std::string::npos) << why;
     // With run 25 the layer is 26 mm high: 2 (26 + 58.75) + 16 = 185.5 mm fits.
-    arm.p[2] = 25;
+    arm.rotation().run = 25;
     EXPECT_EQ(infeasibility(arm, card), "");
     // A still part's layer with an overhang: the platform, 2 (support + overhang) + 16, is the long
     // piece. 2 (58.8 + 63.5) + 16 = 260.6 mm fits; 10 mm more overhang (280.6 mm) does not.
-    MotionMechanism layer;
-    layer.kind = MotionKind::stationary;
-    layer.p = {71.7, 53.6, 11.3, 58.8, 63.5, -100};
+    MotionMechanism layer = layer_mechanism(71.7, 53.6, 11.3, 58.8, 63.5, -100);
     EXPECT_EQ(infeasibility(layer, card), "");
-    layer.p[4] = 73.5;
+    layer.stationary().overhang = 73.5;
     EXPECT_NE(infeasibility(layer, card).find("open sheet"), std::string::npos);
 }
 
