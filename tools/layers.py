@@ -48,7 +48,7 @@ WORKBENCH_FLOORS = {
     "popupwb.document_precheck": 1,
     "popupwb.printable": 1,
     "popupwb.patch_titles": 1,
-    "popupwb.mechanism_catalogue": 1,
+    "popupwb.mechanism_catalogue": 2,
     "popupwb.model": 2,
     "popupwb.progress": 2,
     "popupwb.validity.report_text": 2,

@@ -108,8 +108,7 @@ _TOOL_TIPS = {
 def _in_catalogue_order():
     by_kind = {feature.KIND: feature for feature in _FEATURES}
     return tuple(
-        Mechanism(by_kind[row.kind], _TOOL_TIPS[row.kind])
-        for row in mechanism_catalogue.entries()
+        Mechanism(by_kind[row.kind], _TOOL_TIPS[row.kind]) for row in mechanism_catalogue.entries()
     )
 
 

@@ -112,7 +112,8 @@ def test_the_registry_takes_order_titles_and_groups_from_the_catalogue():
 
 
 def test_part_titles_come_from_the_catalogue():
-    from popupwb.patch_titles import CARD_KIND, part_title
+    from popupwb.patch_titles import CARD_KIND
+    from popupwb.validity.card_titles import part_title
 
     assert part_title("PopUp::BoxFold", "TG") == "top, ground side"
     assert part_title("PopUp::BoxFold", "BR2") == "back end, backdrop side, strip 2"
@@ -127,4 +128,3 @@ def test_an_unknown_kind_names_the_known_ones():
 
     with pytest.raises(ValueError, match=r"'cube_fold' is not in the catalogue \(known: tent_fold"):
         mechanism_catalogue.entry("cube_fold")
-

@@ -113,15 +113,21 @@ def test_every_part_the_core_builds_has_a_title(doc, index):
 
 
 def test_name_patches_leaves_unknown_patches_and_other_text_alone():
+    from popupwb.core import popupcore
     from popupwb.patch_titles import name_patches
+
+    assert popupcore.patch_subject(3, "Tent.slope_ground") == "patch 3 (Tent.slope_ground)"
+    assert popupcore.patch_subject(3) == "patch 3"
 
     titles = {"3": "Tent fold 'Tent': slope, ground side"}  # as JSON gives the keys
     names = {"3": "Tent.slope_ground"}
+    subjects = {"3": "patch 3 (Tent.slope_ground)"}  # popupcore.patch_subject(3, names["3"])
     message = "patch 3 (Tent.slope_ground) meets patch 4 (Tent.slope_backdrop); dispatch 3 (x)"
-    assert name_patches(message, titles, names) == (
+    assert name_patches(message, titles, subjects, names) == (
         "Tent fold 'Tent': slope, ground side [#3 Tent.slope_ground] meets patch 4 "
         "(Tent.slope_backdrop); dispatch 3 (x)"
     )
-    assert name_patches("patch 3 is stuck", titles).startswith("Tent fold 'Tent'")
-    assert name_patches("patch 30 is stuck", titles) == "patch 30 is stuck"
-    assert name_patches(message, None) == message
+    unnamed = {"3": "patch 3"}  # popupcore.patch_subject(3)
+    assert name_patches("patch 3 is stuck", titles, unnamed).startswith("Tent fold 'Tent'")
+    assert name_patches("patch 30 is stuck", titles, unnamed) == "patch 30 is stuck"
+    assert name_patches(message, None, subjects) == message

@@ -8,7 +8,7 @@ import os
 
 from popupwb.cli.common import EXIT_INVALID, EXIT_VALID, InputError, format_report, stdout_to_stderr
 from popupwb.cli.designs import is_document, load_designs
-from popupwb.patch_titles import add_titles, names_of
+from popupwb.validity.card_titles import add_scaffold_titles
 from popupwb.printable import printable_lines
 
 MAX_SAMPLES = 100000
@@ -66,7 +66,7 @@ def check_design(popupcore, design, samples, clearance):
         d = rejected[0]
         flag = f"--{d['parameter']} {given[d['parameter']]:g}" if d["parameter"] in given else ""
         raise InputError(f"{flag}: {d['message']}" if flag else d["message"])
-    add_titles(result, design.patch_titles, names_of(design.scaffold))
+    add_scaffold_titles(result, design.patch_titles, design.scaffold)
     return {**result, **design.fields}
 
 

@@ -19,7 +19,8 @@ from popupwb.cli.common import (
     stdout_to_stderr,
 )
 from popupwb.cli.designs import card_printed_sides, load_designs
-from popupwb.patch_titles import name_patches, names_of
+from popupwb.patch_titles import name_patches
+from popupwb.validity.card_titles import subjects_and_names
 from popupwb.printable import printable, printable_lines
 from popupwb.sheets import sheet_options
 
@@ -121,7 +122,7 @@ def _refuse_invalid(args, design, validity, not_valid):
     return EXIT_INVALID
 
 
-def _print_sheet_summary(report, paths, choice, not_valid, titles, names):
+def _print_sheet_summary(report, paths, choice, not_valid, titles, scaffold):
     if choice is not None:
         print(choice.text())
     for path in [
@@ -146,8 +147,9 @@ def _print_sheet_summary(report, paths, choice, not_valid, titles, names):
     )
     if not_valid is not None:
         print(f"{not_valid.text()}: sheets written anyway (--force), every sheet stamped")
+    subjects, names = subjects_and_names(scaffold)
     for d in report["errors"] + report["warnings"]:
-        message = name_patches(d["message"], titles, names)
+        message = name_patches(d["message"], titles, subjects, names)
         print(printable(f"{d['severity']}: {d['code']}: {message}"))
 
 
@@ -217,9 +219,7 @@ def run(args):
         )
         print(json.dumps(report, indent=2))
     else:
-        _print_sheet_summary(
-            report, paths, choice, not_valid, design.patch_titles, names_of(design.scaffold)
-        )
+        _print_sheet_summary(report, paths, choice, not_valid, design.patch_titles, design.scaffold)
     return EXIT_INVALID if report["errors"] or not_valid is not None else EXIT_VALID
 
 

@@ -237,8 +237,7 @@ class CuttingSheet(StatelessProxy):
         """The card's NotValid (None when the validity check accepts it); raises, leaving the
         feature in error, for a rejected card unless Force is set."""
         from popupwb.core import popupcore
-        from popupwb.patch_titles import add_titles, names_of
-        from popupwb.validity.card_titles import titles_of_card
+        from popupwb.validity.card_titles import add_scaffold_titles, titles_of_card
         from popupwb.sheets.not_valid_stamp import not_valid_of
 
         try:
@@ -254,7 +253,7 @@ class CuttingSheet(StatelessProxy):
         # scaffold: the card is not valid, however well the rest folds.
         add_build_problems(report, obj.Card, built)
         titles = titles_of_card(obj.Card, built)
-        not_valid = not_valid_of(add_titles(report, titles, names_of(built.scaffold)))
+        not_valid = not_valid_of(add_scaffold_titles(report, titles, built.scaffold))
         if not_valid is not None and not obj.Force:
             # The first finding, unless it is already the reason (all verdicts passed).
             first = not_valid.findings[0] if not_valid.findings else not_valid.reason

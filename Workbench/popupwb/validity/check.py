@@ -86,7 +86,7 @@ def add_build_problems(report, card, built):
 
 def _check_card(card, samples, clearance):
     """The card's whole scaffold; mechanisms that do not build are findings of their own."""
-    from popupwb import patch_titles, progress
+    from popupwb import progress
     from popupwb.validity import card_titles
     from popupwb.model import card_scaffold
     from popupwb.core import popupcore
@@ -104,7 +104,7 @@ def _check_card(card, samples, clearance):
     ).to_dict()
     add_build_problems(report, card, built)
     titles = card_titles.titles_of_card(card, built)
-    patch_titles.add_titles(report, titles, patch_titles.names_of(built.scaffold))
+    card_titles.add_scaffold_titles(report, titles, built.scaffold)
     card.CheckedDesign = built.digest
     if verdict_viewer is not None:
         verdict_viewer(card, built.digest, offending_patches(report))

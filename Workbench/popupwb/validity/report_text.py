@@ -23,6 +23,7 @@ def format_diagnostic(diagnostic):
     message = name_patches(
         diagnostic.get("message", ""),
         diagnostic.get("patch_titles"),
+        diagnostic.get("patch_subjects"),
         diagnostic.get("patch_names"),
     )
     return printable(f"{diagnostic.get('code', '')}: {message}")

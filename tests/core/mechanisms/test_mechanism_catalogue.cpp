@@ -3,6 +3,7 @@
 // member they name.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -78,7 +79,10 @@ TEST(MechanismCatalogue, EveryKindBuildsItsDefaultsAndOffersWhatItsRowSays)
         for (size_t i = before; i < s.patches.size(); ++i) {
             const std::string& name = s.patches[i].name;
             const std::string code = name.substr(name.find('.') + 1);
-            EXPECT_NE(part_title(entry.kind, code), code) << name << " has no maker title";
+            const bool listed = std::any_of(entry.parts.begin(), entry.parts.end(),
+                                            [&](const PartTitle& t) { return t.code == code; });
+            EXPECT_TRUE(listed || part_title(entry.kind, code) != code)
+                << name << " has no maker title";
         }
     }
 }
