@@ -1,5 +1,7 @@
 // Bindings of the mechanism catalogue (core/include/popup/mechanisms/mechanism_catalogue.hpp):
 // what the Workbench's registry, parameter tables, offered pairs and part titles read.
+#include <map>
+
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
@@ -48,8 +50,8 @@ const CatalogueEntry& entry_named(const std::string& kind)
     std::string known;
     for (const CatalogueEntry& e : mechanism_catalogue())
         known += (known.empty() ? "" : ", ") + e.name;
-    throw py::value_error("mechanism kind '" + kind + "' is not in the catalogue (known: " +
-                          known + ")");
+    throw py::value_error("mechanism kind '" + kind + "' is not in the catalogue (known: " + known +
+                          ")");
 }
 
 std::vector<std::pair<std::string, std::string>> title_pairs(const std::vector<PartTitle>& parts)
@@ -92,12 +94,17 @@ void bind_mechanism_catalogue(py::module_& m)
         .def_readonly("feature", &CatalogueEntry::feature, "the FreeCAD feature class")
         .def_readonly("title", &CatalogueEntry::title)
         .def_readonly("params", &CatalogueEntry::params, "the bound params class")
-        .def_property_readonly("generator",
-                               [](const CatalogueEntry& e) { return "add_" + e.name; })
+        .def_property_readonly("generator", [](const CatalogueEntry& e) { return "add_" + e.name; })
         .def_readonly("short_name", &CatalogueEntry::short_name)
         .def_readonly("motion", &CatalogueEntry::motion)
         .def_readonly("fields", &CatalogueEntry::fields)
         .def_readonly("offers", &CatalogueEntry::offers, "parts whose base patch pairs it offers")
+        .def_property_readonly(
+            "fixed",
+            [](const CatalogueEntry& e) {
+                return std::map<std::string, double>(e.fixed.begin(), e.fixed.end());
+            },
+            "params members the generator fixes, with their only value")
         .def_property_readonly(
             "parts", [](const CatalogueEntry& e) { return title_pairs(e.parts); },
             "(code, maker title) of each part");
@@ -118,10 +125,8 @@ void bind_mechanism_catalogue(py::module_& m)
 
     py::class_<DesignedMechanism>(m, "DesignedMechanism",
                                   "A mechanism as an automatic design states it")
-        .def_property_readonly("kind",
-                               [](const DesignedMechanism& d) {
-                                   return catalogue_entry(d.kind).name;
-                               })
+        .def_property_readonly(
+            "kind", [](const DesignedMechanism& d) { return catalogue_entry(d.kind).name; })
         .def_property_readonly(
             "type", [](const DesignedMechanism& d) { return catalogue_entry(d.kind).name; },
             "the kind, as kind")

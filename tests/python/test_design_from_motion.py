@@ -16,7 +16,7 @@ TOUCH = 1e-6  # mm: a vertex of the posed feature is the closed form's point
 
 
 def _mechanism(type_, name, host, **parameters):
-    return types.SimpleNamespace(type=type_, name=name, host=host, parameters=parameters)
+    return types.SimpleNamespace(kind=type_, name=name, host=host, parameters=parameters)
 
 
 def _result(core, mechanisms, chains=(), matrix=None, width=240.0, depth=140.0):

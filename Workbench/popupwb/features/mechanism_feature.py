@@ -73,6 +73,7 @@ class MechanismFeature(StatelessProxy):
     PARAMETERS = ()  # mechanism_catalogue.Parameter tuples, in the order the task panel shows
     OFFERS = ()  # parts of the base patch pairs it offers: pair names are "<Label>.<part>"
     OUTPUTS = ()  # (name, doc) of read-only derived length properties
+    FIXED_FIELDS = {}  # params fields a design may state with these values only
 
     def __init_subclass__(cls, **kwargs):
         super().__init_subclass__(**kwargs)
@@ -85,6 +86,7 @@ class MechanismFeature(StatelessProxy):
         cls.GENERATOR = row.generator
         cls.PARAMETERS = mechanism_catalogue.parameters(cls.KIND)
         cls.OFFERS = tuple(row.offers)
+        cls.FIXED_FIELDS = dict(row.fixed)
 
     def __init__(self, obj):
         obj.Proxy = self

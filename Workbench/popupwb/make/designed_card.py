@@ -27,6 +27,14 @@ def property_values(feature, parameters, mechanism_name):
     """{property name: value} of `feature` from a FittedMechanism's `parameters` (field -> float,
     mm and radians); a field the feature does not have is a ValueError naming it."""
     by_field = {p.field: p for p in feature.PARAMETERS}
+    fixed = feature.FIXED_FIELDS
+    for field in sorted(set(parameters) & set(fixed)):
+        if float(parameters[field]) != fixed[field]:
+            raise ValueError(
+                f"{mechanism_name}: parameter {field} = {parameters[field]}, a "
+                f"{feature.__name__} always has {fixed[field]:g}"
+            )
+    parameters = {k: v for k, v in parameters.items() if k not in fixed}
     unknown = sorted(set(parameters) - set(by_field))
     if unknown:
         raise ValueError(

@@ -209,8 +209,8 @@ FittedMechanism layer_mechanism(const FittedMechanism& box, const FaceGround& g,
     FittedMechanism m;
     if (wall) {
         // Along the page: the layer's depth; up the wall: its top.
-        static_cast<DesignedMechanism&>(m) = DesignedMechanism::of_kind(
-            MechanismKind::step_fold, free_name("S", taken), face.pair);
+        static_cast<DesignedMechanism&>(m) =
+            DesignedMechanism::of_kind(MechanismKind::step_fold, free_name("S", taken), face.pair);
         StepFoldParams& q = m.as<StepFoldParams>();
         const double run = std::min(layer.depth, g.page_room - margin);
         const double up = std::min(rise, g.wall_height - margin);
@@ -219,8 +219,8 @@ FittedMechanism layer_mechanism(const FittedMechanism& box, const FaceGround& g,
         q.run_ground = wall_is_backdrop ? run : up;
         q.run_backdrop = wall_is_backdrop ? up : run;
     } else {
-        static_cast<DesignedMechanism&>(m) = DesignedMechanism::of_kind(
-            MechanismKind::box_fold, free_name("B", taken), face.pair);
+        static_cast<DesignedMechanism&>(m) =
+            DesignedMechanism::of_kind(MechanismKind::box_fold, free_name("B", taken), face.pair);
         BoxFoldParams& q = m.as<BoxFoldParams>();
         q.offset = offset;
         q.width = w;

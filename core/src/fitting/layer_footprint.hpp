@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "popup/fitting/silhouette.hpp"
-#include "popup/model/base_patch_pair.hpp"
 #include "popup/mechanisms/designed_card.hpp"
+#include "popup/model/base_patch_pair.hpp"
 #include "popup/model/profile.hpp"
 #include "popup/model/result.hpp"
 #include "popup/model/scaffold.hpp"

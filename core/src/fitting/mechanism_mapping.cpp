@@ -62,12 +62,18 @@ std::vector<MechanismKind> mechanism_options(const Prism& m, const PrismHost& ho
 
 namespace {
 
+/// The prism's run along the hinge, where every kind but the v-fold starts and ends.
+void place_along_hinge(Placement1D& q, const Prism& m)
+{
+    q.offset = m.a0;
+    q.width = m.a1 - m.a0;
+}
+
 void plan_box(MechanismPlan& p, const Prism& m, const Areas& a)
 {
     // At 180° the box is x in [−depth_backdrop, depth_ground], z in [0, height].
     BoxFoldParams& q = p.as<BoxFoldParams>();
-    q.offset = m.a0;
-    q.width = m.a1 - m.a0;
+    place_along_hinge(q, m);
     q.depth_ground = m.s1;
     q.depth_backdrop = -m.s0;
     q.height = m.height;
@@ -83,8 +89,7 @@ void plan_step(MechanismPlan& p, const Prism& m, const PrismHost& host, const Ar
     // ground side the page is the host's ground; on its backdrop side the wall is.
     StepFoldParams& q = p.as<StepFoldParams>();
     const bool page_is_ground = host.part != "side_backdrop";
-    q.offset = m.a0;
-    q.width = m.a1 - m.a0;
+    place_along_hinge(q, m);
     q.run_ground = page_is_ground ? m.s1 : m.height;
     q.run_backdrop = page_is_ground ? m.height : m.s1;
     p.principal_area = a.outer + a.top;
@@ -93,8 +98,7 @@ void plan_step(MechanismPlan& p, const Prism& m, const PrismHost& host, const Ar
 void plan_tent(MechanismPlan& p, const Prism& m, const Areas& a)
 {
     TentFoldParams& q = p.as<TentFoldParams>();
-    q.offset = m.a0;
-    q.width = m.a1 - m.a0;
+    place_along_hinge(q, m);
     q.foot = m.s1;
     q.foot_backdrop = -m.s0;
     q.slope = std::hypot(m.s1 - m.apex_s, m.height);
@@ -172,8 +176,9 @@ Mapping map_mechanisms(const RansacResult& fit)
                     continue;
                 const Prism& m = fit.prisms[k];
                 const PrismHost& h = fit.hosts[m.host];
-                if (h.parent >= 0 && (options[h.parent].empty() ||
-                                      options[h.parent][choice[h.parent]] != MechanismKind::box_fold))
+                if (h.parent >= 0 &&
+                    (options[h.parent].empty() ||
+                     options[h.parent][choice[h.parent]] != MechanismKind::box_fold))
                     return; // stands on a part only a box fold offers
                 plans.push_back(plan_mechanism(options[k][choice[k]], m, h));
             }
@@ -232,8 +237,7 @@ refit_for_foldability(std::vector<MechanismPlan>& plans, double min_part)
     };
     for (size_t i = 0; i < plans.size(); ++i)
         for (size_t j = 0; j < plans.size(); ++j) {
-            if (i == j || plans[i].host != plans[j].host ||
-                plans[i].offset() > plans[j].offset())
+            if (i == j || plans[i].host != plans[j].host || plans[i].offset() > plans[j].offset())
                 continue;
             MechanismPlan& first = plans[i];
             MechanismPlan& second = plans[j];

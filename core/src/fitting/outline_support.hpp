@@ -4,8 +4,8 @@
 #include <string>
 
 #include "popup/input/model_mesh.hpp"
-#include "popup/model/apply_profile.hpp"
 #include "popup/mechanisms/designed_card.hpp"
+#include "popup/model/apply_profile.hpp"
 
 namespace popup::outline_support {
 

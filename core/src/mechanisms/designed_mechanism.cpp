@@ -5,8 +5,7 @@
 
 namespace popup {
 
-DesignedMechanism DesignedMechanism::of_kind(MechanismKind kind, std::string name,
-                                             std::string host)
+DesignedMechanism DesignedMechanism::of_kind(MechanismKind kind, std::string name, std::string host)
 {
     DesignedMechanism m;
     m.kind = kind;
@@ -72,9 +71,9 @@ Result<MechanismParts> add_mechanism(Scaffold& scaffold, const BasePatchPair& ho
     const CatalogueEntry& entry = catalogue_entry(m.kind);
     if (m.params.index() != entry.defaults.index()) {
         Result<MechanismParts> r;
-        r.fail(DiagnosticCode::bad_parameter,
-               m.name + ": a " + entry.title + " needs " + entry.params +
-                   ", not the parameters of another kind");
+        r.fail(DiagnosticCode::bad_parameter, m.name + ": a " + entry.title + " needs " +
+                                                  entry.params +
+                                                  ", not the parameters of another kind");
         return r;
     }
     return entry.generate(scaffold, host, m.params, m.name);

@@ -16,8 +16,17 @@ ParameterField field(T Owner::*member, std::string name, std::string property, F
                      double default_value, double min, double max, HostBound bound,
                      std::string range, std::string doc)
 {
-    ParameterField f{std::move(name), std::move(property), unit,           default_value, min, max,
-                     bound,           std::move(range),    std::move(doc), {},            {}};
+    ParameterField f{std::move(name),
+                     std::move(property),
+                     unit,
+                     default_value,
+                     min,
+                     max,
+                     bound,
+                     std::move(range),
+                     std::move(doc),
+                     {},
+                     {}};
     f.get = [member](const MechanismParams& p) { return double(std::get<Params>(p).*member); };
     f.set = [member, unit](MechanismParams& p, double value) {
         T& slot = std::get<Params>(p).*member;
@@ -73,7 +82,12 @@ std::vector<PartTitle> box_parts(const std::string& walls, const std::string& to
 CatalogueEntry tent_fold()
 {
     using P = TentFoldParams;
-    return {MechanismKind::tent_fold, "tent_fold", "TentFold", "Tent fold", "TentFoldParams", "T",
+    return {MechanismKind::tent_fold,
+            "tent_fold",
+            "TentFold",
+            "Tent fold",
+            "TentFoldParams",
+            "T",
             false,
             with(placement<P>("the tent"),
                  {field<P>(&P::foot, "foot", "Foot", FieldUnit::length, 20.0, 0, largest,
@@ -89,13 +103,19 @@ CatalogueEntry tent_fold()
                            "Length of the ground-side slope")}),
             {},
             {{"slope_ground", "slope, ground side"}, {"slope_backdrop", "slope, backdrop side"}},
-            P{}, generator<P>(&add_tent_fold)};
+            P{},
+            generator<P>(&add_tent_fold)};
 }
 
 CatalogueEntry step_fold()
 {
     using P = StepFoldParams;
-    return {MechanismKind::step_fold, "step_fold", "StepFold", "Step fold", "StepFoldParams", "S",
+    return {MechanismKind::step_fold,
+            "step_fold",
+            "StepFold",
+            "Step fold",
+            "StepFoldParams",
+            "S",
             false,
             with(placement<P>("the step"),
                  {field<P>(&P::run_ground, "run_ground", "RunGround", FieldUnit::length, 30.0, 0,
@@ -110,42 +130,55 @@ CatalogueEntry step_fold()
                            "riser height)")}),
             {},
             {{"riser", "riser"}, {"tread", "tread"}},
-            P{}, generator<P>(&add_step_fold)};
+            P{},
+            generator<P>(&add_step_fold)};
 }
 
 CatalogueEntry v_fold()
 {
     using P = VFoldParams;
-    return {
-        MechanismKind::v_fold, "v_fold", "VFold", "V-fold", "VFoldParams", "V", false,
-        {field<P>(&P::offset, "offset", "Offset", FieldUnit::length, 20.0, 0, largest,
-                  HostBound::along_hinge, ">= 0 mm, the v within the host's length",
-                  "Point O of the v along the host's hinge"),
-         field<P>(&P::run, "run", "Run", FieldUnit::length, 40.0, 0, largest, HostBound::none,
-                  "> 0 mm, Run·sin(HingeAngle) < the host's depth",
-                  "Length of each wing's fold on the host, |OA| = |OB|"),
-         field<P>(&P::hinge_angle, "hinge_angle", "HingeAngle", FieldUnit::angle, 45 * degree, 0,
-                  90 * degree, HostBound::none, "> 0° and < 90°",
-                  "Angle between each wing's fold on the host and the host's hinge"),
-         field<P>(&P::spine, "spine", "Spine", FieldUnit::length, 45.0, 0, largest,
-                  HostBound::none, "> 0 mm and <= the host's largest extent",
-                  "Length of the spine O-P at the design state"),
-         field<P>(&P::spine_angle, "spine_angle", "SpineAngle", FieldUnit::angle, 60 * degree, 0,
-                  180 * degree, HostBound::none, "> 0° and < 180°",
-                  "Angle of the spine above the host's hinge at the design state")},
-        {"wings"}, // a step fold on the wings makes the diagonal translation (§4.3.3)
-        {{"wing_ground", "wing, ground side"}, {"wing_backdrop", "wing, backdrop side"}},
-        P{}, generator<P>(&add_v_fold)};
+    return {MechanismKind::v_fold,
+            "v_fold",
+            "VFold",
+            "V-fold",
+            "VFoldParams",
+            "V",
+            false,
+            {field<P>(&P::offset, "offset", "Offset", FieldUnit::length, 20.0, 0, largest,
+                      HostBound::along_hinge, ">= 0 mm, the v within the host's length",
+                      "Point O of the v along the host's hinge"),
+             field<P>(&P::run, "run", "Run", FieldUnit::length, 40.0, 0, largest, HostBound::none,
+                      "> 0 mm, Run·sin(HingeAngle) < the host's depth",
+                      "Length of each wing's fold on the host, |OA| = |OB|"),
+             field<P>(&P::hinge_angle, "hinge_angle", "HingeAngle", FieldUnit::angle, 45 * degree,
+                      0, 90 * degree, HostBound::none, "> 0° and < 90°",
+                      "Angle between each wing's fold on the host and the host's hinge"),
+             field<P>(&P::spine, "spine", "Spine", FieldUnit::length, 45.0, 0, largest,
+                      HostBound::none, "> 0 mm and <= the host's largest extent",
+                      "Length of the spine O-P at the design state"),
+             field<P>(&P::spine_angle, "spine_angle", "SpineAngle", FieldUnit::angle, 60 * degree,
+                      0, 180 * degree, HostBound::none, "> 0° and < 180°",
+                      "Angle of the spine above the host's hinge at the design state")},
+            {"wings"}, // a step fold on the wings makes the diagonal translation (§4.3.3)
+            {{"wing_ground", "wing, ground side"}, {"wing_backdrop", "wing, backdrop side"}},
+            P{},
+            generator<P>(&add_v_fold)};
 }
 
 CatalogueEntry box_fold()
 {
     using P = BoxFoldParams;
     return {
-        MechanismKind::box_fold, "box_fold", "BoxFold", "Box fold", "BoxFoldParams", "B", false,
+        MechanismKind::box_fold,
+        "box_fold",
+        "BoxFold",
+        "Box fold",
+        "BoxFoldParams",
+        "B",
+        false,
         with(placement<P>("the box"),
-             {field<P>(&P::depth_ground, "depth_ground", "DepthGround", FieldUnit::length, 30.0,
-                       0, largest, HostBound::ground_depth,
+             {field<P>(&P::depth_ground, "depth_ground", "DepthGround", FieldUnit::length, 30.0, 0,
+                       largest, HostBound::ground_depth,
                        "> 0 mm and <= the depth of the host's ground",
                        "Depth of the box on the host's ground side (= its top's ground half)"),
               field<P>(&P::depth_backdrop, "depth_backdrop", "DepthBackdrop", FieldUnit::length,
@@ -164,7 +197,8 @@ CatalogueEntry box_fold()
                        "Front and back panel pairs per end, strips stacked up the end")}),
         {"top", "side_ground", "side_backdrop"},
         box_parts("wall", "top"),
-        P{}, generator<P>(&add_box_fold)};
+        P{},
+        generator<P>(&add_box_fold)};
 }
 
 /// The v-box's walls and top; a vertical translation is its front half.
@@ -174,8 +208,7 @@ std::vector<ParameterField> v_box_fields(const std::string& height_doc, const st
     return {field<P>(&P::offset, "offset", "Offset", FieldUnit::length, 20.0, 0, largest,
                      HostBound::along_hinge, ">= 0 mm, the v-box within the host's length",
                      "Front corner along the host's hinge"),
-            field<P>(&P::side, "side", "Side", FieldUnit::length, 40.0, 0, largest,
-                     HostBound::none,
+            field<P>(&P::side, "side", "Side", FieldUnit::length, 40.0, 0, largest, HostBound::none,
                      "> 0 mm, Side·sin(WallAngle) < the host's depth and 2·Side·cos(WallAngle) <= "
                      "its length",
                      "Length of each wall along the host"),
@@ -200,91 +233,125 @@ std::vector<PartTitle> v_box_parts(bool back)
 
 CatalogueEntry v_box_fold()
 {
-    return {MechanismKind::v_box_fold, "v_box_fold", "VBoxFold", "V-box", "VBoxFoldParams", "X",
-            false, v_box_fields("Height of the walls at the design state", ""),
-            {}, v_box_parts(true), VBoxFoldParams{}, generator<VBoxFoldParams>(&add_v_box_fold)};
+    return {MechanismKind::v_box_fold,
+            "v_box_fold",
+            "VBoxFold",
+            "V-box",
+            "VBoxFoldParams",
+            "X",
+            false,
+            v_box_fields("Height of the walls at the design state", ""),
+            {},
+            v_box_parts(true),
+            VBoxFoldParams{},
+            generator<VBoxFoldParams>(&add_v_box_fold)};
 }
 
 CatalogueEntry rotation_arm()
 {
     using P = RotationArmParams;
-    return {
-        MechanismKind::rotation_arm, "rotation_arm", "RotationArm", "Rotation arm",
-        "RotationArmParams", "R", true,
-        {field<P>(&P::offset, "offset", "Offset", FieldUnit::length, 20.0, 0, largest,
-                  HostBound::along_hinge, ">= 0 mm and Offset + Spine <= the host's length",
-                  "Point O along the host's hinge"),
-         field<P>(&P::spine, "spine", "Spine", FieldUnit::length, 40.0, 0, largest,
-                  HostBound::along_hinge, "> 0 mm and <= the host's length",
-                  "Length l of the spine O-R along the hinge"),
-         field<P>(&P::run, "run", "Run", FieldUnit::length, 30.0, 0, largest, HostBound::none,
-                  "> 0 mm and < the depth of the host's ground and backdrop",
-                  "Reach w of the wings from the hinge"),
-         field<P>(&P::arm, "arm", "Arm", FieldUnit::length, 20.0, 0, largest,
-                  HostBound::backdrop_depth,
-                  "> 0 mm and <= Spine²/Run and the depth of the host's backdrop",
-                  "Length h of the arm past the spine (<= l²/w)")},
-        {},
-        {{"wing_arm", "wing with the arm"}, {"wing_backdrop", "wing, backdrop side"}},
-        P{}, generator<P>(&add_rotation_arm)};
+    return {MechanismKind::rotation_arm,
+            "rotation_arm",
+            "RotationArm",
+            "Rotation arm",
+            "RotationArmParams",
+            "R",
+            true,
+            {field<P>(&P::offset, "offset", "Offset", FieldUnit::length, 20.0, 0, largest,
+                      HostBound::along_hinge, ">= 0 mm and Offset + Spine <= the host's length",
+                      "Point O along the host's hinge"),
+             field<P>(&P::spine, "spine", "Spine", FieldUnit::length, 40.0, 0, largest,
+                      HostBound::along_hinge, "> 0 mm and <= the host's length",
+                      "Length l of the spine O-R along the hinge"),
+             field<P>(&P::run, "run", "Run", FieldUnit::length, 30.0, 0, largest, HostBound::none,
+                      "> 0 mm and < the depth of the host's ground and backdrop",
+                      "Reach w of the wings from the hinge"),
+             field<P>(&P::arm, "arm", "Arm", FieldUnit::length, 20.0, 0, largest,
+                      HostBound::backdrop_depth,
+                      "> 0 mm and <= Spine²/Run and the depth of the host's backdrop",
+                      "Length h of the arm past the spine (<= l²/w)")},
+            {},
+            {{"wing_arm", "wing with the arm"}, {"wing_backdrop", "wing, backdrop side"}},
+            P{},
+            generator<P>(&add_rotation_arm)};
 }
 
 CatalogueEntry horizontal_translation()
 {
     using P = HorizontalTranslationParams;
-    return {MechanismKind::horizontal_translation, "horizontal_translation",
-            "HorizontalTranslation", "Horizontal translation", "HorizontalTranslationParams",
-            "H", true,
-            {field<P>(&P::offset, "offset", "Offset", FieldUnit::length, 20.0, 0, largest,
-                      HostBound::along_hinge, ">= 0 mm and Offset + Width <= the host's length",
-                      "Start along the host's hinge"),
-             field<P>(&P::width, "width", "Width", FieldUnit::length, 40.0, 0, largest,
-                      HostBound::along_hinge, "> 0 mm and <= the host's length",
-                      "Extent along the host's hinge"),
-             field<P>(&P::run_ground, "run_ground", "RunGround", FieldUnit::length, 40.0, 0,
-                      largest, HostBound::ground_depth,
-                      "> 0 mm and < the depth of the host's ground",
-                      "Step's riser foot from the hinge"),
-             field<P>(&P::run_backdrop, "run_backdrop", "RunBackdrop", FieldUnit::length, 20.0, 0,
-                      largest, HostBound::none, "> 0 mm and < RunGround",
-                      "Step's tread foot, < RunGround"),
-             field<P>(&P::reach, "reach", "Reach", FieldUnit::length, 60.0, 0, largest,
-                      HostBound::ground_depth,
-                      "> RunGround - RunBackdrop and <= the depth of the host's ground",
-                      "Length r of M from the hinge to its end P")},
-            {},
-            {{"riser", "riser"}, {"tread", "tread"}, {"M", "sliding panel"}},
-            P{}, generator<P>(&add_horizontal_translation)};
+    return {
+        MechanismKind::horizontal_translation,
+        "horizontal_translation",
+        "HorizontalTranslation",
+        "Horizontal translation",
+        "HorizontalTranslationParams",
+        "H",
+        true,
+        {field<P>(&P::offset, "offset", "Offset", FieldUnit::length, 20.0, 0, largest,
+                  HostBound::along_hinge, ">= 0 mm and Offset + Width <= the host's length",
+                  "Start along the host's hinge"),
+         field<P>(&P::width, "width", "Width", FieldUnit::length, 40.0, 0, largest,
+                  HostBound::along_hinge, "> 0 mm and <= the host's length",
+                  "Extent along the host's hinge"),
+         field<P>(&P::run_ground, "run_ground", "RunGround", FieldUnit::length, 40.0, 0, largest,
+                  HostBound::ground_depth, "> 0 mm and < the depth of the host's ground",
+                  "Step's riser foot from the hinge"),
+         field<P>(&P::run_backdrop, "run_backdrop", "RunBackdrop", FieldUnit::length, 20.0, 0,
+                  largest, HostBound::none, "> 0 mm and < RunGround",
+                  "Step's tread foot, < RunGround"),
+         field<P>(&P::reach, "reach", "Reach", FieldUnit::length, 60.0, 0, largest,
+                  HostBound::ground_depth,
+                  "> RunGround - RunBackdrop and <= the depth of the host's ground",
+                  "Length r of M from the hinge to its end P")},
+        {},
+        {{"riser", "riser"}, {"tread", "tread"}, {"M", "sliding panel"}},
+        P{},
+        generator<P>(&add_horizontal_translation)};
 }
 
 CatalogueEntry vertical_translation()
 {
     VBoxFoldParams half;
     half.back = false; // the generator builds the triangular half whatever `back` says
-    return {MechanismKind::vertical_translation, "vertical_translation", "VerticalTranslation",
-            "Vertical translation", "VBoxFoldParams", "Y", true,
-            v_box_fields("Height h of the walls at the design state", "α "), {},
-            v_box_parts(false), half, generator<VBoxFoldParams>(&add_vertical_translation)};
+    return {MechanismKind::vertical_translation,
+            "vertical_translation",
+            "VerticalTranslation",
+            "Vertical translation",
+            "VBoxFoldParams",
+            "Y",
+            true,
+            v_box_fields("Height h of the walls at the design state", "α "),
+            {},
+            v_box_parts(false),
+            half,
+            generator<VBoxFoldParams>(&add_vertical_translation),
+            {{"back", 0.0}}};
 }
 
 CatalogueEntry floating_layer()
 {
     using P = FloatingLayerParams;
-    return {MechanismKind::floating_layer, "floating_layer", "FloatingLayer", "Floating layer",
-            "FloatingLayerParams", "F", false,
-            with(placement<P>("the layer"),
-                 {field<P>(&P::height, "height", "Height", FieldUnit::length, 25.0, 0, largest,
-                           HostBound::none, "> 0 and <= 2000 mm",
-                           "Height of the platform over the host"),
-                  field<P>(&P::support, "support", "Support", FieldUnit::length, 20.0, 0, largest,
-                           HostBound::ground_depth, "> 0 mm and < the host's depth",
-                           "Distance of each support from the hinge"),
-                  field<P>(&P::overhang, "overhang", "Overhang", FieldUnit::length, 15.0, 0,
-                           largest, HostBound::none, ">= 0 and <= 2000 mm",
-                           "Platform beyond each support")}),
-            {"top", "side_ground", "side_backdrop"}, // the platform and both supports
-            box_parts("support", "platform"),
-            P{}, generator<P>(&add_floating_layer)};
+    return {
+        MechanismKind::floating_layer,
+        "floating_layer",
+        "FloatingLayer",
+        "Floating layer",
+        "FloatingLayerParams",
+        "F",
+        false,
+        with(placement<P>("the layer"),
+             {field<P>(&P::height, "height", "Height", FieldUnit::length, 25.0, 0, largest,
+                       HostBound::none, "> 0 and <= 2000 mm",
+                       "Height of the platform over the host"),
+              field<P>(&P::support, "support", "Support", FieldUnit::length, 20.0, 0, largest,
+                       HostBound::ground_depth, "> 0 mm and < the host's depth",
+                       "Distance of each support from the hinge"),
+              field<P>(&P::overhang, "overhang", "Overhang", FieldUnit::length, 15.0, 0, largest,
+                       HostBound::none, ">= 0 and <= 2000 mm", "Platform beyond each support")}),
+        {"top", "side_ground", "side_backdrop"}, // the platform and both supports
+        box_parts("support", "platform"),
+        P{},
+        generator<P>(&add_floating_layer)};
 }
 
 } // namespace
@@ -299,10 +366,15 @@ const ParameterField* CatalogueEntry::field(const std::string& field_name) const
 
 const std::vector<CatalogueEntry>& mechanism_catalogue()
 {
-    static const std::vector<CatalogueEntry> catalogue{
-        tent_fold(),    step_fold(),    v_fold(),
-        box_fold(),     v_box_fold(),   rotation_arm(),
-        horizontal_translation(), vertical_translation(), floating_layer()};
+    static const std::vector<CatalogueEntry> catalogue{tent_fold(),
+                                                       step_fold(),
+                                                       v_fold(),
+                                                       box_fold(),
+                                                       v_box_fold(),
+                                                       rotation_arm(),
+                                                       horizontal_translation(),
+                                                       vertical_translation(),
+                                                       floating_layer()};
     return catalogue;
 }
 

@@ -134,7 +134,8 @@ bool Patch::contains(const Vec3& x, double tol) const
 
 std::string patch_subject(const Patch& patch)
 {
-    return "patch " + std::to_string(patch.id) + (patch.name.empty() ? "" : " (" + patch.name + ")");
+    return "patch " + std::to_string(patch.id) +
+           (patch.name.empty() ? "" : " (" + patch.name + ")");
 }
 
 } // namespace popup

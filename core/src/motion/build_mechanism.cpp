@@ -85,7 +85,8 @@ Result<std::vector<MechanismParts>> build_mechanism(Scaffold& scaffold, const Ba
             break;
         const BasePatchPair wings = out.value.back().offered.at(0);
         const StepFoldParams s = diagonal_step(m);
-        const FittedMechanism step = row_of(MechanismKind::step_fold, s, name + "_step", wings.name);
+        const FittedMechanism step =
+            row_of(MechanismKind::step_fold, s, name + "_step", wings.name);
         take(add_step_fold(scaffold, wings, s, step.name), step);
         break;
     }

@@ -3,8 +3,8 @@
 #include <vector>
 
 #include "motion_mechanism.hpp"
-#include "popup/mechanisms/mechanism.hpp"
 #include "popup/mechanisms/designed_card.hpp"
+#include "popup/mechanisms/mechanism.hpp"
 
 namespace popup::motion {
 

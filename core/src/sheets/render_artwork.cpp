@@ -308,7 +308,8 @@ Result<PatchArtwork> render_one(const ModelMesh& mesh, const Appearance& look, c
     if (!std::isfinite(deviation) || outline.size() < 3 || !(patch.area() > 0.0) ||
         !lo.allFinite() || !hi.allFinite()) {
         r.fail(DiagnosticCode::degenerate_patch,
-               patch_subject(given) + ": its outline encloses no area, there is nothing to print on",
+               patch_subject(given) +
+                   ": its outline encloses no area, there is nothing to print on",
                about_patches({given.id}));
         return r;
     }

@@ -378,8 +378,8 @@ void judge_intersection_free(const Checker& checker, const FoldSweep& sweep,
         const Patch& b = s.patches[key.second];
         report.crossings.push_back({a.id, b.id, f.angle, f.depth});
         add_error(report, DiagnosticCode::intersection,
-                  patch_subject(a) + " passes through " + patch_subject(b) + " from " + deg(f.angle) +
-                      " (deepest " + millimetres(f.depth) + ")",
+                  patch_subject(a) + " passes through " + patch_subject(b) + " from " +
+                      deg(f.angle) + " (deepest " + millimetres(f.depth) + ")",
                   about_patches({a.id, b.id}, f.angle * 180.0 / M_PI));
     }
     report.intersection_free = findings.empty() && !sweep.states.empty();

@@ -382,8 +382,8 @@ TEST(FitDesign, LowAnnexesOnTheSidesAreStepFolds)
         EXPECT_ALONG(q.at("width"), 50, f);
         // Which end of the box is y = 0 is the model's skew: the annex starts 20 from one end (and
         // ends 30 from the other).
-        const double from_end =
-            std::min(q.at("offset"), box->parameter_values().at("width") - q.at("offset") - q.at("width"));
+        const double from_end = std::min(q.at("offset"), box->parameter_values().at("width") -
+                                                             q.at("offset") - q.at("width"));
         EXPECT_ALONG(from_end, 20, f);
     }
     EXPECT_EQ(sides, 3);
@@ -523,8 +523,10 @@ TEST(FitDesign, LInPlanIsTwoBoxesOnTheWingsBackWallAndAStep)
         EXPECT_NEAR(wing->parameter_values().at("width"), 40 * s, tol);
         EXPECT_NEAR(arm->parameter_values().at("width"), 20 * s, tol);
         // Side by side along the fold: the arm at one end of the L's 60, the wing beyond it.
-        const double arm_end = arm->parameter_values().at("offset") + arm->parameter_values().at("width");
-        const double wing_end = wing->parameter_values().at("offset") + wing->parameter_values().at("width");
+        const double arm_end =
+            arm->parameter_values().at("offset") + arm->parameter_values().at("width");
+        const double wing_end =
+            wing->parameter_values().at("offset") + wing->parameter_values().at("width");
         EXPECT_NEAR(std::min(std::abs(arm_end - wing->parameter_values().at("offset")),
                              std::abs(wing_end - arm->parameter_values().at("offset"))),
                     0.0, tol);

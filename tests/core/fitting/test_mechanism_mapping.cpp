@@ -50,7 +50,8 @@ TEST(FitMechanismMapping, AVFoldShapedPrismBecomesATentBecauseItsWingsCoverHalfT
     EXPECT_NEAR(mapped.coverage_error, 0.49258, 1e-5);
     EXPECT_NEAR(mapped.coverage_error, 1.0 - slopes / total, 1e-12);
 
-    const MechanismPlan v = plan_mechanism(MechanismKind::v_fold, spine, one_prism_on_the_card(spine).hosts[0]);
+    const MechanismPlan v =
+        plan_mechanism(MechanismKind::v_fold, spine, one_prism_on_the_card(spine).hosts[0]);
     EXPECT_NEAR(v.coverage_error(), 0.74629, 1e-5);
     // Its spine runs from O over the prism's far end: √(40² + 30²) = 50 mm at atan(30/40).
     EXPECT_NEAR(v.parameter_values().at("spine"), 50.0, 1e-12);

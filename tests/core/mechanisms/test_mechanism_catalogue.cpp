@@ -97,7 +97,8 @@ TEST(MechanismCatalogue, FieldsReadAndWriteTheMemberTheyName)
     EXPECT_EQ(box.as<BoxFoldParams>().panel_pairs, 3);
     EXPECT_FALSE(box.as<BoxFoldParams>().front);
     EXPECT_EQ(box.value("panel_pairs"), 3.0);
-    EXPECT_EQ(box.parameter_values().size(), catalogue_entry(MechanismKind::box_fold).fields.size());
+    EXPECT_EQ(box.parameter_values().size(),
+              catalogue_entry(MechanismKind::box_fold).fields.size());
     EXPECT_THROW(box.value("spine"), std::out_of_range);
     // v-fold: no width; its extent along the hinge is the spine's run, spine·cos(spine angle).
     DesignedMechanism v = DesignedMechanism::of_kind(MechanismKind::v_fold, "V1");
@@ -111,6 +112,7 @@ TEST(MechanismCatalogue, AVerticalTranslationIsTheVBoxHalfWhateverBackSays)
 {
     const CatalogueEntry& entry = catalogue_entry(MechanismKind::vertical_translation);
     EXPECT_EQ(entry.field("back"), nullptr);
+    EXPECT_EQ(entry.fixed, (std::vector<std::pair<std::string, double>>{{"back", 0.0}}));
     EXPECT_FALSE(std::get<VBoxFoldParams>(entry.defaults).back);
     EXPECT_EQ(entry.parts.size(), 4u); // FL, FR, TG, TB: no back walls
 }

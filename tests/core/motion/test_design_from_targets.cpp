@@ -136,7 +136,8 @@ TEST(DesignFromTargets, TheSameSeedGivesTheSameDesign)
     ASSERT_EQ(a.value.mechanisms.size(), b.value.mechanisms.size());
     for (std::size_t i = 0; i < a.value.mechanisms.size(); ++i) {
         EXPECT_EQ(a.value.mechanisms[i].name, b.value.mechanisms[i].name);
-        EXPECT_EQ(a.value.mechanisms[i].parameter_values(), b.value.mechanisms[i].parameter_values());
+        EXPECT_EQ(a.value.mechanisms[i].parameter_values(),
+                  b.value.mechanisms[i].parameter_values());
     }
     EXPECT_EQ(a.value.cost, b.value.cost);
     EXPECT_TRUE(a.value.valid);

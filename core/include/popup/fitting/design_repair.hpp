@@ -4,8 +4,8 @@
 #include <vector>
 
 #include "popup/fitting/mechanism_mapping.hpp"
-#include "popup/model/card.hpp"
 #include "popup/mechanisms/designed_card.hpp"
+#include "popup/model/card.hpp"
 #include "popup/model/scaffold.hpp"
 #include "popup/simulation/check_validity.hpp"
 

@@ -3,8 +3,8 @@
 #include <vector>
 
 #include "popup/input/model_mesh.hpp"
-#include "popup/model/cancel_flag.hpp"
 #include "popup/mechanisms/designed_card.hpp"
+#include "popup/model/cancel_flag.hpp"
 #include "popup/model/scaffold.hpp"
 #include "popup/sheets/sheet_layout.hpp"
 

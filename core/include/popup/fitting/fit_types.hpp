@@ -7,8 +7,8 @@
 #include <utility>
 #include <vector>
 
-#include "popup/model/card.hpp"
 #include "popup/mechanisms/designed_card.hpp"
+#include "popup/model/card.hpp"
 #include "popup/model/result.hpp"
 #include "popup/model/scaffold.hpp"
 #include "popup/sheets/sheet_layout.hpp"

@@ -89,6 +89,9 @@ struct CatalogueEntry {
     std::vector<PartTitle> parts;
     MechanismParams defaults; ///< the params struct as a C++ caller gets it (its initialisers)
     MechanismGenerator generate;
+    /// Params struct members the generator fixes, with their only value: a design may state them
+    /// (a vertical translation's `back` is 0), never with another value.
+    std::vector<std::pair<std::string, double>> fixed = {};
 
     const ParameterField* field(const std::string& field_name) const;
 };
