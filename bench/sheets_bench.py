@@ -21,6 +21,7 @@ sys.path[:0] = [os.path.join(BUILD, "python"), os.path.join(REPO, "Workbench")]
 from popupwb.core import popupcore  # noqa: E402
 from popupwb.sheets.dxf_writer import write_dxf  # noqa: E402
 from popupwb.sheets.export import layout  # noqa: E402
+from popupwb.sheets.sheet_set import points  # noqa: E402
 from popupwb.sheets.svg_writer import write_svg  # noqa: E402
 
 DESIGN = os.path.join(REPO, "tests", "data", "many_pieces.json")
@@ -44,12 +45,13 @@ def loop_area(loop):
 
 def sheets_line(sheet_set):
     """Sheets against the shelf packer and against the area bound no packer can beat."""
-    paper, margin = sheet_set["paper"], sheet_set["options"]["margin"]
-    printable = (paper["width"] - 2 * margin) * (paper["height"] - 2 * margin)
-    area = sum(loop_area(r["outer"]) for p in sheet_set["pieces"] for r in p["cut"])
-    sheets, shelf = len(sheet_set["sheets"]), sheet_set["shelf_sheet_count"]
+    options = sheet_set.options
+    margin = options.margin
+    printable = (options.paper_width - 2 * margin) * (options.paper_height - 2 * margin)
+    area = sum(loop_area(points(r.outer)) for p in sheet_set.pieces for r in p.cut)
+    sheets, shelf = sheet_set.sheet_count, sheet_set.shelf_sheet_count
     return (
-        f"{paper['name']}: {sheets} true-shape vs {shelf} shelf packer = {sheets / shelf:.2f}x "
+        f"{options.paper}: {sheets} true-shape vs {shelf} shelf packer = {sheets / shelf:.2f}x "
         f"(goal <= 0.8x: {'met' if sheets <= 0.8 * shelf else 'MISSED'}); the pieces' area "
         f"fills {area / printable:.2f} sheets"
     )
@@ -62,7 +64,7 @@ def main():
         dxf_ms, _ = median_ms(lambda: write_dxf(sheet_set, os.path.join(out, "sheets.dxf")))
         svg_ms, _ = median_ms(lambda: write_svg(sheet_set, os.path.join(out, "sheets.svg")))
     total = layout_ms + dxf_ms + svg_ms
-    print(f"{len(sheet_set['pieces'])} pieces, {len(scaffold.patches)} patches (A3)")
+    print(f"{len(sheet_set.pieces)} pieces, {len(scaffold.patches)} patches (A3)")
     print(f"layout (unfold, tabs, labels, nest, round trip): {layout_ms:7.1f} ms")
     print(f"DXF: {dxf_ms:7.1f} ms   SVG: {svg_ms:7.1f} ms")
     print(f"total {total:.0f} ms (goal <= 1000 ms): {'met' if total <= 1000 else 'MISSED'}")

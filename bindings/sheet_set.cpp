@@ -1,6 +1,7 @@
-// The cutting-sheet layout as bound types: SheetSet and its pieces, lines, tabs, glue areas and
-// labels, read-only, loops as (n, 2) arrays in mm. to_json() gives the file format
-// (docs/SHEET_FORMAT.md) for the writers.
+// The cutting-sheet layout as bound types: SheetSet and its pieces, lines, tabs, glue areas,
+// labels and assembly steps, read-only, loops as (n, 2) arrays in mm; every writer takes it.
+// to_json() gives the file format (docs/SHEET_FORMAT.md) for sheets.json and a CuttingSheet's
+// stored layout, sheet_set_from_json reads it back.
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -48,8 +49,13 @@ void bind_sheet_set(py::module_& m)
         .def_property_readonly("outer", [](const FlatPatch& p) { return loop2_array(p.outer); })
         .def_property_readonly("holes", [](const FlatPatch& p) { return loops_list(p.holes); })
         .def_property_readonly(
-            "to_sheet", [](const FlatPatch& p) { return Eigen::Matrix<double, 2, 3>(p.to_sheet); },
-            "2 x 3: the patch's own frame (u, v) onto the sheet, sheet = A (u, v) + t")
+            "to_sheet",
+            [](const FlatPatch& p) {
+                return p.has_to_sheet() ? py::cast(Eigen::Matrix<double, 2, 3>(p.to_sheet))
+                                        : py::none();
+            },
+            "2 x 3: the patch's own frame (u, v) onto the sheet, sheet = A (u, v) + t; None in a "
+            "sheet set written before it existed")
         .def("normal_side_up", &FlatPatch::normal_side_up,
              "The patch's normal side faces up (is printed); else its back side does.");
     py::class_<Region>(m, "Region", "A closed outline with holes")
@@ -99,6 +105,15 @@ void bind_sheet_set(py::module_& m)
         .def_readonly("tabs", &SheetPiece::tabs)
         .def_readonly("glue", &SheetPiece::glue)
         .def_readonly("labels", &SheetPiece::labels);
+    py::class_<AssemblyJoin>(m, "AssemblyJoin", "A tab glued onto its area, in a step")
+        .def_readonly("code", &AssemblyJoin::code)
+        .def_readonly("tab_piece", &AssemblyJoin::tab_piece, "index into SheetSet.pieces")
+        .def_readonly("target_piece", &AssemblyJoin::target_piece, "index into SheetSet.pieces")
+        .def_readonly("front", &AssemblyJoin::front, "glued to the target's printed side");
+    py::class_<AssemblyStep>(m, "AssemblyStep", "One piece glued on, after the steps before")
+        .def_readonly("piece", &AssemblyStep::piece, "index into SheetSet.pieces")
+        .def_readonly("joins", &AssemblyStep::joins)
+        .def_readonly("text", &AssemblyStep::text);
     py::class_<RoundTrip>(m, "RoundTrip")
         .def_readonly("max_error", &RoundTrip::max_error)
         .def_readonly("tolerance", &RoundTrip::tolerance)
@@ -110,11 +125,19 @@ void bind_sheet_set(py::module_& m)
         .def_readonly("paper_thickness", &SheetSet::paper_thickness)
         .def_readonly("sheet_count", &SheetSet::sheet_count)
         .def_readonly("shelf_sheet_count", &SheetSet::shelf_sheet_count)
-        .def_readonly("pieces", &SheetSet::pieces)
+        .def_readonly("pieces", &SheetSet::pieces, "the card first; a list made at each access")
+        .def_readonly("assembly", &SheetSet::assembly)
         .def_readonly("cut_length", &SheetSet::cut_length)
         .def_readonly("stack_height", &SheetSet::stack_height)
         .def_readonly("round_trip", &SheetSet::round_trip)
         .def_readonly("diagnostics", &SheetSet::diagnostics)
         .def("to_json", &sheet_set_to_json, py::call_guard<py::gil_scoped_release>(),
-             "The sheet set as the JSON text the files are written from (docs/SHEET_FORMAT.md).");
+             "The sheet set as the JSON text of sheets.json and of a CuttingSheet's stored layout "
+             "(docs/SHEET_FORMAT.md).");
+    m.def(
+        "sheet_set_from_json",
+        [](const std::string& text) { return bindings::unwrap(sheet_set_from_json(text)); },
+        py::arg("text"), py::call_guard<py::gil_scoped_release>(),
+        "The SheetSet a JSON sheet set holds (to_json()'s text, a sheets.json); DesignError (a "
+        "ValueError) naming the key path of a missing or malformed field.");
 }

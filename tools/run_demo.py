@@ -425,10 +425,13 @@ def make_sheets(build, card_fcstd, out, env):
     if proc.returncode != 0:
         raise DemoError(f"(f) sheets: exit {proc.returncode}: {proc.stderr.strip()}")
     report = json.loads(proc.stdout)
-    with open(os.path.join(folder, "sheets.json")) as f:
-        sheet_set = json.load(f)
     sys.path.insert(0, os.path.join(REPO, "Workbench"))
+    sys.path.insert(0, os.path.join(build, "python"))  # this build's popupcore
+    from popupwb.core import popupcore
     from popupwb.sheets.sheet_png import render_sheet_png
+
+    with open(os.path.join(folder, "sheets.json")) as f:
+        sheet_set = popupcore.sheet_set_from_json(f.read())
 
     png = render_sheet_png(sheet_set, 0, os.path.join(folder, "sheet_1.png"), dpi=150)
     files = [report["files"][k] for k in ("dxf", "pdf", "instructions", "report", "sheet_set")]

@@ -97,7 +97,7 @@ def normal_side_up(flat):
 def render_all(model, scaffold, sheet_set):
     """Artwork for every patch, each rendered from the side its sheet prints."""
     artwork = render_sheet_artwork(model, scaffold, sheet_set, pixels_per_mm=PIXELS_PER_MM)
-    flats = flat_patches(sheet_set)
+    flats = flat_patches(json.loads(sheet_set.to_json()))
     assert sorted(artwork) == sorted(flats)
     for patch_id, art in artwork.items():
         assert art.back_side == (not normal_side_up(flats[patch_id][1]))
@@ -128,13 +128,15 @@ def path_points(d):
 
 @pytest.fixture(scope="module", params=["front", "back"], ids=["card-inside", "card-outside"])
 def written(request, model, scaffold, tmp_path_factory):
-    """The box card laid out on A3 with P1 printed on the given side, its artwork, and the files."""
+    """The box card laid out on A3 with P1 printed on the given side (as sheets.json spells it),
+    its artwork, and the files."""
     sheet_set = layout(scaffold, paper="A3", printed_sides={"P1": request.param})
     artwork = render_all(model, scaffold, sheet_set)
     out = tmp_path_factory.mktemp("artwork_" + request.param)
     paths = export_sheets(sheet_set, str(out), artwork=artwork)
     pdf = write_pdf(sheet_set, str(out / "plain.pdf"), artwork=artwork, compress=False)
-    return request.param, sheet_set, artwork, paths, pdf
+    with open(paths["sheet_set"]) as f:
+        return request.param, json.load(f), artwork, paths, pdf
 
 
 def visible(artwork):
@@ -316,6 +318,22 @@ def test_artwork_for_a_missing_patch_or_the_hidden_side_is_refused(model, scaffo
     hidden = popupcore.render_artwork(model, ground, pixels_per_mm=1.0, back_side=True)
     with pytest.raises(ValueError, match="shows its back side, but P1 has its normal side up"):
         write_pdf(sheet_set, str(tmp_path / "x.pdf"), artwork={ground.id: hidden})
+
+
+def test_a_layout_stored_before_patch_frames_existed_takes_no_artwork(model, scaffold, tmp_path):
+    data = json.loads(layout(scaffold, paper="A3").to_json())
+    for piece in data["pieces"]:
+        for patch in piece["patches"]:
+            del patch["to_sheet"]
+    older = popupcore.sheet_set_from_json(json.dumps(data))
+    with pytest.raises(ValueError, match=r"gives no to_sheet for it \(written by an older PopUp\)"):
+        render_sheet_artwork(model, scaffold, older, pixels_per_mm=1.0)
+    ground = scaffold.patches[scaffold.ground]
+    art = popupcore.render_artwork(model, ground, pixels_per_mm=1.0)
+    with pytest.raises(
+        ValueError, match=rf"artwork for patch {ground.id} \({ground.name}\): the sheet"
+    ):
+        write_svg(older, str(tmp_path / "x.svg"), artwork={ground.id: art})
 
 
 def test_render_artwork_binding(model, scaffold):

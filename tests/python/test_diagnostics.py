@@ -112,6 +112,44 @@ def test_the_layout_crosses_the_binding_as_bound_types():
         assert d.to_dict() in data["diagnostics"]
 
 
+def test_a_sheet_set_reads_back_from_its_json():
+    """What a CuttingSheet stores (SheetSet.to_json()) comes back as the same bound SheetSet;
+    a damaged text is a DesignError naming the key path."""
+    scaffold = popupcore.load_scaffold(
+        os.path.join(SOURCE_DIR, "tests", "data", "mechanisms", "box.json")
+    )
+    options = popupcore.SheetOptions()
+    options.paper = "A3"
+    sheets = popupcore.layout_sheets(scaffold, options)
+    text = sheets.to_json()
+    again = popupcore.sheet_set_from_json(text)
+    assert again.to_json() == text
+    assert [p.id for p in again.pieces] == [p.id for p in sheets.pieces]
+    assert (again.cut_length, again.sheet_count) == (sheets.cut_length, sheets.sheet_count)
+    ids = [p.id for p in again.pieces]
+    data = json.loads(text)
+    for step, written in zip(again.assembly, data["assembly"]):  # pieces by index, not id
+        assert ids[step.piece] == written["piece"] and step.text == written["text"]
+        assert [(j.code, ids[j.tab_piece], ids[j.target_piece]) for j in step.joins] == [
+            (j["code"], j["tab_piece"], j["target_piece"]) for j in written["glue"]
+        ]
+    # A layout stored before flat patches had frames reads with none.
+    for piece in data["pieces"]:
+        for patch in piece["patches"]:
+            del patch["to_sheet"]
+    older = popupcore.sheet_set_from_json(json.dumps(data))
+    assert all(p.to_sheet is None for piece in older.pieces for p in piece.patches)
+    del data["pieces"][1]["labels"][0]["position"]
+    with pytest.raises(
+        popupcore.DesignError, match=r"^sheet set: pieces\[1\]\.labels\[0\]\.position missing$"
+    ) as error:
+        popupcore.sheet_set_from_json(json.dumps(data))
+    assert error.value.diagnostics[0]["code"] == "bad_field"
+    assert error.value.diagnostics[0]["parameter"] == "pieces[1].labels[0].position"
+    with pytest.raises(popupcore.DesignError, match="sheet set: not valid JSON"):
+        popupcore.sheet_set_from_json("{")
+
+
 def shoelace(loop):
     return 0.5 * sum(
         loop[i][0] * loop[(i + 1) % len(loop)][1] - loop[(i + 1) % len(loop)][0] * loop[i][1]

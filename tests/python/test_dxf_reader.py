@@ -3,6 +3,7 @@ back exactly; what a maker's CAD program may write instead (arcs, blocks, loose 
 alignments, lower-case layers, inches) is read as the same drawing; everything it cannot read is
 one error naming the file, the layer and the entity."""
 
+import json
 import math
 import os
 import re
@@ -21,7 +22,6 @@ from popupwb.sheets.dxf_reader import (
 )
 from popupwb.sheets.dxf_writer import SHEET_GAP, write_dxf
 from popupwb.sheets.export import export_sheets, layout
-from popupwb.sheets.sheet_options import core_options
 
 SOURCE_DIR = os.environ["POPUP_SOURCE_DIR"]
 DATA = os.path.join(SOURCE_DIR, "tests", "data")
@@ -33,12 +33,14 @@ EXACT = 1e-9  # mm
 
 @pytest.fixture(scope="module", params=ROUND_TRIP_DESIGNS, ids=lambda name: name.split("/")[-1])
 def written(request, tmp_path_factory):
-    """(sheet set dict, the core's SheetSet, sheets.dxf path) of a design laid out on A3."""
+    """(the layout as sheets.json spells it, the core's SheetSet, sheets.dxf path) of a design
+    laid out on A3."""
     scaffold = popupcore.load_scaffold(os.path.join(DATA, request.param))
-    sheet_set = layout(scaffold, paper="A3", kerf=0.15)
-    core_set = popupcore.layout_sheets(scaffold, core_options(paper="A3", kerf=0.15))
+    core_set = layout(scaffold, paper="A3", kerf=0.15)
     out = tmp_path_factory.mktemp("dxf_reader")
-    return sheet_set, core_set, export_sheets(sheet_set, str(out))["dxf"]
+    paths = export_sheets(core_set, str(out))
+    with open(paths["sheet_set"]) as f:
+        return json.load(f), core_set, paths["dxf"]
 
 
 def close_points(a, b, tolerance=EXACT):
@@ -522,5 +524,5 @@ def test_a_drawing_written_per_sheet_reads_at_the_origin(tmp_path):
     scaffold = popupcore.load_scaffold(os.path.join(DATA, "mechanisms", "tent.json"))
     sheet_set = layout(scaffold, paper="A3")
     path = write_dxf(sheet_set, str(tmp_path / "one.dxf"))
-    cut, *_ = written_entities(sheet_set)
+    cut, *_ = written_entities(json.loads(sheet_set.to_json()))
     assert all(close_points(a, b) for a, b in zip(read_dxf(path).cut, cut))

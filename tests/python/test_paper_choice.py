@@ -5,6 +5,8 @@ Tabloid 259.4 x 411.8 mm; by area Letter < A4 < Tabloid < A3. Every expected pap
 from those numbers.
 """
 
+from types import SimpleNamespace
+
 import pytest
 
 from popupwb.sheets.paper_choice import (
@@ -72,7 +74,9 @@ def test_pieces_no_single_preset_holds_together():
 def test_piece_sizes_are_the_bounding_boxes_of_the_largest_cut_region():
     square = [[10.0, 20.0], [40.0, 20.0], [40.0, 70.0], [10.0, 70.0]]
     speck = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0]]
-    sheet_set = {"pieces": [{"id": "P1", "cut": [{"outer": speck}, {"outer": square}]}]}
+    # The attributes piece_sizes reads of a popupcore.SheetSet, its pieces and their regions.
+    cut = [SimpleNamespace(outer=speck), SimpleNamespace(outer=square)]
+    sheet_set = SimpleNamespace(pieces=[SimpleNamespace(id="P1", cut=cut)])
     assert piece_sizes(sheet_set) == [PieceSize("P1", 30.0, 50.0)]
 
 

@@ -28,7 +28,9 @@ def name_of(path):
 def written(request, tmp_path_factory):
     sheet_set = layout(popupcore.load_scaffold(request.param), paper="A3")
     out = str(tmp_path_factory.mktemp(name_of(request.param)))
-    return sheet_set, export_sheets(sheet_set, out)
+    paths = export_sheets(sheet_set, out)
+    with open(paths["sheet_set"]) as f:  # the layout as sheets.json spells it, for the checks
+        return json.load(f), paths
 
 
 def test_there_is_a_design_per_mechanism_type():

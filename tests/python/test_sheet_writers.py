@@ -1,5 +1,6 @@
-"""Cutting-sheet writers (popupwb.sheets) on the hand-made sheet set tests/data/sheet_set_sample.json:
-numbers read back from the DXF, SVG, PDF and PNG files, and the DXF through LibreCAD. No FreeCAD."""
+"""Cutting-sheet writers (popupwb.sheets) on the hand-made sheet set tests/data/sheet_set_sample.json,
+read through popupcore.sheet_set_from_json: numbers read back from the DXF, SVG, PDF and PNG files,
+and the DXF through LibreCAD. No FreeCAD."""
 
 import copy
 import json
@@ -15,12 +16,13 @@ import ezdxf
 import pytest
 
 from conftest import TIME_SCALE
-from popupwb.sheets.sheet_set import read_sheet_set
+from popupwb.core import popupcore
 from popupwb.sheets.dxf_checks import check_dxf, convert_with_librecad, librecad_available
 from popupwb.sheets.dxf_writer import SHEET_GAP, write_dxf, write_dxf_per_sheet
 from popupwb.sheets.instructions_pdf import write_instructions
 from popupwb.sheets.layer_style import SheetStyle
 from popupwb.sheets.pdf_writer import write_pdf
+from popupwb.sheets.sheet_options import core_options
 from popupwb.sheets.sheet_png import png_size, render_sheet_png
 from popupwb.sheets.svg_writer import write_svg
 
@@ -32,8 +34,15 @@ INKSCAPE = "{http://www.inkscape.org/namespaces/inkscape}"
 
 @pytest.fixture(scope="module")
 def sheet_set(data_dir):
+    """The fixture as its JSON spells it, for the expected numbers (bound() reads it into the
+    writers' input)."""
     with open(os.path.join(data_dir, "sheet_set_sample.json")) as file:
         return json.load(file)
+
+
+def bound(sheet_set):
+    """The sheet set the writers take, read from the JSON object `sheet_set`."""
+    return popupcore.sheet_set_from_json(json.dumps(sheet_set))
 
 
 @pytest.fixture(scope="module")
@@ -43,7 +52,7 @@ def out_dir(tmp_path_factory):
 
 @pytest.fixture(scope="module")
 def dxf_path(sheet_set, out_dir):
-    return write_dxf(sheet_set, str(out_dir / "sheets.dxf"))
+    return write_dxf(bound(sheet_set), str(out_dir / "sheets.dxf"))
 
 
 def signed_area(loop):
@@ -105,15 +114,15 @@ def test_reader_names_the_missing_key(sheet_set):
     broken = copy.deepcopy(sheet_set)
     del broken["pieces"][2]["cut"]
     with pytest.raises(ValueError, match=r"^sheet set: pieces\[2\]\.cut missing$"):
-        read_sheet_set(broken)
+        bound(broken)
     broken = copy.deepcopy(sheet_set)
     broken["pieces"][0]["folds"][0]["direction"] = "up"
     with pytest.raises(ValueError, match=r"pieces\[0\]\.folds\[0\]\.direction is 'up'"):
-        write_dxf(broken, os.devnull)
+        write_dxf(bound(broken), os.devnull)
     broken = copy.deepcopy(sheet_set)
     broken["sheets"][1]["pieces"].append("P9")
     with pytest.raises(ValueError, match=r"sheets\[1\]\.pieces\[2\] names unknown piece 'P9'"):
-        read_sheet_set(broken)
+        bound(broken)
 
 
 # DXF
@@ -166,7 +175,7 @@ def test_dxf_layers_header_and_sheet_placement(sheet_set, dxf_path):
 
 
 def test_dxf_per_sheet(sheet_set, out_dir):
-    paths = write_dxf_per_sheet(sheet_set, str(out_dir / "per_sheet.dxf"))
+    paths = write_dxf_per_sheet(bound(sheet_set), str(out_dir / "per_sheet.dxf"))
     assert [os.path.basename(p) for p in paths] == ["per_sheet.dxf", "per_sheet-2.dxf"]
     for index, path in enumerate(paths):
         expected = loops_of(pieces_on(sheet_set, index))
@@ -234,7 +243,7 @@ def _pdf_streams(data):
 
 
 def test_svg_files(sheet_set, out_dir):
-    paths = write_svg(sheet_set, str(out_dir / "sheets.svg"))
+    paths = write_svg(bound(sheet_set), str(out_dir / "sheets.svg"))
     assert [os.path.basename(p) for p in paths] == ["sheets.svg", "sheets-2.svg"]
     width, height = sheet_set["paper"]["width"], sheet_set["paper"]["height"]
     for index, path in enumerate(paths):
@@ -261,10 +270,12 @@ def test_svg_files(sheet_set, out_dir):
         assert (float(first[1]), float(first[2])) == pytest.approx((x, height - y), abs=1e-6)
 
 
-def test_svg_single_sheet_keeps_the_path(sheet_set, tmp_path):
-    one_sheet = copy.deepcopy(sheet_set)
-    one_sheet["sheets"] = one_sheet["sheets"][:1]
-    one_sheet["pieces"] = pieces_on(one_sheet, 0)
+def test_svg_single_sheet_keeps_the_path(data_dir, tmp_path):
+    # The fixture's first sheet alone would leave tabs glued onto pieces it no longer has: a
+    # real one-sheet layout instead.
+    scaffold = popupcore.load_scaffold(os.path.join(data_dir, "mechanisms", "tent.json"))
+    one_sheet = popupcore.layout_sheets(scaffold, core_options(paper="A3"))
+    assert one_sheet.sheet_count == 1
     assert write_svg(one_sheet, str(tmp_path / "card.svg")) == [str(tmp_path / "card.svg")]
     assert os.listdir(tmp_path) == ["card.svg"]
 
@@ -280,7 +291,7 @@ def _media_boxes(data):
 
 
 def test_pdf_pages_are_the_paper(sheet_set, out_dir):
-    path = write_pdf(sheet_set, str(out_dir / "sheets.pdf"))
+    path = write_pdf(bound(sheet_set), str(out_dir / "sheets.pdf"))
     with open(path, "rb") as file:
         data = file.read()
     width, height = sheet_set["paper"]["width"], sheet_set["paper"]["height"]
@@ -292,7 +303,7 @@ def test_pdf_pages_are_the_paper(sheet_set, out_dir):
 
 def test_pdf_registration_marks(sheet_set, tmp_path):
     path = write_pdf(
-        sheet_set, str(tmp_path / "marks.pdf"), registration_marks=True, compress=False
+        bound(sheet_set), str(tmp_path / "marks.pdf"), registration_marks=True, compress=False
     )
     with open(path, "rb") as file:
         data = file.read()
@@ -303,7 +314,7 @@ def test_pdf_registration_marks(sheet_set, tmp_path):
     narrow = copy.deepcopy(sheet_set)
     narrow["options"]["margin"] = 4.0
     with pytest.raises(ValueError, match="margin of at least 6 mm"):
-        write_pdf(narrow, str(tmp_path / "narrow.pdf"), registration_marks=True)
+        write_pdf(bound(narrow), str(tmp_path / "narrow.pdf"), registration_marks=True)
 
 
 def _pdf_text(data):
@@ -314,7 +325,7 @@ def _pdf_text(data):
 
 
 def test_instructions(sheet_set, out_dir):
-    path = write_instructions(sheet_set, str(out_dir / "instructions.pdf"), compress=False)
+    path = write_instructions(bound(sheet_set), str(out_dir / "instructions.pdf"), compress=False)
     with open(path, "rb") as file:
         data = file.read()
     assert len(re.findall(rb"/Type\s*/Page\b(?!s)", data)) >= 1
@@ -334,7 +345,7 @@ def test_instructions(sheet_set, out_dir):
 def test_png_size_and_content(sheet_set, out_dir):
     import matplotlib.image
 
-    path = render_sheet_png(sheet_set, 1, str(out_dir / "sheet-2.png"), dpi=100)
+    path = render_sheet_png(bound(sheet_set), 1, str(out_dir / "sheet-2.png"), dpi=100)
     with open(path, "rb") as file:
         header = file.read(24)
     assert header[:8] == b"\x89PNG\r\n\x1a\n"
@@ -344,4 +355,4 @@ def test_png_size_and_content(sheet_set, out_dir):
     red = (pixels[..., 0] > 0.8) & (pixels[..., 1] < 0.3) & (pixels[..., 2] < 0.3)
     assert red.sum() > 1000  # the cut lines are drawn
     with pytest.raises(ValueError, match="sheet index 2 outside 0..1"):
-        render_sheet_png(sheet_set, 2, str(out_dir / "none.png"))
+        render_sheet_png(bound(sheet_set), 2, str(out_dir / "none.png"))

@@ -1,8 +1,9 @@
 """CuttingSheet: a PopUpCard laid out flat on sheets of paper, to cut, crease and glue.
 
-Recompute lays out the card's current design with the core (sheets.export.layout,
-docs/SHEET_FORMAT.md) and keeps the sheet set in SheetSetJson, so export writes what is shown
-without laying out again. Shape: one sub-compound per sheet, side by side like sheets.dxf (sheet k
+Recompute lays out the card's current design with the core (sheets.export.layout, a
+popupcore.SheetSet) and keeps the sheet set in SheetSetJson (its JSON, docs/SHEET_FORMAT.md), so
+export writes what is shown without laying out again (popupcore.sheet_set_from_json reads it
+back). Shape: one sub-compound per sheet, side by side like sheets.dxf (sheet k
 at x = k * (paper width + 20 mm)), holding each patch as an exact planar face at z = 0, then the
 fold lines and the tab outlines as wires. With MakePages, one TechDraw page per sheet
 (sheets.techdraw_pages).
@@ -23,7 +24,6 @@ property names are stored in .FCStd files: never rename them.
 """
 
 import hashlib
-import json
 
 import FreeCAD
 
@@ -207,9 +207,9 @@ class CuttingSheet(StatelessProxy):
             )
         except ValueError as error:  # DesignError names the option and its range
             raise self._error(obj, property_message(error, obj)) from error
-        errors = [d for d in sheet_set["diagnostics"] if d["severity"] == "error"]
+        errors = [d for d in sheet_set.diagnostics if d.severity == "error"]
         if errors:
-            raise self._error(obj, "; ".join(d["message"] for d in errors))
+            raise self._error(obj, "; ".join(d.message for d in errors))
         self._show(obj, sheet_set, not_valid)
         obj.InputDigest = digest
 
@@ -298,9 +298,9 @@ class CuttingSheet(StatelessProxy):
         from popupwb.sheets.dxf_writer import SHEET_GAP
         from popupwb.sheets.sheet_shapes import flat_sheet
 
-        pitch = sheet_set["paper"]["width"] + SHEET_GAP
+        pitch = sheet_set.options.paper_width + SHEET_GAP
         sheets = []
-        for index in range(len(sheet_set["sheets"])):
+        for index in range(sheet_set.sheet_count):
             sheet = flat_sheet(sheet_set, index)
             sheet.translate(FreeCAD.Vector(index * pitch, 0.0, 0.0))
             sheets.append(sheet)
@@ -308,22 +308,22 @@ class CuttingSheet(StatelessProxy):
         obj.Shape = Part.makeCompound(sheets)
         obj.Placement = placement
 
-        pieces = sheet_set["pieces"]
-        obj.SheetCount = len(sheet_set["sheets"])
-        obj.ShelfSheetCount = sheet_set["shelf_sheet_count"]
+        pieces = sheet_set.pieces
+        obj.SheetCount = sheet_set.sheet_count
+        obj.ShelfSheetCount = sheet_set.shelf_sheet_count
         obj.PieceCount = len(pieces)
-        obj.TabCount = sum(len(piece["tabs"]) for piece in pieces)
-        obj.CutLength = sheet_set["cut_length"]
-        obj.StackHeight = sheet_set["stack_height"]
-        obj.RoundTripError = sheet_set["round_trip"]["max_error"]
-        obj.RoundTripOk = bool(sheet_set["round_trip"]["ok"])
-        diagnostics = [diagnostic_line(d) for d in sheet_set["diagnostics"]]
+        obj.TabCount = sum(len(piece.tabs) for piece in pieces)
+        obj.CutLength = sheet_set.cut_length
+        obj.StackHeight = sheet_set.stack_height
+        obj.RoundTripError = sheet_set.round_trip.max_error
+        obj.RoundTripOk = bool(sheet_set.round_trip.ok)
+        diagnostics = [diagnostic_line(d.to_dict()) for d in sheet_set.diagnostics]
         if not_valid is not None:
             diagnostics.insert(0, f"warning: {not_valid.text()} (laid out because Force is set)")
         obj.Diagnostics = diagnostics
         obj.NotValid = "" if not_valid is None else not_valid.text()
         obj.ValidityFindings = [] if not_valid is None else list(not_valid.findings)
-        obj.SheetSetJson = json.dumps(sheet_set)
+        obj.SheetSetJson = sheet_set.to_json()
         if obj.MakePages:
             techdraw_pages.update_pages(
                 obj, sheet_set, obj.MountainStyle, obj.ValleyStyle, not_valid=not_valid
@@ -398,7 +398,7 @@ def export_cutting_sheet(obj, folder, style=None):
     if not has_layout(obj):
         reason = obj.getStatusString() if "Invalid" in obj.State else "never recomputed"
         raise ValueError(f"{obj.Label}: no layout to export ({reason}); fix it and recompute")
-    sheet_set = json.loads(obj.SheetSetJson)
+    sheet_set = stored_sheet_set(obj)
     artwork = sheet_artwork(obj, sheet_set) if getattr(obj, "PrintArtwork", False) else None
     try:
         return export.export_sheets(
@@ -408,6 +408,19 @@ def export_cutting_sheet(obj, folder, style=None):
         if artwork:
             raise ValueError(f"{obj.Label}: Margin: {error}; or turn PrintArtwork off") from None
         raise
+
+
+def stored_sheet_set(obj):
+    """The layout `obj` keeps (SheetSetJson) as a popupcore.SheetSet; ValueError naming `obj`
+    when the stored text is damaged."""
+    from popupwb.core import popupcore
+
+    try:
+        return popupcore.sheet_set_from_json(obj.SheetSetJson)
+    except ValueError as error:  # DesignError: names the key path
+        raise ValueError(
+            f"{obj.Label}: SheetSetJson: {error}; recompute to lay it out again"
+        ) from None
 
 
 def sheet_artwork(obj, sheet_set):

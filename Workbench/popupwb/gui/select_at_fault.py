@@ -46,7 +46,7 @@ def _faulty_patches(sheet, built):
         sheet_set = export.layout(built.scaffold, **layout_options(sheet))
     except ValueError as error:  # DesignError: its findings name their patches
         return offending_patches({"diagnostics": getattr(error, "diagnostics", [])})
-    errors = [d for d in sheet_set["diagnostics"] if d["severity"] == "error"]
+    errors = [d.to_dict() for d in sheet_set.diagnostics if d.severity == "error"]
     return offending_patches({"diagnostics": errors})
 
 

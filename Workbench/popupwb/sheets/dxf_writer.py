@@ -11,9 +11,9 @@ and the paper thickness (PopUpPaperThickness, mm).
 import ezdxf
 from ezdxf.enums import TextEntityAlignment
 
-from .sheet_set import read_sheet_set, sheet_file_paths
 from .layer_style import SheetStyle
-from .not_valid_stamp import stamp_label
+from .not_valid_stamp import sheet_stamp
+from .sheet_set import loops, paper_size, pieces_by_sheet, points, sheet_file_paths
 
 # All sheets share one file side by side: sheet k's origin is at x = k * (paper width + SHEET_GAP).
 SHEET_GAP = 20.0  # mm
@@ -24,15 +24,14 @@ THICKNESS_PROPERTY = "PopUpPaperThickness"  # mm
 
 
 def write_dxf(sheet_set, path, style=None, not_valid=None):
-    """Writes every sheet of `sheet_set` into one DXF at `path`, side by side; returns `path`.
-    `not_valid` (a not_valid_stamp.NotValid) stamps every sheet."""
-    sheets = read_sheet_set(sheet_set)
+    """Writes every sheet of `sheet_set` (a popupcore.SheetSet) into one DXF at `path`, side by
+    side; returns `path`. `not_valid` (a not_valid_stamp.NotValid) stamps every sheet."""
     style = style or SheetStyle()
-    doc = _new_document(style, sheets)
-    pitch = sheets.width + SHEET_GAP
-    stamp = _stamp(sheets, not_valid)
-    for sheet in sheets.sheets:
-        _draw_sheet(doc.modelspace(), sheet, style, x_offset=sheet.index * pitch, stamp=stamp)
+    doc = _new_document(style, sheet_set)
+    pitch = paper_size(sheet_set)[0] + SHEET_GAP
+    stamp = sheet_stamp(sheet_set, not_valid)
+    for index, pieces in enumerate(pieces_by_sheet(sheet_set)):
+        _draw_sheet(doc.modelspace(), pieces, style, x_offset=index * pitch, stamp=stamp)
     doc.saveas(path)
     return path
 
@@ -40,29 +39,22 @@ def write_dxf(sheet_set, path, style=None, not_valid=None):
 def write_dxf_per_sheet(sheet_set, path, style=None, not_valid=None):
     """Writes one DXF per sheet, each at the origin: `path` for the first sheet, then
     <stem>-2.dxf, <stem>-3.dxf, ...; returns the paths written."""
-    sheets = read_sheet_set(sheet_set)
     style = style or SheetStyle()
-    paths = sheet_file_paths(path, len(sheets.sheets))
-    stamp = _stamp(sheets, not_valid)
-    for sheet, sheet_path in zip(sheets.sheets, paths):
-        doc = _new_document(style, sheets)
-        _draw_sheet(doc.modelspace(), sheet, style, x_offset=0.0, stamp=stamp)
+    paths = sheet_file_paths(path, sheet_set.sheet_count)
+    stamp = sheet_stamp(sheet_set, not_valid)
+    for pieces, sheet_path in zip(pieces_by_sheet(sheet_set), paths):
+        doc = _new_document(style, sheet_set)
+        _draw_sheet(doc.modelspace(), pieces, style, x_offset=0.0, stamp=stamp)
         doc.saveas(sheet_path)
     return paths
 
 
-def _stamp(sheets, not_valid):
-    if not_valid is None:
-        return None
-    return stamp_label(sheets.width, sheets.height, sheets.margin, not_valid)
-
-
-def _new_document(style, sheets):
+def _new_document(style, sheet_set):
     doc = ezdxf.new("R2010", setup=True, units=INSUNITS_MM)
     # What a re-reader needs besides the layers: the kerf the CUT lines were offset by (half on
     # each side), so the nominal outlines can be recovered; CAD programs keep custom properties.
-    doc.header.custom_vars.append(KERF_PROPERTY, repr(sheets.kerf))
-    doc.header.custom_vars.append(THICKNESS_PROPERTY, repr(sheets.paper_thickness))
+    doc.header.custom_vars.append(KERF_PROPERTY, repr(sheet_set.options.kerf))
+    doc.header.custom_vars.append(THICKNESS_PROPERTY, repr(sheet_set.paper_thickness))
     doc.header["$INSUNITS"] = INSUNITS_MM
     doc.header["$MEASUREMENT"] = MEASUREMENT_METRIC
     for layer in style.layers():
@@ -88,13 +80,13 @@ def _define_linetype(doc, layer):
         doc.linetypes.add(layer.linetype, pattern, description=layer.name.lower())
 
 
-def _draw_sheet(modelspace, sheet, style, x_offset, stamp=None):
-    def shifted(points):
-        return [(x + x_offset, y) for x, y in points]
+def _draw_sheet(modelspace, pieces, style, x_offset, stamp=None):
+    def shifted(loop):
+        return [(x + x_offset, y) for x, y in loop]
 
-    for piece in sheet.pieces:
+    for piece in pieces:
         for region in piece.cut:
-            for loop in region.loops():
+            for loop in loops(region):
                 modelspace.add_lwpolyline(
                     shifted(loop), format="xy", close=True, dxfattribs={"layer": style.cut.name}
                 )
@@ -103,7 +95,7 @@ def _draw_sheet(modelspace, sheet, style, x_offset, stamp=None):
             modelspace.add_line(start, end, dxfattribs={"layer": style.fold(fold.direction).name})
         for area in piece.glue:
             modelspace.add_lwpolyline(
-                shifted(area.polygon),
+                shifted(points(area.polygon)),
                 format="xy",
                 close=True,
                 dxfattribs={"layer": style.glue.name},

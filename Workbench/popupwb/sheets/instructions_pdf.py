@@ -12,8 +12,8 @@ from reportlab.lib.styles import getSampleStyleSheet
 from reportlab.lib.units import mm
 from reportlab.platypus import Paragraph, SimpleDocTemplate, Spacer, Table, TableStyle
 
-from .sheet_set import read_sheet_set
 from .layer_style import SheetStyle
+from .sheet_set import paper_size, pieces_by_sheet, side
 
 LEGEND_LINE_LENGTH = 30.0  # mm
 FOLD_MEANING = {
@@ -29,10 +29,10 @@ STAMP_SIZE = 12.0  # pt
 
 
 def write_instructions(sheet_set, path, style=None, compress=True, not_valid=None):
-    """Writes the assembly instructions for `sheet_set` to the PDF `path`; returns `path`.
-    compress=False leaves the page streams readable (tests grep the text). `not_valid` (a
-    not_valid_stamp.NotValid) stamps every page and lists the validity findings first."""
-    sheets = read_sheet_set(sheet_set)
+    """Writes the assembly instructions for `sheet_set` (a popupcore.SheetSet) to the PDF `path`;
+    returns `path`. compress=False leaves the page streams readable (tests grep the text).
+    `not_valid` (a not_valid_stamp.NotValid) stamps every page and lists the validity findings
+    first."""
     style = style or SheetStyle()
     styles = getSampleStyleSheet()
     document = SimpleDocTemplate(
@@ -49,11 +49,11 @@ def write_instructions(sheet_set, path, style=None, compress=True, not_valid=Non
     story = [Paragraph("Pop-up card: cutting and assembly", styles["Title"])]
     if not_valid is not None:
         story += _not_valid_section(not_valid, styles)
-    story += _paper_section(sheets)
-    story += _pieces_section(sheets, styles)
-    story += _assembly_section(sheets, styles)
+    story += _paper_section(sheet_set)
+    story += _pieces_section(sheet_set, styles)
+    story += _assembly_section(sheet_set, styles)
     story += _legend_section(style, styles)
-    story += _diagnostics_section(sheets, styles)
+    story += _diagnostics_section(sheet_set, styles)
     if not_valid is None:
         document.build(story)
     else:
@@ -95,14 +95,15 @@ def _table(rows, column_widths, header=True):
     return table
 
 
-def _paper_section(sheets):
+def _paper_section(sheet_set):
+    width, height = paper_size(sheet_set)
     rows = [
-        ["Paper", f"{sheets.paper_name}, {sheets.width:g} x {sheets.height:g} mm"],
-        ["Paper thickness", f"{sheets.paper_thickness:g} mm"],
-        ["Folded stack height", f"{sheets.stack_height:.2f} mm"],
-        ["Sheets", str(len(sheets.sheets))],
-        ["Pieces", str(len(sheets.pieces()))],
-        ["Total cut length", f"{sheets.cut_length:.0f} mm"],
+        ["Paper", f"{sheet_set.options.paper}, {width:g} x {height:g} mm"],
+        ["Paper thickness", f"{sheet_set.paper_thickness:g} mm"],
+        ["Folded stack height", f"{sheet_set.stack_height:.2f} mm"],
+        ["Sheets", str(sheet_set.sheet_count)],
+        ["Pieces", str(len(sheet_set.pieces))],
+        ["Total cut length", f"{sheet_set.cut_length:.0f} mm"],
     ]
     return [_table(rows, (45, 115), header=False), Spacer(1, 6 * mm)]
 
@@ -111,11 +112,11 @@ def _codes(items):
     return ", ".join(item.code for item in items) or "-"
 
 
-def _pieces_section(sheets, styles):
+def _pieces_section(sheet_set, styles):
     rows = [["Sheet", "Piece", "Tabs", "Glue areas"]]
-    for sheet in sheets.sheets:
-        for piece in sheet.pieces:
-            rows.append([str(sheet.index + 1), piece.id, _codes(piece.tabs), _codes(piece.glue)])
+    for index, pieces in enumerate(pieces_by_sheet(sheet_set)):
+        for piece in pieces:
+            rows.append([str(index + 1), piece.id, _codes(piece.tabs), _codes(piece.glue)])
     return [
         Paragraph("Pieces", styles["Heading2"]),
         Paragraph(
@@ -129,17 +130,26 @@ def _pieces_section(sheets, styles):
     ]
 
 
-def _assembly_section(sheets, styles):
-    stepped = {step.piece for step in sheets.assembly}
-    bases = [piece.id for piece in sheets.pieces() if piece.id not in stepped]
+def _assembly_section(sheet_set, styles):
+    ids = [piece.id for piece in sheet_set.pieces]
+    steps = sheet_set.assembly
+    stepped = {ids[step.piece] for step in steps}
+    on_sheets = [piece.id for pieces in pieces_by_sheet(sheet_set) for piece in pieces]
+    bases = [piece_id for piece_id in on_sheets if piece_id not in stepped]
     body = styles["BodyText"]
     rows = [["Step", "Piece", "Glue", "Instruction"]]
-    for step in sheets.assembly:
+    for number, step in enumerate(steps, start=1):
         joins = "<br/>".join(
-            escape(f"tab {join.code} onto {join.target_piece}, {join.side}") for join in step.glue
+            escape(f"tab {join.code} onto {ids[join.target_piece]}, {side(join.front)}")
+            for join in step.joins
         )
         rows.append(
-            [str(step.step), step.piece, Paragraph(joins, body), Paragraph(escape(step.text), body)]
+            [
+                str(number),
+                ids[step.piece],
+                Paragraph(joins, body),
+                Paragraph(escape(step.text), body),
+            ]
         )
     return [
         Paragraph("Assembly", styles["Heading2"]),
@@ -178,11 +188,12 @@ def _legend_section(style, styles):
     ]
 
 
-def _diagnostics_section(sheets, styles):
+def _diagnostics_section(sheet_set, styles):
     flowables = [Paragraph("Warnings", styles["Heading2"])]
-    if not sheets.diagnostics:
+    diagnostics = sheet_set.diagnostics
+    if not diagnostics:
         return flowables + [Paragraph("None.", styles["BodyText"])]
-    for diagnostic in sheets.diagnostics:
+    for diagnostic in diagnostics:
         text = f"{diagnostic.severity.capitalize()} ({diagnostic.code}): {diagnostic.message}"
         flowables.append(Paragraph(escape(text), styles["Bullet"], bulletText="-"))
     return flowables

@@ -9,7 +9,7 @@ or cut sheet cannot pass for a checked one. No FreeCAD needed.
 from dataclasses import dataclass
 from typing import Tuple
 
-from .sheet_set import Label
+from .sheet_set import paper_size
 
 PREFIX = "NOT VALID: "
 # The validity verdicts (popupcore.ValidityReport.to_dict() keys) and how the stamp names them.
@@ -23,6 +23,17 @@ LARGEST_CAP_HEIGHT = 5.0  # mm, the piece labels' size
 SMALLEST_CAP_HEIGHT = 1.5  # mm, still legible on a laser print
 STAMP_FONT = "Helvetica"  # measures the stamp's width (the PDF's label font)
 CAP_HEIGHT_PER_EM = 0.718  # Helvetica
+
+
+@dataclass(frozen=True)
+class StampLabel:
+    """The stamp as the writers draw a label: the fields of popupcore.SheetLabel."""
+
+    text: str
+    kind: str  # "stamp"
+    position: Tuple[float, float]  # the centre of the cap height, mm
+    height: float  # cap height, mm
+    angle: float  # degrees counter-clockwise
 
 
 @dataclass(frozen=True)
@@ -62,4 +73,13 @@ def stamp_label(width, height, margin, not_valid):
     text_width = stringWidth(text, STAMP_FONT, cap / CAP_HEIGHT_PER_EM)
     if text_width > room:
         cap = max(SMALLEST_CAP_HEIGHT, cap * room / text_width)
-    return Label(text, "stamp", (width / 2.0, height - band / 2.0), cap, 0.0)
+    return StampLabel(text, "stamp", (width / 2.0, height - band / 2.0), cap, 0.0)
+
+
+def sheet_stamp(sheet_set, not_valid):
+    """The stamp on every sheet of the bound `sheet_set` (stamp_label on its paper and margin);
+    None when `not_valid` is None."""
+    if not_valid is None:
+        return None
+    width, height = paper_size(sheet_set)
+    return stamp_label(width, height, sheet_set.options.margin, not_valid)

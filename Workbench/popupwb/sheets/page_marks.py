@@ -12,8 +12,8 @@ in mm: one user unit is then exactly 1 mm on the page. No FreeCAD needed.
 """
 
 from .layer_style import SheetStyle
-from .not_valid_stamp import stamp_label
-from .sheet_set import read_sheet_set
+from .not_valid_stamp import sheet_stamp
+from .sheet_set import paper_size, pieces_by_sheet
 from .svg_writer import sheet_svg_drawing
 
 TECHDRAW_PX_PER_MM = 3.78  # QGIViewSymbol's pxMm
@@ -21,15 +21,15 @@ MARK_LAYERS = ("glue", "label")  # SheetStyle fields the symbol keeps; the view 
 
 
 def marks_svg(sheet_set, index, not_valid=None, style=None):
-    """The SVG text of sheet `index`'s marks: glue areas, labels, and `not_valid`'s stamp."""
+    """The SVG text of sheet `index`'s marks (of the popupcore.SheetSet `sheet_set`): glue areas,
+    labels, and `not_valid`'s stamp."""
     style = style or SheetStyle()
-    sheets = read_sheet_set(sheet_set)
-    stamp = None
-    if not_valid is not None:
-        stamp = stamp_label(sheets.width, sheets.height, sheets.margin, not_valid)
-    drawing = sheet_svg_drawing(sheets, sheets.sheets[index], style, "", stamp)
+    stamp = sheet_stamp(sheet_set, not_valid)
+    pieces = pieces_by_sheet(sheet_set)[index]
+    drawing = sheet_svg_drawing(sheet_set, pieces, style, "", stamp)
     kept = {getattr(style, name).name for name in MARK_LAYERS}
     drawing.elements = [e for e in drawing.elements if getattr(e, "attribs", {}).get("id") in kept]
-    drawing.attribs["width"] = f"{sheets.width * TECHDRAW_PX_PER_MM:.4f}"
-    drawing.attribs["height"] = f"{sheets.height * TECHDRAW_PX_PER_MM:.4f}"
+    width, height = paper_size(sheet_set)
+    drawing.attribs["width"] = f"{width * TECHDRAW_PX_PER_MM:.4f}"
+    drawing.attribs["height"] = f"{height * TECHDRAW_PX_PER_MM:.4f}"
     return drawing.tostring()

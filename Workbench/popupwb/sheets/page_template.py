@@ -42,10 +42,11 @@ class TitleBlock:
         return {name: value for (name, _), value in zip(TITLE_FIELDS, values)}
 
 
-def paper_text(paper):
-    """A sheet set's "paper" as the title block shows it: "A4 210 x 297 mm"."""
-    size = f"{paper['width']:g} x {paper['height']:g} mm"
-    name = paper.get("name") or ""
+def paper_text(name, width, height):
+    """A sheet set's paper (its name, width and height in mm) as the title block shows it:
+    "A4 210 x 297 mm"."""
+    size = f"{width:g} x {height:g} mm"
+    name = name or ""
     custom = re.fullmatch(r"[0-9.]+x[0-9.]+", name)  # the core names a custom paper "WxH"
     return size if not name or custom else f"{name} {size}"
 

@@ -14,6 +14,8 @@ slightly smaller Letter that its printer has no tray for. No FreeCAD needed.
 import os
 from dataclasses import dataclass
 
+from .sheet_set import points
+
 FAMILIES = {"iso": ("A4", "A3"), "us": ("Letter", "Tabloid")}
 # libpaper's names of US paper sizes (papersize(5)); every other name is ISO or metric.
 US_PAPER_NAMES = {"letter", "legal", "executive", "tabloid", "ledger", "11x17", "halfletter"}
@@ -101,14 +103,14 @@ def _loop_area(loop):
 
 
 def piece_sizes(sheet_set):
-    """Bounding box of each piece's largest cut region, the outline the core checks against the
-    paper (core/src/sheets/sheet_layout.cpp)."""
+    """Bounding box of each piece's largest cut region (of the popupcore.SheetSet `sheet_set`),
+    the outline the core checks against the paper (core/src/sheets/sheet_layout.cpp)."""
     sizes = []
-    for piece in sheet_set["pieces"]:
-        outer = max((region["outer"] for region in piece["cut"]), key=_loop_area)
+    for piece in sheet_set.pieces:
+        outer = max((points(region.outer) for region in piece.cut), key=_loop_area)
         xs = [x for x, _ in outer]
         ys = [y for _, y in outer]
-        sizes.append(PieceSize(piece["id"], max(xs) - min(xs), max(ys) - min(ys)))
+        sizes.append(PieceSize(piece.id, max(xs) - min(xs), max(ys) - min(ys)))
     return sizes
 
 
@@ -142,6 +144,6 @@ def layout_on_smallest_paper(scaffold, family=None, **options):
     if "paper" in options:
         raise ValueError("layout_on_smallest_paper chooses the paper: do not pass paper")
     measured = layout(scaffold, paper=MEASURING_PAPER, **options)
-    margin = measured["options"]["margin"]
+    margin = measured.options.margin
     choice = choose_paper(piece_sizes(measured), margin, family or system_paper_family())
     return layout(scaffold, paper=choice.paper.name, **options), choice

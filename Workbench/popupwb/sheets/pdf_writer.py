@@ -15,11 +15,11 @@ from reportlab.pdfgen.canvas import FILL_EVEN_ODD, Canvas
 
 from reportlab.lib.utils import ImageReader
 
-from .sheet_set import read_sheet_set
 from .layer_style import SheetStyle
-from .not_valid_stamp import stamp_label
+from .not_valid_stamp import sheet_stamp
 from .print_artwork import pil_image, place_artwork
 from .registration_marks import MARK_SIZE, check_room_for_marks, mark_squares
+from .sheet_set import baseline_centre, loops, paper_size, pieces_by_sheet, points
 
 FONT = "Helvetica"
 CAP_HEIGHT = 0.718  # of the font size, Helvetica
@@ -35,35 +35,32 @@ def write_pdf(
     not_valid=None,
     artwork=None,
 ):
-    """Writes the sheets of `sheet_set` to the PDF `path`, one page each; returns `path`.
-    compress=False leaves the page streams readable (tests grep them). `not_valid` (a
-    not_valid_stamp.NotValid) stamps every page. `artwork`: {patch id: popupcore.PatchArtwork}
+    """Writes the sheets of `sheet_set` (a popupcore.SheetSet) to the PDF `path`, one page each;
+    returns `path`. compress=False leaves the page streams readable (tests grep them). `not_valid`
+    (a not_valid_stamp.NotValid) stamps every page. `artwork`: {patch id: popupcore.PatchArtwork}
     (print_artwork.py), printed on the patches; registration marks come with it."""
-    sheets = read_sheet_set(sheet_set)
     style = style or SheetStyle()
-    placed = place_artwork(sheets, artwork)
+    placed = place_artwork(sheet_set, artwork)
     registration_marks = registration_marks or bool(artwork)
+    margin = sheet_set.options.margin
     if registration_marks:
-        check_room_for_marks(sheets.margin)
-    canvas = Canvas(
-        path, pagesize=(sheets.width * mm, sheets.height * mm), pageCompression=compress
-    )
-    canvas.setTitle(f"PopUp cutting sheets, {sheets.paper_name}")
+        check_room_for_marks(margin)
+    width, height = paper_size(sheet_set)
+    canvas = Canvas(path, pagesize=(width * mm, height * mm), pageCompression=compress)
+    canvas.setTitle(f"PopUp cutting sheets, {sheet_set.options.paper}")
     canvas.setCreator("PopUp")
-    stamp = None
-    if not_valid is not None:
-        stamp = stamp_label(sheets.width, sheets.height, sheets.margin, not_valid)
-    for sheet in sheets.sheets:
+    stamp = sheet_stamp(sheet_set, not_valid)
+    for index, pieces in enumerate(pieces_by_sheet(sheet_set)):
         canvas.scale(mm, mm)  # from here on, user units are mm with the origin lower left
-        for item in placed.get(sheet.index, ()):
+        for item in placed.get(index, ()):
             _draw_artwork(canvas, item)
-        for piece in sheet.pieces:
+        for piece in pieces:
             _draw_piece(canvas, piece, style)
         if stamp is not None:
             canvas.setFillColorRGB(*style.label.unit_colour())
             _draw_label(canvas, stamp)
         if registration_marks:
-            _draw_registration_marks(canvas, sheets.width, sheets.height, sheets.margin)
+            _draw_registration_marks(canvas, width, height, margin)
         canvas.showPage()
     canvas.save()
     return path
@@ -88,7 +85,7 @@ def _draw_piece(canvas, piece, style):
     _stroke_style(canvas, style.glue)
     canvas.setFillColorRGB(*style.glue_fill_unit())
     for area in piece.glue:
-        canvas.drawPath(_loop_path(canvas, area.polygon), stroke=1, fill=1)
+        canvas.drawPath(_loop_path(canvas, points(area.polygon)), stroke=1, fill=1)
     for fold in piece.folds:
         _stroke_style(canvas, style.fold(fold.direction))
         canvas.line(*fold.start, *fold.end)
@@ -97,13 +94,13 @@ def _draw_piece(canvas, piece, style):
         _draw_label(canvas, label)
     _stroke_style(canvas, style.cut)
     for region in piece.cut:
-        for loop in region.loops():
+        for loop in loops(region):
             canvas.drawPath(_loop_path(canvas, loop), stroke=1, fill=0)
 
 
 def _draw_label(canvas, label):
     canvas.saveState()
-    canvas.translate(*label.baseline_centre())
+    canvas.translate(*baseline_centre(label))
     canvas.rotate(label.angle)
     canvas.setFont(FONT, label.height / CAP_HEIGHT)
     canvas.drawCentredString(0, 0, label.text)
@@ -114,7 +111,7 @@ def _draw_artwork(canvas, item):
     """One patch's image, clipped to its flat outline (holes cut out, even-odd)."""
     canvas.saveState()
     outline = canvas.beginPath()
-    for loop in (item.patch.outer,) + item.patch.holes:
+    for loop in loops(item.patch):
         outline.moveTo(*loop[0])
         for point in loop[1:]:
             outline.lineTo(*point)

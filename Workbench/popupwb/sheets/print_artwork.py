@@ -26,7 +26,7 @@ from typing import Tuple
 
 import numpy
 
-from .sheet_set import FlatPatch, read_sheet_set
+from .sheet_set import pieces_by_sheet
 
 Affine = Tuple[Tuple[float, float, float], Tuple[float, float, float]]
 
@@ -36,7 +36,7 @@ class PlacedArtwork:
     """One patch's image where it goes on its sheet."""
 
     piece: str
-    patch: FlatPatch
+    patch: object  # popupcore.FlatPatch
     rgba: numpy.ndarray  # height x width x 4 uint8
     size_mm: Tuple[float, float]  # width, height
     # Image mm (x right, y up, origin at its lower-left corner) onto the sheet:
@@ -87,7 +87,7 @@ def place(piece_id, patch, image):
             f"{piece_id} has its {_side(not back)} side up on the sheet: render it with "
             f"back_side={not back}"
         )
-    (a, c, tx), (b, d, ty) = patch.to_sheet
+    (a, c, tx), (b, d, ty) = patch.to_sheet.tolist()
     image_to_sheet = (
         (a, c, a * u0 + c * v0 + tx),
         (b, d, b * u0 + d * v0 + ty),
@@ -96,23 +96,24 @@ def place(piece_id, patch, image):
     return PlacedArtwork(piece_id, patch, rgba, (width * step, height * step), image_to_sheet)
 
 
-def place_artwork(sheets, artwork):
-    """{sheet index: [PlacedArtwork, ...]} for `artwork` {patch id: image} on the SheetSet
-    `sheets`, in the order of the pieces and their patches, leaving out images that are
-    transparent all over; ValueError for a patch id the sheets do not have, or as `place`."""
+def place_artwork(sheet_set, artwork):
+    """{sheet index: [PlacedArtwork, ...]} for `artwork` {patch id: image} on the
+    popupcore.SheetSet `sheet_set`, in the order of the pieces and their patches, leaving out
+    images that are transparent all over; ValueError for a patch id the sheets do not have, or
+    as `place`."""
     if not artwork:
         return {}
     remaining = {int(patch_id): image for patch_id, image in artwork.items()}
     placed = {}
-    for sheet in sheets.sheets:
-        for piece in sheet.pieces:
+    for index, pieces in enumerate(pieces_by_sheet(sheet_set)):
+        for piece in pieces:
             for patch in piece.patches:
                 if patch.id in remaining:
                     item = place(piece.id, patch, remaining.pop(patch.id))
                     if item.rgba[..., 3].any():  # an image with nothing on it is left out
-                        placed.setdefault(sheet.index, []).append(item)
+                        placed.setdefault(index, []).append(item)
     if remaining:
-        known = sorted(patch.id for piece in sheets.pieces() for patch in piece.patches)
+        known = sorted(patch.id for piece in sheet_set.pieces for patch in piece.patches)
         raise ValueError(
             f"artwork for patch {min(remaining)}: the sheets have no such patch (they have "
             f"{', '.join(map(str, known)) or 'none'})"
@@ -124,16 +125,15 @@ def render_sheet_artwork(mesh, scaffold, sheet_set, **options):
     """{patch id: popupcore.PatchArtwork} for every patch the sheet set lays out, each rendered
     from the side its sheet prints (back_side where the flat patch's back faces up), the
     texture read once per side. `mesh`: a popupcore.ModelMesh in card mm; `scaffold`: the
-    design at its design state; `sheet_set`: the dict export.layout gives; `options`: the
-    keywords of popupcore.render_artworks (pixels_per_mm, depth, behind, light, ambient,
-    max_pixels). popupcore.DesignError names a bad option or model."""
+    design at its design state; `sheet_set`: the popupcore.SheetSet export.layout gives;
+    `options`: the keywords of popupcore.render_artworks (pixels_per_mm, depth, behind, light,
+    ambient, max_pixels). popupcore.DesignError names a bad option or model."""
     from popupwb.core import popupcore
 
     if "back_side" in options:
         raise ValueError("render_sheet_artwork chooses back_side per patch from the sheet set")
-    sheets = read_sheet_set(sheet_set)
     sides = {}
-    for piece in sheets.pieces():
+    for piece in sheet_set.pieces:
         for flat in piece.patches:
             if flat.to_sheet is None:
                 raise ValueError(

@@ -7,8 +7,8 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib.patches import Polygon, Rectangle
 
-from .sheet_set import read_sheet_set
 from .layer_style import SheetStyle
+from .sheet_set import baseline_centre, loops, paper_size, pieces_by_sheet, points
 
 MM_PER_INCH = 25.4
 PT_PER_MM = 72.0 / MM_PER_INCH
@@ -23,17 +23,18 @@ def png_size(width_mm, height_mm, dpi):
 
 
 def render_sheet_png(sheet_set, sheet_index, path, dpi=100, style=None):
-    """Writes sheet `sheet_index` (0-based) of `sheet_set` as a PNG at `path`; returns `path`."""
-    sheets = read_sheet_set(sheet_set)
-    if not 0 <= sheet_index < len(sheets.sheets):
-        raise ValueError(f"sheet index {sheet_index} outside 0..{len(sheets.sheets) - 1}")
+    """Writes sheet `sheet_index` (0-based) of `sheet_set` (a popupcore.SheetSet) as a PNG at
+    `path`; returns `path`."""
+    if not 0 <= sheet_index < sheet_set.sheet_count:
+        raise ValueError(f"sheet index {sheet_index} outside 0..{sheet_set.sheet_count - 1}")
     style = style or SheetStyle()
-    pixels = png_size(sheets.width, sheets.height, dpi)
+    paper_width, paper_height = paper_size(sheet_set)
+    pixels = png_size(paper_width, paper_height, dpi)
     figure = Figure(figsize=(pixels[0] / dpi, pixels[1] / dpi), dpi=dpi, facecolor="white")
     FigureCanvasAgg(figure)
     axes = figure.add_axes((0, 0, 1, 1))
-    axes.set_xlim(0, sheets.width)
-    axes.set_ylim(0, sheets.height)
+    axes.set_xlim(0, paper_width)
+    axes.set_ylim(0, paper_height)
     axes.set_axis_off()
     # Lines at least one pixel wide, or a 0.2 mm line fades out at low dpi.
     min_width = 72.0 / dpi
@@ -42,15 +43,15 @@ def render_sheet_png(sheet_set, sheet_index, path, dpi=100, style=None):
         return max(layer.line_width * PT_PER_MM, min_width)
 
     axes.add_patch(
-        Rectangle((0, 0), sheets.width, sheets.height, fill=False, edgecolor=PAPER_EDGE, lw=1)
+        Rectangle((0, 0), paper_width, paper_height, fill=False, edgecolor=PAPER_EDGE, lw=1)
     )
     # Dashes in mm on paper, not in multiples of the line width (matplotlib's default).
     with matplotlib.rc_context({"lines.scale_dashes": False}):
-        for piece in sheets.sheets[sheet_index].pieces:
+        for piece in pieces_by_sheet(sheet_set)[sheet_index]:
             for area in piece.glue:
                 axes.add_patch(
                     Polygon(
-                        area.polygon,
+                        points(area.polygon),
                         closed=True,
                         facecolor=style.glue_fill_unit(),
                         edgecolor=style.glue.unit_colour(),
@@ -70,7 +71,7 @@ def render_sheet_png(sheet_set, sheet_index, path, dpi=100, style=None):
                 )
             for label in piece.labels:
                 axes.text(
-                    *label.baseline_centre(),
+                    *baseline_centre(label),
                     label.text,
                     color=style.label.unit_colour(),
                     fontfamily=FONT,
@@ -81,7 +82,7 @@ def render_sheet_png(sheet_set, sheet_index, path, dpi=100, style=None):
                     va="baseline",
                 )
             for region in piece.cut:
-                for loop in region.loops():
+                for loop in loops(region):
                     closed = loop + loop[:1]
                     axes.plot(
                         [x for x, _ in closed],

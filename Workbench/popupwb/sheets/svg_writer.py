@@ -12,10 +12,10 @@ registration_marks=True.
 
 import svgwrite
 
-from .sheet_set import read_sheet_set, sheet_file_paths
 from .layer_style import SheetStyle
-from .not_valid_stamp import stamp_label
+from .not_valid_stamp import sheet_stamp
 from .print_artwork import place_artwork, png_data_uri
+from .sheet_set import baseline_centre, loops, paper_size, pieces_by_sheet, points, sheet_file_paths
 from .registration_marks import MARK_SIZE, check_room_for_marks, mark_squares
 
 INKSCAPE_NAMESPACE = "http://www.inkscape.org/namespaces/inkscape"
@@ -25,28 +25,25 @@ PRINT_LAYER = "PRINT"  # artwork and registration marks: printed, never cut
 
 
 def write_svg(sheet_set, path, style=None, not_valid=None, artwork=None, registration_marks=False):
-    """Writes one SVG per sheet: `path` for the first sheet, then <stem>-2.svg, <stem>-3.svg, ...;
-    returns the paths written. `not_valid` (a not_valid_stamp.NotValid) stamps every sheet.
-    `artwork`: {patch id: popupcore.PatchArtwork} (print_artwork.py) on the PRINT layer, with
-    registration marks."""
-    sheets = read_sheet_set(sheet_set)
+    """Writes one SVG per sheet of `sheet_set` (a popupcore.SheetSet): `path` for the first
+    sheet, then <stem>-2.svg, <stem>-3.svg, ...; returns the paths written. `not_valid` (a
+    not_valid_stamp.NotValid) stamps every sheet. `artwork`: {patch id: popupcore.PatchArtwork}
+    (print_artwork.py) on the PRINT layer, with registration marks."""
     style = style or SheetStyle()
-    placed = place_artwork(sheets, artwork)
+    placed = place_artwork(sheet_set, artwork)
     registration_marks = registration_marks or bool(artwork)
     if registration_marks:
-        check_room_for_marks(sheets.margin)
-    paths = sheet_file_paths(path, len(sheets.sheets))
-    stamp = None
-    if not_valid is not None:
-        stamp = stamp_label(sheets.width, sheets.height, sheets.margin, not_valid)
-    for sheet, sheet_path in zip(sheets.sheets, paths):
+        check_room_for_marks(sheet_set.options.margin)
+    paths = sheet_file_paths(path, sheet_set.sheet_count)
+    stamp = sheet_stamp(sheet_set, not_valid)
+    for index, (pieces, sheet_path) in enumerate(zip(pieces_by_sheet(sheet_set), paths)):
         drawing = sheet_svg_drawing(
-            sheets,
-            sheet,
+            sheet_set,
+            pieces,
             style,
             sheet_path,
             stamp,
-            placed.get(sheet.index, ()),
+            placed.get(index, ()),
             registration_marks,
         )
         drawing.save(pretty=True)
@@ -59,12 +56,15 @@ def _number(value):
     return "0" if text == "-0" else text
 
 
-def sheet_svg_drawing(sheets, sheet, style, path, stamp=None, artwork=(), registration_marks=False):
-    """One sheet as an svgwrite.Drawing in millimetres, a group per layer of `style` (glue,
-    mountain, valley, label, cut) and the stamp when given; the file writer and the TechDraw page
-    marks share it. `artwork` (print_artwork.PlacedArtwork of this sheet) and the registration
-    marks go on a PRINT layer under the others."""
-    width, height = sheets.width, sheets.height
+def sheet_svg_drawing(
+    sheet_set, pieces, style, path, stamp=None, artwork=(), registration_marks=False
+):
+    """One sheet, its `pieces` (of the popupcore.SheetSet `sheet_set`), as an svgwrite.Drawing in
+    millimetres, a group per layer of `style` (glue, mountain, valley, label, cut) and the stamp
+    when given; the file writer and the TechDraw page marks share it. `artwork`
+    (print_artwork.PlacedArtwork of this sheet) and the registration marks go on a PRINT layer
+    under the others."""
+    width, height = paper_size(sheet_set)
     drawing = svgwrite.Drawing(
         path,
         size=(f"{_number(width)}mm", f"{_number(height)}mm"),
@@ -91,7 +91,7 @@ def sheet_svg_drawing(sheets, sheet, style, path, stamp=None, artwork=(), regist
         return attributes
 
     if artwork or registration_marks:
-        _add_print_layer(drawing, artwork, registration_marks, sheets, flipped, loop_path)
+        _add_print_layer(drawing, artwork, registration_marks, sheet_set, flipped, loop_path)
 
     layers = {}
     # Drawing order, bottom to top: glue areas under the lines, cut lines over everything.
@@ -102,7 +102,7 @@ def sheet_svg_drawing(sheets, sheet, style, path, stamp=None, artwork=(), regist
         layers[layer.name] = drawing.add(group)
 
     def text(label):
-        anchor = flipped(label.baseline_centre())
+        anchor = flipped(baseline_centre(label))
         element = drawing.text(
             label.text,
             insert=anchor,
@@ -116,10 +116,10 @@ def sheet_svg_drawing(sheets, sheet, style, path, stamp=None, artwork=(), regist
             element["transform"] = f"rotate({_number(-label.angle)} {anchor[0]} {anchor[1]})"
         return element
 
-    for piece in sheet.pieces:
+    for piece in pieces:
         for area in piece.glue:
             glue = dict(stroke(style.glue), fill=svgwrite.rgb(*style.glue_fill))
-            layers[style.glue.name].add(drawing.path(d=loop_path(area.polygon), **glue))
+            layers[style.glue.name].add(drawing.path(d=loop_path(points(area.polygon)), **glue))
         for fold in piece.folds:
             layer = style.fold(fold.direction)
             line = drawing.line(start=flipped(fold.start), end=flipped(fold.end), **stroke(layer))
@@ -128,24 +128,24 @@ def sheet_svg_drawing(sheets, sheet, style, path, stamp=None, artwork=(), regist
             layers[style.label.name].add(text(label))
         for region in piece.cut:
             # One path per loop: a cutter runs each as its own closed contour.
-            for loop in region.loops():
+            for loop in loops(region):
                 layers[style.cut.name].add(drawing.path(d=loop_path(loop), **stroke(style.cut)))
     if stamp is not None:
         layers[style.label.name].add(text(stamp))
     return drawing
 
 
-def _add_print_layer(drawing, artwork, registration_marks, sheets, flipped, loop_path):
+def _add_print_layer(drawing, artwork, registration_marks, sheet_set, flipped, loop_path):
     """The PRINT layer: each image clipped to its patch's outline, and the registration marks."""
     group = drawing.g(id=PRINT_LAYER)
     group.attribs["inkscape:groupmode"] = "layer"
     group.attribs["inkscape:label"] = PRINT_LAYER
     drawing.add(group)
-    height = sheets.height
+    width, height = paper_size(sheet_set)
     for item in artwork:
         clip_id = f"clip-patch-{item.patch.id}"
         clip = drawing.defs.add(drawing.clipPath(id=clip_id))
-        outline = " ".join(loop_path(loop) for loop in (item.patch.outer,) + item.patch.holes)
+        outline = " ".join(loop_path(loop) for loop in loops(item.patch))
         clip.add(drawing.path(d=outline, clip_rule="evenodd"))
         # Image space: mm from its top-left corner, y down. Through its lower-left corner frame
         # (y up) onto the sheet (y up), then the SVG's y flip: F A F with F = diag(1, -1).
@@ -164,7 +164,7 @@ def _add_print_layer(drawing, artwork, registration_marks, sheets, flipped, loop
         clipped.add(image)
         group.add(clipped)
     if registration_marks:
-        for x, y in mark_squares(sheets.width, sheets.height, sheets.margin):
+        for x, y in mark_squares(width, height, sheet_set.options.margin):
             corner = flipped((x, y + MARK_SIZE))
             group.add(
                 drawing.rect(

@@ -36,7 +36,8 @@ import FreeCAD
 from popupwb.sheets.layer_style import SheetStyle
 from popupwb.sheets.page_marks import marks_svg
 from popupwb.sheets.page_template import TitleBlock, paper_text, template_svg
-from popupwb.sheets.sheet_shapes import cut_outline, sheet_pieces
+from popupwb.sheets.sheet_set import paper_size, pieces_by_sheet
+from popupwb.sheets.sheet_shapes import cut_outline
 
 # TechDraw cosmetic line styles: 1 continuous, 2 dash, 3 dot, 4 dash-dot, 5 dash-dot-dot.
 LINE_STYLES = range(1, 6)
@@ -81,10 +82,10 @@ def page_objects(page):
 
 
 def update_pages(owner, sheet_set, mountain_style=4, valley_style=2, not_valid=None):
-    """Makes `owner`'s pages show `sheet_set`: one per sheet, reused when they exist; pages of
-    sheets beyond the sheet count are removed. `not_valid` (a not_valid_stamp.NotValid) puts its
-    stamp on every page, with the labels."""
-    count = len(sheet_set["sheets"])
+    """Makes `owner`'s pages show `sheet_set` (a popupcore.SheetSet): one per sheet, reused when
+    they exist; pages of sheets beyond the sheet count are removed. `not_valid` (a
+    not_valid_stamp.NotValid) puts its stamp on every page, with the labels."""
+    count = sheet_set.sheet_count
     by_index = {}
     for page in pages_of(owner):
         if page.SheetIndex < count and page.SheetIndex not in by_index and _current_kind(page):
@@ -93,10 +94,12 @@ def update_pages(owner, sheet_set, mountain_style=4, valley_style=2, not_valid=N
             remove_page(page)
     styles = {"mountain": mountain_style, "valley": valley_style}
     card = owner.Card.Label if owner.Card is not None else owner.Label
-    paper, margin = sheet_set["paper"], sheet_set["options"]["margin"]
+    width, height = paper_size(sheet_set)
+    paper = paper_text(sheet_set.options.paper, width, height)
+    margin = sheet_set.options.margin
     for index in range(count):
-        title = TitleBlock(card, paper_text(paper), index + 1, count)
-        template = write_template(template_svg(paper["width"], paper["height"], margin, title))
+        title = TitleBlock(card, paper, index + 1, count)
+        template = write_template(template_svg(width, height, margin, title))
         page = by_index.get(index) or _new_page(owner, index, template)
         page.Label = f"{owner.Label} sheet {index + 1}"
         _draw_sheet(page, sheet_set, index, template, title, styles, not_valid)
@@ -182,7 +185,7 @@ def _new_page(owner, index, template_path):
 
 def _draw_sheet(page, sheet_set, index, path, title, styles, not_valid):
     label = page.Label
-    paper = sheet_set["paper"]
+    width, height = paper_size(sheet_set)
     template = page.Template
     if template.Template != path:
         template.Template = path  # resets EditableTexts to the file's (the same values)
@@ -194,7 +197,7 @@ def _draw_sheet(page, sheet_set, index, path, title, styles, not_valid):
     marks.Label = f"{label} glue areas and labels"
     marks.Symbol = marks_svg(sheet_set, index, not_valid)
     marks.Scale = 1.0
-    marks.X, marks.Y = paper["width"] / 2.0, paper["height"] / 2.0  # centred on the paper
+    marks.X, marks.Y = width / 2.0, height / 2.0  # centred on the paper
 
     view = next(v for v in page.Views if v.TypeId == PART_VIEW)
     outline = view.Source[0]
@@ -205,7 +208,7 @@ def _draw_sheet(page, sheet_set, index, path, title, styles, not_valid):
     view.X, view.Y = centre.x, centre.y
     _recompute(outline, view)  # makeCosmeticLine3D ends the process on a view without geometry
     _format_cuts(view)
-    _draw_folds(view, sheet_pieces(sheet_set, index), styles)
+    _draw_folds(view, pieces_by_sheet(sheet_set)[index], styles)
     _recompute(marks, view, template, page)
 
 
@@ -229,12 +232,12 @@ def _draw_folds(view, pieces, styles):
     style = SheetStyle()
     view.clearCosmeticEdges()
     for piece in pieces:
-        for fold in piece["folds"]:
-            layer = style.fold(fold["direction"])
+        for fold in piece.folds:
+            layer = style.fold(fold.direction)
             view.makeCosmeticLine3D(
-                FreeCAD.Vector(fold["from"][0], fold["from"][1], 0.0),
-                FreeCAD.Vector(fold["to"][0], fold["to"][1], 0.0),
-                styles[fold["direction"]],
+                FreeCAD.Vector(fold.start[0], fold.start[1], 0.0),
+                FreeCAD.Vector(fold.end[0], fold.end[1], 0.0),
+                styles[fold.direction],
                 layer.line_width,
                 layer.unit_colour(),
             )

@@ -1,5 +1,6 @@
-// The sheet set as JSON (docs/SHEET_FORMAT.md): what the file writers, the TechDraw pages and
-// report.json read.
+// The sheet set as JSON (docs/SHEET_FORMAT.md): the text of sheets.json and of a CuttingSheet's
+// stored layout, and the paper, options and findings of report.json (sheet_json_reader.cpp reads
+// it back).
 #include <nlohmann/json.hpp>
 
 #include "popup/io/sheet_json.hpp"
@@ -49,14 +50,16 @@ json piece_json(const SheetSet& set, const SheetPiece& p)
 {
     json patches = json::array(), folds = json::array(), tabs = json::array(), glue = json::array(),
          labels = json::array();
-    for (const FlatPatch& fp : p.patches)
-        patches.push_back({{"id", fp.id},
-                           {"name", fp.name},
-                           {"outer", loop(fp.outer)},
-                           {"holes", loops(fp.holes)},
-                           {"to_sheet",
-                            {{fp.to_sheet(0, 0), fp.to_sheet(0, 1), fp.to_sheet(0, 2)},
-                             {fp.to_sheet(1, 0), fp.to_sheet(1, 1), fp.to_sheet(1, 2)}}}});
+    for (const FlatPatch& fp : p.patches) {
+        json patch = {{"id", fp.id},
+                      {"name", fp.name},
+                      {"outer", loop(fp.outer)},
+                      {"holes", loops(fp.holes)}};
+        if (fp.has_to_sheet()) // a layout read from an older file may have none
+            patch["to_sheet"] = {{fp.to_sheet(0, 0), fp.to_sheet(0, 1), fp.to_sheet(0, 2)},
+                                 {fp.to_sheet(1, 0), fp.to_sheet(1, 1), fp.to_sheet(1, 2)}};
+        patches.push_back(patch);
+    }
     for (const FoldLine& f : p.folds)
         folds.push_back({{"hinge", f.hinge},
                          {"from", point(f.from)},

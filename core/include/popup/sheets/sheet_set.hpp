@@ -55,11 +55,14 @@ struct FlatPatch {
     /// The patch's own 2D frame (Patch::to_local at the design state) onto the sheet: a point
     /// (u, v) lands at to_sheet.leftCols<2>() * (u, v) + to_sheet.col(2). A rotation when the
     /// patch's normal side faces up (is printed), a reflection when its back side does. Artwork
-    /// rendered in the patch frame is placed with it.
+    /// rendered in the patch frame is placed with it. Zero for a patch read from a sheet set
+    /// written before it existed (sheet_set_from_json).
     Eigen::Matrix<double, 2, 3> to_sheet = Eigen::Matrix<double, 2, 3>::Identity();
 
     /// The normal side faces up on the sheet, the printed side (else the back side does).
     bool normal_side_up() const { return to_sheet.leftCols<2>().determinant() > 0.0; }
+    /// False for a patch read from a sheet set that gives no to_sheet for it.
+    bool has_to_sheet() const { return !to_sheet.isZero(0.0); }
 };
 
 /// A closed outline with holes (a region of one piece).
