@@ -75,6 +75,7 @@ printed_sides_from(const std::map<std::string, std::string>& sides)
 } // namespace popup::bindings
 
 void bind_mechanisms(pybind11::module_& m);
+void bind_options(pybind11::module_& m);
 void bind_sheets(pybind11::module_& m);
 void bind_sheet_drawing(pybind11::module_& m);
 void bind_sheet_set(pybind11::module_& m);
