@@ -50,6 +50,7 @@ WORKBENCH_FLOORS = {
     "popupwb.patch_titles": 1,
     "popupwb.model": 2,
     "popupwb.progress": 2,
+    "popupwb.option_fields": 2,
     "popupwb.validity.report_text": 2,
     "popupwb.profiles": 3,
     "popupwb.sheets": 3,
