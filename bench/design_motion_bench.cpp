@@ -86,7 +86,7 @@ void BM_DesignMotion(benchmark::State& state)
         animated = 0;
         for (const ChainReport& c : r.value.chains)
             animated += c.status != "stationary";
-        timings = r.value.timings_s;
+        timings = r.value.timings.stages;
         benchmark::DoNotOptimize(r.value.mechanisms.data());
     }
     state.counters["chains"] = double(a.bones.size() - 1) / 3.0;

@@ -29,7 +29,7 @@ void BM_FitDesign(benchmark::State& state)
     double coverage = 0, mechanisms = 0, valid = 0;
     for (auto _ : state) {
         const auto r = fit_design(model, options);
-        for (const auto& [stage, seconds] : r.value.timings_s) // where the time goes
+        for (const auto& [stage, seconds] : r.value.timings.stages) // where the time goes
             state.counters["s_" + stage] = seconds;
         coverage = r.value.coverage;
         mechanisms = double(r.value.mechanisms.size());
@@ -55,13 +55,13 @@ Prepared prepare(int vertices)
     const ModelMesh model = bench_model(vertices);
     const FitOptions o;
     Prepared p;
-    const Result<Alignment> a = align_model(model, sample_surface(model, 4000, o.seed), o.up,
-                                            o.facing, {o.card_width, o.card_depth, o.margin});
+    const Result<Alignment> a =
+        align_model(model, sample_surface(model, 4000, o.seed), o.up, o.facing, {o.card, o.margin});
     p.samples = transformed(sample_surface(model, o.samples, o.seed + 1), a.value.model_to_card);
     p.card.name = "central fold";
-    p.card.length = o.card_width;
-    p.card.across_min = -o.card_depth;
-    p.card.across_max = o.card_depth;
+    p.card.length = o.card.width;
+    p.card.across_min = -o.card.depth;
+    p.card.across_max = o.card.depth;
     const double diagonal = a.value.scale * model.diagonal();
     const double tau = o.min_shape * diagonal;
     p.options.threshold = o.threshold * diagonal;

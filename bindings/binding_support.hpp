@@ -76,6 +76,7 @@ printed_sides_from(const std::map<std::string, std::string>& sides)
 
 void bind_mechanisms(pybind11::module_& m);
 void bind_mechanism_catalogue(pybind11::module_& m);
+void bind_options(pybind11::module_& m);
 void bind_sheets(pybind11::module_& m);
 void bind_sheet_drawing(pybind11::module_& m);
 void bind_sheet_set(pybind11::module_& m);

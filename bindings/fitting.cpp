@@ -52,8 +52,13 @@ void bind_fitting(py::module_& m)
         .def_property(
             "facing", [](const FitOptions& o) { return direction_to_python(o.facing); },
             [](FitOptions& o, const py::object& v) { o.facing = direction_of(v, "facing"); })
-        .def_readwrite("card_width", &FitOptions::card_width)
-        .def_readwrite("card_depth", &FitOptions::card_depth)
+        .def_readwrite("card", &FitOptions::card, "the card's width and depth (mm)")
+        .def_property(
+            "card_width", [](const FitOptions& o) { return o.card.width; },
+            [](FitOptions& o, double v) { o.card.width = v; }, "card.width (mm)")
+        .def_property(
+            "card_depth", [](const FitOptions& o) { return o.card.depth; },
+            [](FitOptions& o, double v) { o.card.depth = v; }, "card.depth (mm)")
         .def_readwrite("margin", &FitOptions::margin)
         .def_readwrite("min_part_mm", &FitOptions::min_part_mm)
         .def_readwrite("max_mechanisms", &FitOptions::max_mechanisms)
@@ -63,7 +68,14 @@ void bind_fitting(py::module_& m)
         .def_readwrite("samples", &FitOptions::samples)
         .def_readwrite("seed", &FitOptions::seed)
         .def_readwrite("outlines", &FitOptions::outlines)
-        .def_readwrite("depth_layers", &FitOptions::depth_layers);
+        .def_readwrite("depth_layers", &FitOptions::depth_layers)
+        .def_static(
+            "fields", [] { return fit_option_fields(); },
+            "Every option's OptionField (name, doc, unit, default, range), in declaration order.")
+        .def(
+            "check",
+            [](const FitOptions& o) { return bindings::diagnostic_list(check_fit_options(o)); },
+            "The options' range errors as diagnostics (empty when every option is in range).");
 
     py::class_<FittedPrimitive>(m, "FittedPrimitive")
         .def_readonly("kind", &FittedPrimitive::kind)
@@ -124,7 +136,9 @@ void bind_fitting(py::module_& m)
         .def_readonly("coverage_error", &FitResult::coverage_error)
         .def_readonly("symmetry_error", &FitResult::symmetry_error)
         .def_readonly("ransac_draws", &FitResult::ransac_draws)
-        .def_readonly("timings", &FitResult::timings_s)
+        .def_readonly("timings", &FitResult::timings)
+        .def_property_readonly("pops_up", &FitResult::pops_up,
+                               "valid with at least one mechanism: a bare card is no pop-up")
         .def_property_readonly("diagnostics", [](const FitResult& r) {
             return bindings::diagnostic_list(r.diagnostics);
         });

@@ -54,7 +54,16 @@ void bind_motion(py::module_& m)
         .def_readwrite("layer_height_max", &MotionOptions::layer_height_max,
                        "h_max (mm); <= 0: 25 mm on an A4 card, scaled")
         .def_readwrite("seed", &MotionOptions::seed)
-        .def_readwrite("outlines", &MotionOptions::outlines);
+        .def_readwrite("outlines", &MotionOptions::outlines)
+        .def_static(
+            "fields", [] { return motion_option_fields(); },
+            "Every option's OptionField (name, doc, unit, default, range): its own, then the "
+            "view's (group 'view') and the chains' (group 'chains').")
+        .def(
+            "check",
+            [](const MotionOptions& o) { return diagnostic_list(check_motion_options(o)); },
+            "The options' range errors as diagnostics (empty when every option is in range); the "
+            "frame range against an animation is motion_targets' to check.");
 
     py::class_<ChainReport>(m, "ChainReport", "One chain of the result, as report.json lists it")
         .def_readonly("name", &ChainReport::name)
@@ -86,7 +95,11 @@ void bind_motion(py::module_& m)
                       "Σ weight · floor: no design on this card scores a lower weighted_error")
         .def_readonly("iterations", &MotionResult::iterations)
         .def_readonly("cost", &MotionResult::cost)
-        .def_readonly("timings", &MotionResult::timings_s)
+        .def_readonly("timings", &MotionResult::timings)
+        .def_property_readonly(
+            "pops_up", &MotionResult::pops_up,
+            "valid with at least one mechanism: with every chain printed on the page nothing "
+            "stands up")
         .def_property_readonly(
             "diagnostics", [](const MotionResult& r) { return diagnostic_list(r.diagnostics); });
 

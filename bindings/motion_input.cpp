@@ -169,8 +169,13 @@ void bind_chains_and_targets(py::module_& m)
                 v.centre = Vec2(c[0], c[1]);
             })
         .def_readwrite("margin", &MotionView::margin)
-        .def_readwrite("card_width", &MotionView::card_width)
-        .def_readwrite("card_depth", &MotionView::card_depth)
+        .def_readwrite("card", &MotionView::card, "the card's width and depth (mm)")
+        .def_property(
+            "card_width", [](const MotionView& v) { return v.card.width; },
+            [](MotionView& v, double w) { v.card.width = w; }, "card.width (mm)")
+        .def_property(
+            "card_depth", [](const MotionView& v) { return v.card.depth; },
+            [](MotionView& v, double d) { v.card.depth = d; }, "card.depth (mm)")
         .def_readwrite("first_frame", &MotionView::first_frame)
         .def_readwrite("last_frame", &MotionView::last_frame)
         .def_readwrite("angle_tolerance", &MotionView::angle_tolerance)

@@ -340,6 +340,7 @@ PYBIND11_MODULE(popupcore, m)
     });
     bind_mechanisms(m);
     bind_mechanism_catalogue(m);
+    bind_options(m);
     bind_sheets(m);
     bind_sheet_set(m);
     bind_sheet_drawing(m);

@@ -51,6 +51,7 @@ WORKBENCH_FLOORS = {
     "popupwb.mechanism_catalogue": 2,
     "popupwb.model": 2,
     "popupwb.progress": 2,
+    "popupwb.option_fields": 2,
     "popupwb.validity.report_text": 2,
     "popupwb.profiles": 3,
     "popupwb.sheets": 3,

@@ -12,10 +12,10 @@ what was tried), 2 input that cannot be used (one line naming the file or flag, 
 allowed range). The steps it shares with `popup fit` are in design_steps.py.
 """
 
-import math
 import os
 import time
 
+from popupwb import option_fields
 from popupwb.cli import design_steps as steps
 from popupwb.cli.common import InputError, import_core, stdout_to_stderr
 from popupwb.cli.design_steps import DESIGN_FILE, REPORT_FILE, SHEETS_DIR
@@ -25,9 +25,19 @@ MOVIE_FILE = "motion.gif"
 PROGRESS_STEP = 0.1  # a progress line every 10 %
 
 
-def add_parser(sub):
-    from popupwb.motion.motion_run import DEFAULT_ITERATIONS, MAX_ITERATIONS
+# The options the flags set, by flag; their ranges, defaults and docs are the core's.
+FLAGS = {
+    "--iterations": "iterations",
+    "--first-frame": "first_frame",
+    "--last-frame": "last_frame",
+    "--scale": "scale",
+}
 
+
+def add_parser(sub):
+    from popupwb.motion.motion_run import MIN_ITERATIONS
+
+    core = option_fields.fields("MotionOptions")
     animate = sub.add_parser(
         "animate",
         help="design an animated pop-up from a character's animation: FreeCAD document, report, "
@@ -42,35 +52,13 @@ def add_parser(sub):
     )
     animate.add_argument("animation", help="animation file, or a .json of named trajectories")
     steps.add_out_flag(animate)
-    steps.add_seed_flag(animate)
-    animate.add_argument(
-        "--iterations",
-        type=int,
-        default=DEFAULT_ITERATIONS,
-        metavar="N",
-        help=f"annealing iterations per search chain, 1 to {MAX_ITERATIONS} "
-        f"(default {DEFAULT_ITERATIONS})",
-    )
-    animate.add_argument(
-        "--first-frame", type=int, metavar="F", help="frame shown closed (default 0)"
-    )
-    animate.add_argument(
-        "--last-frame", type=int, metavar="L", help="frame shown open flat (default: the last)"
-    )
-    animate.add_argument(
-        "--view",
-        metavar="X,Y,Z",
-        help="direction from the eye toward the character, in the file's axes (default 0,0,-1)",
-    )
-    animate.add_argument(
-        "--up", metavar="X,Y,Z", help="file direction that becomes up on the card (default 0,1,0)"
-    )
-    animate.add_argument(
-        "--scale",
-        type=float,
-        metavar="MM",
-        help="card mm per file unit (default: the character's projected box fits the card)",
-    )
+    steps.add_seed_flag(animate, core.get("seed"))
+    metavars = {"--iterations": "N", "--first-frame": "F", "--last-frame": "L", "--scale": "MM"}
+    for flag, name in FLAGS.items():
+        low = MIN_ITERATIONS if name == "iterations" else None
+        option_fields.add_flag(animate, flag, core.get(name), metavars[flag], low)
+    for name in ("view", "up"):
+        option_fields.add_vector_flag(animate, f"--{name}", core.get(name), "MotionOptions")
     steps.add_paper_flag(animate)
     animate.set_defaults(run=run)
     return animate
@@ -92,25 +80,14 @@ class _Progress:
 
 def _options(args, motion_run):
     """The MotionOptions and the paper from the flags; InputError naming the flag."""
-    steps.check_seed(args)
-    if not 1 <= args.iterations <= motion_run.MAX_ITERATIONS:
-        raise InputError(
-            f"--iterations {args.iterations}: must be 1 to {motion_run.MAX_ITERATIONS}"
-        )
-    if args.first_frame is not None and args.first_frame < 0:
-        raise InputError(f"--first-frame {args.first_frame}: must be >= 0")
-    if args.last_frame is not None and args.last_frame < 0:
-        raise InputError(f"--last-frame {args.last_frame}: must be >= 0")
-    if (
-        args.first_frame is not None
-        and args.last_frame is not None
-        and args.last_frame <= args.first_frame
-    ):
-        raise InputError(
-            f"--last-frame {args.last_frame}: must be after --first-frame {args.first_frame}"
-        )
-    if args.scale is not None and not (math.isfinite(args.scale) and args.scale > 0):
-        raise InputError(f"--scale {args.scale:g}: must be a finite number of mm > 0")
+    core = option_fields.fields("MotionOptions")
+    try:
+        option_fields.check(core.get("seed"), args.seed, "--seed")
+        for flag, name in FLAGS.items():
+            low = motion_run.MIN_ITERATIONS if name == "iterations" else None
+            option_fields.check(core.get(name), getattr(args, name), flag, low)
+    except ValueError as e:
+        raise InputError(str(e))
     view, up = steps.directions(args, motion_run.direction, ("view", "up"))
     paper, card_size = steps.paper_and_card_size(args, motion_run.card_size_for_paper)
     with steps.core_range_checks():
@@ -123,6 +100,7 @@ def _options(args, motion_run):
             up=up,
             scale=args.scale,
             card_size=card_size,
+            flags=steps.flags_given(args, {name: name for name in (*FLAGS.values(), "view", "up")}),
         )
     return options, paper
 
@@ -163,7 +141,7 @@ def run(args):
         steps.raise_unless_no_design(e, args.animation)
         report = _report(common, None, None, stages, files)
         return steps.report_no_design(args, args.animation, e, report, files, say)
-    _add_core_stages(stages, result, time.perf_counter() - started)
+    _add_core_stages(stages, result.timings, time.perf_counter() - started)
     say(
         f"{len(result.chains)} chain(s) on {len(result.mechanisms)} mechanism(s); weighted "
         f"motion error {result.weighted_error:.4f} of the character's diagonal"
@@ -172,21 +150,19 @@ def run(args):
     validity = _write_design(args, result, animation, stages, files, say)
     _write_pictures(args, result, animation, stages, files, say)
     report = _report(common, result, validity, stages, files)
-    valid = report["valid"] and result.mechanisms
-    if report["valid"] and not result.mechanisms:  # a card with nothing on it is no pop-up
+    if report["valid"] and not result.pops_up:  # the core's rule: a bare card is no pop-up
         report["valid"] = False
         say("no mechanism: every chain is printed on the page, nothing stands up")
+    valid = report["valid"]
     status = steps.sheets_of_valid_design(args, paper, report, valid, files, stages, say)
     return steps.finish(args, report, status, files, stages, say, _print_summary)
 
 
-def _add_core_stages(stages, result, wall_s):
+def _add_core_stages(stages, timings, wall_s):
     """The core's own stages (MotionResult.timings), and what the call took beyond them
     (`design_other`: the worker thread, the progress polling), so the stages add up."""
-    core = list(getattr(result, "timings", None) or getattr(result, "timings_s", None) or ())
-    core = [(name, seconds) for name, seconds in core if name != "total"]  # ours is the total
-    stages.add(core)
-    stages.add([("design_other", max(wall_s - sum(float(t) for _, t in core), 0.0))])
+    stages.add(timings.stages)
+    stages.add([("design_other", max(wall_s - sum(float(t) for _, t in timings.stages), 0.0))])
 
 
 def _write_design(args, result, animation, stages, files, say):

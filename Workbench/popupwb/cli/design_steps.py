@@ -9,6 +9,7 @@ import contextlib
 import os
 import sys
 
+from popupwb import option_fields
 from popupwb.cli import sheet
 from popupwb.cli.common import (
     EXIT_INVALID,
@@ -34,10 +35,9 @@ def add_out_flag(parser):
     parser.add_argument("--out", required=True, metavar="DIR", help="folder for the files")
 
 
-def add_seed_flag(parser):
-    parser.add_argument(
-        "--seed", type=int, default=1, metavar="S", help="random seed; same seed, same design"
-    )
+def add_seed_flag(parser, field):
+    """--seed S from the options' seed field (its doc, range and default are the core's)."""
+    option_fields.add_flag(parser, "--seed", field, "S")
 
 
 def add_paper_flag(parser):
@@ -61,9 +61,15 @@ class Say:
 # --- checks before any work -----------------------------------------------------------------
 
 
-def check_seed(args):
-    if args.seed < 0:
-        raise InputError(f"--seed {args.seed}: must be >= 0")
+def flags_given(args, names):
+    """{option name: "--flag VALUE"} of the flags given among `names` {option name: argument
+    name}, for option_fields.raise_if_bad to lead the core's messages with."""
+    given = {}
+    for option, name in names.items():
+        value = getattr(args, name)
+        if value is not None:
+            given[option] = f"--{name.replace('_', '-')} {option_fields.value_text(value)}"
+    return given
 
 
 def directions(args, direction, flags):

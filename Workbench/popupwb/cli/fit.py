@@ -14,6 +14,7 @@ design_steps.py.
 import math
 import os
 
+from popupwb import option_fields
 from popupwb.cli import design_steps as steps
 from popupwb.cli.common import EXIT_INVALID, InputError, import_core, import_freecad
 from popupwb.cli.common import stdout_to_stderr
@@ -24,8 +25,9 @@ PREVIEW_FILE = "preview.png"
 
 
 def add_parser(sub):
-    from popupwb.fitting.fit_run import MAX_MECHANISMS
+    from popupwb.fitting.fit_run import DEFAULT_DETAIL
 
+    core = option_fields.fields("FitOptions")  # ranges, defaults and docs: the core's
     fit = sub.add_parser(
         "fit",
         help="design a pop-up from a 3D model: FreeCAD document, report, preview and sheets",
@@ -37,69 +39,56 @@ def add_parser(sub):
     )
     fit.add_argument("model", help="model file, or an .FCStd holding Mesh or Part objects")
     steps.add_out_flag(fit)
-    fit.add_argument(
-        "--max-mechanisms",
-        type=int,
-        default=8,
-        metavar="N",
-        help=f"at most this many mechanisms, 1 to {MAX_MECHANISMS} (default 8)",
-    )
-    steps.add_seed_flag(fit)
+    option_fields.add_flag(fit, "--max-mechanisms", core.get("max_mechanisms"), "N")
+    steps.add_seed_flag(fit, core.get("seed"))
     fit.add_argument(
         "--detail",
         type=float,
-        default=0.5,
+        default=DEFAULT_DETAIL,
         metavar="D",
-        help="0 coarse (few large prisms) to 1 fine (smaller prisms too); default 0.5",
+        help=f"0 coarse (few large prisms) to 1 fine (smaller prisms too); default "
+        f"{DEFAULT_DETAIL:g}",
     )
-    fit.add_argument(
-        "--min-part",
-        type=float,
-        metavar="MM",
-        help="shortest glued crease a mechanism may have, mm (default: what the sheets' "
-        "narrowest glue tab needs; 0 allows any, and the sheets may then refuse a tab)",
-    )
+    option_fields.add_flag(fit, "--min-part", core.get("min_part_mm"), "MM")
+    depth_layers = core.get("depth_layers")
     fit.add_argument(
         "--no-depth-layers",
         action="store_true",
-        help="keep box folds' fronts, backs and tops flat: no nested mechanisms for the parts "
-        "of the model standing proud of them (thesis §5.1.3)",
+        help="keep box folds' fronts, backs and tops flat"
+        + (f" (on by default: {depth_layers.doc})" if depth_layers else ""),
     )
     steps.add_paper_flag(fit)
-    fit.add_argument(
-        "--up",
-        metavar="X,Y,Z",
-        help="model direction that becomes up (default: from the model's normals)",
-    )
-    fit.add_argument(
-        "--facing",
-        metavar="X,Y,Z",
-        help="model direction that faces the viewer of the open card (default: from the model)",
-    )
+    for name in ("up", "facing"):
+        option_fields.add_vector_flag(fit, f"--{name}", core.get(name), "FitOptions")
     fit.set_defaults(run=run)
     return fit
 
 
 def _options(args, fit_run):
     """The FitOptions, the paper and the directions from the flags; InputError naming the flag."""
-    if not 1 <= args.max_mechanisms <= fit_run.MAX_MECHANISMS:
-        raise InputError(
-            f"--max-mechanisms {args.max_mechanisms}: must be 1 to {fit_run.MAX_MECHANISMS}"
-        )
-    steps.check_seed(args)
+    core = option_fields.fields("FitOptions")
+    try:
+        option_fields.check(core.get("max_mechanisms"), args.max_mechanisms, "--max-mechanisms")
+        option_fields.check(core.get("seed"), args.seed, "--seed")
+        option_fields.check(core.get("min_part_mm"), args.min_part, "--min-part")
+    except ValueError as e:
+        raise InputError(str(e))
     if not (math.isfinite(args.detail) and 0.0 <= args.detail <= 1.0):
         raise InputError(f"--detail {args.detail:g}: must be from 0 (coarse) to 1 (fine)")
-    if args.min_part is not None and not (math.isfinite(args.min_part) and args.min_part >= 0):
-        raise InputError(f"--min-part {args.min_part:g}: must be a length >= 0 mm")
     up, facing = steps.directions(args, fit_run.direction, ("up", "facing"))
     paper, card_size = steps.paper_and_card_size(args, fit_run.card_size_for_paper)
     with steps.core_range_checks():
         options = fit_run.fit_options(
-            args.max_mechanisms, args.seed, up, facing, args.detail, card_size
+            args.max_mechanisms,
+            args.seed,
+            up,
+            facing,
+            args.detail,
+            card_size,
+            min_part_mm=args.min_part,
+            depth_layers=not args.no_depth_layers,
+            flags=steps.flags_given(args, {"min_part_mm": "min_part", "up": "up"}),
         )
-        if args.min_part is not None:
-            options.min_part_mm = args.min_part
-        options.depth_layers = not args.no_depth_layers
     return options, paper
 
 
@@ -149,7 +138,7 @@ def run(args):
         steps.raise_unless_no_design(e, args.model)
         report = _no_design_report(common, stages)
         return steps.report_no_design(args, args.model, e, report, files, say)
-    stages.add(result.timings)
+    stages.add(result.timings.stages)
     say(
         f"fitted {len(result.primitives)} primitive(s), {len(result.mechanisms)} mechanism(s); "
         f"{len(result.repairs)} repair(s)"
@@ -157,7 +146,7 @@ def run(args):
 
     design = _write_design(args, result, model, options, stages, files, say)
     report = _report(common, result, design, stages, files)
-    valid = design["validity"]["valid"] and result.valid and result.mechanisms
+    valid = design["validity"]["valid"] and result.pops_up
     status = steps.sheets_of_valid_design(args, paper, report, valid, files, stages, say)
     status = steps.finish(args, report, status, files, stages, say, _print_summary)
     if not result.mechanisms:

@@ -14,12 +14,13 @@ import time
 
 import numpy as np
 
-# Detail level 0 (coarse) .. 1 (fine) sets the smallest primitive, as a fraction of the model's
-# diagonal: 0.08 .. 0.02, the core's default 0.05 at 0.5.
+from popupwb import option_fields
+
+# Detail level 0 (coarse) .. 1 (fine) sets the smallest primitive (FitOptions.min_shape), as a
+# fraction of the model's diagonal: 0.08 .. 0.02, the core's default 0.05 at 0.5.
 COARSEST_SHAPE = 0.08
 FINEST_SHAPE = 0.02
 DEFAULT_DETAIL = 0.5
-MAX_MECHANISMS = 32
 # The card fits on the paper with the cutting sheet's margin and this much more on each side.
 CARD_CLEARANCE_MM = 2.0
 
@@ -102,56 +103,32 @@ def direction(text, flag):
 
 
 def fit_options(
-    max_mechanisms=8,
-    seed=1,
+    max_mechanisms=None,
+    seed=None,
     up=None,
     facing=None,
     detail=DEFAULT_DETAIL,
     card_size=None,
+    min_part_mm=None,
+    depth_layers=None,
+    flags=None,
 ):
-    """A popupcore.FitOptions; ValueError naming the option for a value out of range."""
+    """A popupcore.FitOptions; None keeps the core's default. ValueError naming the option and
+    its range (the core's check; `flags` as option_fields.raise_if_bad's)."""
     from popupwb.core import popupcore
 
-    if not 1 <= int(max_mechanisms) <= MAX_MECHANISMS:
-        raise ValueError(f"max_mechanisms = {max_mechanisms}, must be 1 to {MAX_MECHANISMS}")
-    if int(seed) < 0:
-        raise ValueError(f"seed = {seed}, must be >= 0")
     options = popupcore.FitOptions()
-    options.max_mechanisms = int(max_mechanisms)
-    options.seed = int(seed)
-    options.min_shape = min_shape_of_detail(float(detail))
-    if up is not None:
-        options.up = tuple(up)
-    if facing is not None:
-        options.facing = tuple(facing)
-    if card_size is not None:
-        options.card_width, options.card_depth = card_size
-    return options
+    width, depth = card_size if card_size is not None else (None, None)
+    values = dict(max_mechanisms=max_mechanisms, seed=seed, card_width=width, card_depth=depth)
+    values.update(min_shape=min_shape_of_detail(float(detail)), up=up, facing=facing)
+    values.update(min_part_mm=min_part_mm, depth_layers=depth_layers)
+    option_fields.set_options(options, option_fields.fields("FitOptions"), values)
+    return option_fields.raise_if_bad(options, flags)
 
 
 def options_dict(options):
-    """The FitOptions as plain JSON values (for the report)."""
-    names = (
-        "card_width",
-        "card_depth",
-        "margin",
-        "max_mechanisms",
-        "min_shape",
-        "probability",
-        "threshold",
-        "samples",
-        "seed",
-        "up",
-        "facing",
-        "min_part_mm",
-        "outlines",
-        "depth_layers",
-    )
-    values = {}
-    for name in names:
-        value = getattr(options, name, None)
-        values[name] = list(value) if isinstance(value, (tuple, list, np.ndarray)) else value
-    return values
+    """The FitOptions as plain JSON values (for the report), every field of the core's table."""
+    return option_fields.as_dict(options, option_fields.fields("FitOptions"))
 
 
 def fit(model, options, cancel=None):

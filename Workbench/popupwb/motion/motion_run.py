@@ -6,16 +6,16 @@ Stage timing is fitting.fit_run.Stages. Bad input is ValueError (popupcore.Desig
 naming the file or the option, the value and the allowed range.
 """
 
-import math
 import os
 import threading
 
+from popupwb import option_fields
 from popupwb.fitting.fit_run import Stages, card_size_for_paper, direction  # noqa: F401
 
 TRAJECTORY_SUFFIX = ".json"  # the plain JSON of named trajectories (docs/ANIMATION_INPUT.md)
-DEFAULT_ITERATIONS = 4000
-MAX_ITERATIONS = 10_000_000
-MAX_SEED = 2**63 - 1
+# The core anneals 0 iterations too (the start layout as it is, which its tests use); a maker's
+# run, from the command line or the panel, anneals at least once.
+MIN_ITERATIONS = 1
 PROGRESS_POLL_S = 0.1
 
 
@@ -34,27 +34,9 @@ def read_animation(path):
     return animation, f"{os.path.basename(path)}: {bones} bones, {animation.frames} frames{skin}"
 
 
-def _finite(value, name, low=None, high=None, low_open=False):
-    value = float(value)
-    ok = math.isfinite(value)
-    if ok and low is not None:
-        ok = value > low if low_open else value >= low
-    if ok and high is not None:
-        ok = value <= high
-    if not ok:
-        if low is not None and high is not None:
-            span = f"from {low:g} to {high:g}"
-        elif low is not None:
-            span = f"{'>' if low_open else '>='} {low:g}"
-        else:
-            span = "finite"
-        raise ValueError(f"{name} = {value:g}, must be {span}")
-    return value
-
-
 def motion_options(
-    seed=1,
-    iterations=DEFAULT_ITERATIONS,
+    seed=None,
+    iterations=None,
     first_frame=None,
     last_frame=None,
     view=None,
@@ -64,84 +46,27 @@ def motion_options(
     prune_fraction=None,
     motion_weight=None,
     depth_weight=None,
+    flags=None,
 ):
-    """A popupcore.MotionOptions; ValueError naming the option for a value out of range. None
-    keeps the core's default."""
+    """A popupcore.MotionOptions; None keeps the core's default. ValueError naming the option
+    and its range (the core's check; `flags` as option_fields.raise_if_bad's)."""
     from popupwb.core import popupcore
 
-    if not 0 <= int(seed) <= MAX_SEED:
-        raise ValueError(f"seed = {seed}, must be 0 to {MAX_SEED}")
-    if not 1 <= int(iterations) <= MAX_ITERATIONS:
-        raise ValueError(f"iterations = {iterations}, must be 1 to {MAX_ITERATIONS}")
     options = popupcore.MotionOptions()
-    options.seed = int(seed)
-    options.iterations = int(iterations)
-    motion_view = options.view
-    if first_frame is not None:
-        if int(first_frame) < 0:
-            raise ValueError(f"first frame = {first_frame}, must be >= 0")
-        motion_view.first_frame = int(first_frame)
-    if last_frame is not None:
-        if int(last_frame) < -1:
-            raise ValueError(f"last frame = {last_frame}, must be >= 0 (or -1: the last)")
-        motion_view.last_frame = int(last_frame)
-    if view is not None:
-        motion_view.view = tuple(view)
-    if up is not None:
-        motion_view.up = tuple(up)
-    if scale is not None:
-        motion_view.scale = _finite(scale, "scale", 0.0, low_open=True)
-    if card_size is not None:
-        motion_view.card_width, motion_view.card_depth = (float(v) for v in card_size)
-    options.view = motion_view
-    if prune_fraction is not None:
-        chains = options.chains
-        chains.prune_fraction = _finite(prune_fraction, "pruning fraction", 0.0, 1.0)
-        options.chains = chains
-    if motion_weight is not None:
-        options.motion_weight = _finite(motion_weight, "motion weight", 0.0)
-    if depth_weight is not None:
-        options.depth_weight = _finite(depth_weight, "depth weight", 0.0)
-    return options
-
-
-def _plain(value):
-    if value is None or isinstance(value, (bool, int, float, str)):
-        return value
-    try:
-        return [float(v) for v in value]
-    except TypeError:
-        return str(value)
+    width, depth = card_size if card_size is not None else (None, None)
+    values = dict(seed=seed, iterations=iterations, first_frame=first_frame, last_frame=last_frame)
+    values.update(view=view, up=up, scale=scale, card_width=width, card_depth=depth)
+    values.update(
+        prune_fraction=prune_fraction, motion_weight=motion_weight, depth_weight=depth_weight
+    )
+    option_fields.set_options(options, option_fields.fields("MotionOptions"), values)
+    return option_fields.raise_if_bad(options, flags)
 
 
 def options_dict(options):
-    """The MotionOptions as plain JSON values (for the report)."""
-    names = (
-        "motion_weight",
-        "depth_weight",
-        "collision_weight",
-        "iterations",
-        "search_chains",
-        "layer_height_max",
-        "seed",
-        "outlines",
-    )
-    view_names = (
-        "view",
-        "up",
-        "scale",
-        "centre",
-        "margin",
-        "card_width",
-        "card_depth",
-        "first_frame",
-        "last_frame",
-        "angle_tolerance",
-    )
-    values = {name: _plain(getattr(options, name, None)) for name in names}
-    values["view"] = {name: _plain(getattr(options.view, name, None)) for name in view_names}
-    values["chains"] = {"prune_fraction": _plain(options.chains.prune_fraction)}
-    return values
+    """The MotionOptions as plain JSON values (for the report): every field of the core's
+    table, the view's under "view" and the chains' under "chains"."""
+    return option_fields.as_dict(options, option_fields.fields("MotionOptions"))
 
 
 def design(animation, options, cancel=None, on_progress=None):

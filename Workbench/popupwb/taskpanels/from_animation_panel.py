@@ -16,12 +16,11 @@ import os
 import FreeCAD
 from PySide import QtCore, QtGui
 
+from popupwb import option_fields
 from popupwb.motion import motion_run
-from popupwb.taskpanels.long_job_panel import AXES, MAX_SEED, LongJobPanel
-from popupwb.taskpanels.long_job_panel import axis_box, form_group, push_button, real_box, spin_box
+from popupwb.taskpanels.long_job_panel import AXES, LongJobPanel, axis_box, axis_named, form_group
+from popupwb.taskpanels.long_job_panel import option_real_box, option_spin_box, push_button
 
-DEFAULT_VIEW, DEFAULT_UP = "-Z", "+Y"
-MAX_FRAME = 10**7
 PLOT_WIDTH_PX = 420
 
 last_panel = None  # the panel opened last (scripts and the GUI tests drive it)
@@ -54,18 +53,17 @@ class FromAnimationPanel(LongJobPanel):
     # --- widgets ----------------------------------------------------------------------------
 
     def _animation_group(self):
+        from popupwb.core import popupcore
+
+        core = option_fields.fields("MotionOptions")  # ranges, defaults and docs: the core's
         self.file_label = QtGui.QLabel(os.path.basename(self.path))
         self.file_label.setToolTip(self.path)
-        self.first_frame = spin_box(
-            "FirstFrame", 0, MAX_FRAME, 0, "Frame shown when the card is closed"
-        )
-        self.last_frame = spin_box(
-            "LastFrame", -1, MAX_FRAME, -1, "Frame shown when the card is open flat", "last"
-        )
-        self.view = axis_box(
-            "ViewAxis", "File direction from the eye toward the character", DEFAULT_VIEW
-        )
-        self.up = axis_box("UpAxis", "File direction that becomes up on the card", DEFAULT_UP)
+        # Up to the animation's own frames once it is read (_load).
+        self.first_frame = option_spin_box("FirstFrame", core["first_frame"])
+        self.last_frame = option_spin_box("LastFrame", core["last_frame"], special="last")
+        default = popupcore.MotionView()
+        self.view = axis_box("ViewAxis", core["view"].doc, axis_named(default.view))
+        self.up = axis_box("UpAxis", core["up"].doc, axis_named(default.up))
         return form_group(
             "Animation",
             [
@@ -78,36 +76,14 @@ class FromAnimationPanel(LongJobPanel):
         )
 
     def _design_group(self):
-        from popupwb.core import popupcore
-
-        defaults = popupcore.MotionOptions()
-        self.prune = real_box(
-            "Pruning",
-            0.0,
-            1.0,
-            defaults.chains.prune_fraction,
-            0.01,
-            "τp: a leaf chain lighter than this fraction of the mean is merged into its parent",
+        core = option_fields.fields("MotionOptions")
+        self.prune = option_real_box("Pruning", core["prune_fraction"], 0.01)
+        self.motion_weight = option_real_box("MotionWeight", core["motion_weight"], 5.0)
+        self.depth_weight = option_real_box("DepthWeight", core["depth_weight"], 5.0)
+        self.iterations = option_spin_box(
+            "Iterations", core["iterations"], low=motion_run.MIN_ITERATIONS
         )
-        self.motion_weight = real_box(
-            "MotionWeight", 0.0, 1e6, defaults.motion_weight, 5.0, "w_m of eq 6.5: follow the paths"
-        )
-        self.depth_weight = real_box(
-            "DepthWeight",
-            0.0,
-            1e6,
-            defaults.depth_weight,
-            5.0,
-            "w_d of eq 6.5: keep the depth order",
-        )
-        self.iterations = spin_box(
-            "Iterations",
-            1,
-            motion_run.MAX_ITERATIONS,
-            int(defaults.iterations),
-            "Annealing iterations per search chain",
-        )
-        self.seed = spin_box("Seed", 0, MAX_SEED, 1, "Same seed, same design")
+        self.seed = option_spin_box("Seed", core["seed"])
         self.design_button = push_button("Design", "DesignButton", self.run_design)
         return form_group(
             "Design",

@@ -12,9 +12,10 @@ keeps the file as its SourceFile, as `popup fit` does, so its texture and colour
 cutting sheets' artwork.
 """
 
+from popupwb import option_fields
 from popupwb.fitting import fit_run
-from popupwb.taskpanels.long_job_panel import AXES, MAX_SEED, LongJobPanel
-from popupwb.taskpanels.long_job_panel import axis_box, form_group, push_button, real_box, spin_box
+from popupwb.taskpanels.long_job_panel import AXES, LongJobPanel, axis_box, form_group
+from popupwb.taskpanels.long_job_panel import option_spin_box, push_button, real_box
 from popupwb.taskpanels.primitive_overlay import PrimitiveOverlay
 
 AUTOMATIC = "Automatic"
@@ -49,16 +50,14 @@ class FromModelPanel(LongJobPanel):
         return axis_box(name, tip, AUTOMATIC, first=[AUTOMATIC])
 
     def _alignment_group(self):
-        self.up = self._axis_box(
-            "UpAxis", "Model axis that becomes up on the open card (Automatic: from its normals)"
-        )
-        self.facing = self._axis_box(
-            "FacingAxis", "Model axis that faces the viewer of the open card (Automatic: PCA)"
-        )
+        core = option_fields.fields("FitOptions")  # the docs: the core's (Automatic: unset)
+        self.up = self._axis_box("UpAxis", core["up"].doc)
+        self.facing = self._axis_box("FacingAxis", core["facing"].doc)
         return form_group("Alignment", [("Up", self.up), ("Facing", self.facing)])
 
     def _fit_group(self):
-        self.max_mechanisms = spin_box("MaxMechanisms", 1, fit_run.MAX_MECHANISMS, 8)
+        core = option_fields.fields("FitOptions")  # ranges, defaults and docs: the core's
+        self.max_mechanisms = option_spin_box("MaxMechanisms", core["max_mechanisms"])
         self.detail = real_box(
             "Detail",
             0.0,
@@ -68,9 +67,7 @@ class FromModelPanel(LongJobPanel):
             "0 coarse (few large prisms) to 1 fine (smaller prisms too)",
             decimals=2,
         )
-        self.seed = spin_box(
-            "Seed", 0, MAX_SEED, 1, "Same seed, same design; another seed tries other samples"
-        )
+        self.seed = option_spin_box("Seed", core["seed"])
         self.fit_button = push_button("Fit", "FitButton", self.fit)
         return form_group(
             "Fit",

@@ -20,7 +20,7 @@ AXES = {
     "+Z": (0.0, 0.0, 1.0),
     "-Z": (0.0, 0.0, -1.0),
 }
-MAX_SEED = 2**31 - 1  # a QSpinBox holds a signed 32-bit int
+SPIN_BOX_MAX = 2**31 - 1  # a QSpinBox holds a signed 32-bit int
 
 
 def axis_box(name, tip, default, first=()):
@@ -31,6 +31,11 @@ def axis_box(name, tip, default, first=()):
     box.setCurrentIndex(box.findText(default))
     box.setToolTip(tip)
     return box
+
+
+def axis_named(direction):
+    """The AXES name of a direction ("-Z" for (0, 0, -1))."""
+    return next(name for name, axis in AXES.items() if axis == tuple(float(v) for v in direction))
 
 
 def spin_box(name, low, high, value, tip=None, special=None):
@@ -44,6 +49,25 @@ def spin_box(name, low, high, value, tip=None, special=None):
     if special:
         box.setSpecialValueText(special)
     return box
+
+
+def option_spin_box(name, field, low=None, special=None):
+    """A whole-number box for a core option (popupwb.option_fields): its range (from `low` when
+    the panel asks for more), as far as a QSpinBox holds, at its default, its doc as the tip."""
+    low = field.min if low is None else low
+    high = min(field.max, SPIN_BOX_MAX)
+    return spin_box(name, int(low), int(high), int(field.default), _tip(field.doc), special)
+
+
+def option_real_box(name, field, step, decimals=3):
+    """A real-number box for a core option: its range, at its default, its doc as the tip."""
+    return real_box(
+        name, field.min, field.max, field.default, step, _tip(field.doc), decimals=decimals
+    )
+
+
+def _tip(doc):
+    return doc[:1].upper() + doc[1:]
 
 
 def real_box(name, low, high, value, step, tip, decimals=3):

@@ -222,15 +222,15 @@ Alignment placed(const ModelMesh& model, const Vec3& x, const Vec3& y, const Vec
     box.translate(Vec3(-fold, 0, 0));
     const double half_x = std::max(-box.min().x(), box.max().x());
     const double length = box.sizes().y(), height = box.sizes().z();
-    const double usable_w = room.width * (1 - 2 * room.margin);
-    const double usable_d = room.depth * (1 - 2 * room.margin);
+    const double usable_w = room.card.width * (1 - 2 * room.margin);
+    const double usable_d = room.card.depth * (1 - 2 * room.margin);
     // Closed, a box of height c and half depth g reaches c + g from the fold along the page
     // (docs/MATH.md, Fitting): the model's height plus its half depth must fit on one page.
     // Closed, a box's end panels stand out of its ends by its half depth: the length plus
     // both must fit along the fold.
     a.scale = std::min(usable_w / std::max(length + 2 * half_x, 1e-300),
                        usable_d / std::max(height + half_x, 1e-300));
-    const Vec3 shift(0, room.width / 2 - a.scale * box.center().y(), -a.scale * box.min().z());
+    const Vec3 shift(0, room.card.width / 2 - a.scale * box.center().y(), -a.scale * box.min().z());
     a.model_to_card.setIdentity();
     a.model_to_card.topLeftCorner<3, 3>() = a.scale * rotation;
     a.model_to_card.topRightCorner<3, 1>() = shift - a.scale * rotation * centre;

@@ -27,8 +27,8 @@ BuiltMechanisms build_mechanisms(RansacResult fit, const SurfaceSamples& samples
         for (const auto& [name, why] : refit_for_foldability(plans, options.min_part_mm))
             r.repairs.push_back({name, "trimmed", why});
         // Strictly inside the generators' ranges, by a millionth of the card (docs/DESIGN.md).
-        keep_inside_ranges(plans, options.card_width, options.card_depth,
-                           1e-6 * std::max(options.card_width, options.card_depth));
+        keep_inside_ranges(plans, options.card.width, options.card.depth,
+                           1e-6 * std::max(options.card.width, options.card.depth));
         if (plans_made++ == 0) // the bulk box's mapping counts as validation time
             timer.lap("map");
         stop_if_cancelled(cancel, "fit_design: mapping");

@@ -24,7 +24,7 @@ std::optional<Diagnostics> profile_design(const ModelMesh& model, const FitOptio
         DepthLayerFitOptions lo;
         lo.min_part_mm = options.min_part_mm;
         lo.seed = options.seed;
-        lo.range_margin = 1e-6 * std::max(options.card_width, options.card_depth);
+        lo.range_margin = 1e-6 * std::max(options.card.width, options.card.depth);
         Result<DepthLayerOutcome> tried =
             fit_depth_layers(model, r.model_to_card, r.scaffold, r.mechanisms, pairs, lo, cancel);
         if (!tried.ok) // its options come from checked FitOptions: not expected

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <utility>
 
 #include "build_mechanisms.hpp"
@@ -14,41 +13,6 @@
 #include "stage_timer.hpp"
 
 namespace popup {
-namespace {
-
-void range(Diagnostics& out, const std::string& option, double value, bool ok,
-           const std::string& allowed)
-{
-    if (ok)
-        return;
-    std::ostringstream m;
-    m << "FitOptions." << option << " = " << value << ", must be " << allowed;
-    out.push_back(Diagnostic::error(DiagnosticCode::bad_option, m.str(), about_parameter(option)));
-}
-
-} // namespace
-
-Diagnostics check_fit_options(const FitOptions& o)
-{
-    Diagnostics d;
-    range(d, "card_width", o.card_width, o.card_width >= 20 && o.card_width <= 2000,
-          ">= 20 and <= 2000 mm");
-    range(d, "card_depth", o.card_depth, o.card_depth >= 20 && o.card_depth <= 2000,
-          ">= 20 and <= 2000 mm");
-    range(d, "margin", o.margin, o.margin >= 0 && o.margin < 0.4, ">= 0 and < 0.4");
-    range(d, "max_mechanisms", o.max_mechanisms, o.max_mechanisms >= 1 && o.max_mechanisms <= 32,
-          "1 to 32");
-    range(d, "min_shape", o.min_shape, o.min_shape > 0 && o.min_shape < 1,
-          "> 0 and < 1 (a fraction of the model's diagonal)");
-    range(d, "probability", o.probability, o.probability > 0 && o.probability < 1, "> 0 and < 1");
-    range(d, "threshold", o.threshold, o.threshold > 0 && o.threshold <= 0.2,
-          "> 0 and <= 0.2 (a fraction of the model's diagonal)");
-    range(d, "min_part_mm", o.min_part_mm,
-          o.min_part_mm >= 0 && o.min_part_mm <= 0.25 * std::min(o.card_width, o.card_depth),
-          ">= 0 and <= a quarter of the card's smaller dimension (mm)");
-    range(d, "samples", o.samples, o.samples >= 500 && o.samples <= 2000000, "500 to 2000000");
-    return d;
-}
 
 Result<FitResult> fit_design(const ModelMesh& model, const FitOptions& options,
                              const CancelFlag* cancel)
@@ -72,15 +36,14 @@ Result<FitResult> fit_design(const ModelMesh& model, const FitOptions& options,
     // the scale; a model with no mirror plane offers a few alignments, each fitted below.
     const SurfaceSamples coarse =
         sample_surface(model, std::min(options.samples, 4000), options.seed);
-    CardRoom room{options.card_width, options.card_depth, options.margin};
+    CardRoom room{options.card, options.margin};
     const Result<std::vector<Alignment>> aligned =
         alignment_candidates(model, coarse, options.up, options.facing, room);
     if (!aligned.ok) {
         result.fail_with(aligned.diagnostics);
         return result;
     }
-    r.card.width = options.card_width;
-    r.card.depth = options.card_depth;
+    r.card = options.card;
     timer.lap("align");
     stop_if_cancelled(cancel, "fit_design: alignment");
 
@@ -128,6 +91,7 @@ Result<FitResult> fit_design(const ModelMesh& model, const FitOptions& options,
                         " mapped, every one dropped; see the repairs)");
     }
     timer.lap("report");
+    timer.finish();
     return result;
 }
 

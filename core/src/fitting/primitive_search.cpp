@@ -16,9 +16,9 @@ PrimitiveSearch search_primitives(const ModelMesh& model, const SurfaceSamples& 
         PrismHost card;
         card.name = "central fold";
         card.origin = Vec3::Zero();
-        card.length = options.card_width;
-        card.across_min = -options.card_depth;
-        card.across_max = options.card_depth;
+        card.length = options.card.width;
+        card.across_min = -options.card.depth;
+        card.across_max = options.card.depth;
         RansacOptions& ro = t.ro;
         ro.threshold = options.threshold * diagonal;
         // τ in samples: the five visible faces of a cube of edge min_shape·diagonal.

@@ -14,30 +14,15 @@ namespace popup::motion {
 
 namespace {
 
-// The options and targets the stages rely on, each bad one with the option it names.
+// The options (check_motion_options) and the targets the stages rely on, each bad one with the
+// option it names.
 Diagnostics check_inputs(const MotionTargets& targets, const MotionOptions& o)
 {
-    Diagnostics out;
+    Diagnostics out = check_motion_options(o);
     auto bad = [&](const std::string& option, const std::string& message) {
         out.push_back(
             Diagnostic::error(DiagnosticCode::bad_option, message, about_parameter(option)));
     };
-    if (!(o.motion_weight >= 0 && o.depth_weight >= 0 && o.motion_weight + o.depth_weight > 0))
-        bad("motion_weight", "motion_weight " + std::to_string(o.motion_weight) +
-                                 " and depth_weight " + std::to_string(o.depth_weight) +
-                                 " must be >= 0, not both 0");
-    if (!(o.collision_weight > 0))
-        bad("collision_weight",
-            "collision_weight " + std::to_string(o.collision_weight) + " must be > 0");
-    if (!(o.iterations >= 0 && o.iterations <= 100000000))
-        bad("iterations",
-            "iterations " + std::to_string(o.iterations) + " must be in [0, 100000000]");
-    if (!(o.search_chains >= 1 && o.search_chains <= 16))
-        bad("search_chains",
-            "search_chains " + std::to_string(o.search_chains) + " must be in [1, 16]");
-    if (!(o.view.card_width > 0 && o.view.card_depth > 0))
-        bad("card_width", "the card (" + std::to_string(o.view.card_width) + " × " +
-                              std::to_string(o.view.card_depth) + " mm) must be > 0 both ways");
     if (targets.paths.size() != targets.chains.size())
         bad("targets", "the targets have " + std::to_string(targets.paths.size()) + " paths for " +
                            std::to_string(targets.chains.size()) + " chains; they must match");
@@ -69,26 +54,25 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
         out.fail_with(bad);
         return out;
     }
-    r.card.width = o.view.card_width;
-    r.card.depth = o.view.card_depth;
+    r.card = o.view.card;
 
     // Mapping and parameter estimation (thesis §6.2–6.3), then the search's start (§6.4).
     Clock::time_point t = Clock::now();
     MotionDesign design = map_chains(targets, o, r.card, cancel, progress);
-    r.timings_s.push_back({"mapping", seconds_since(t)});
+    r.timings.add("mapping", seconds_since(t));
     start_layout(design);
 
     // Simulated annealing: independent search chains on their own threads, best kept.
     t = Clock::now();
     r.iterations = search_design(design, o, cancel, progress);
-    r.timings_s.push_back({"annealing", seconds_since(t)});
+    r.timings.add("annealing", seconds_since(t));
 
     // Compound moves the search rarely makes, then what it left unresolved.
     greedy_finish(design);
     release_far_remaps(design);
     t = Clock::now();
     repair_collisions(design);
-    r.timings_s.push_back({"collision repair", seconds_since(t)});
+    r.timings.add("collision repair", seconds_since(t));
 
     // The library's generators and the full simulator; what they refuse is made stationary.
     t = Clock::now();
@@ -99,11 +83,11 @@ Result<MotionResult> design_from_targets(const MotionTargets& targets, const Mot
     }
     out.diagnostics.insert(out.diagnostics.end(), built.diagnostics.begin(),
                            built.diagnostics.end());
-    r.timings_s.push_back({"build", seconds_since(t) - built.value});
-    r.timings_s.push_back({"validity", built.value});
+    r.timings.add("build", seconds_since(t) - built.value);
+    r.timings.add("validity", built.value);
 
     report_design(design, r);
-    r.timings_s.push_back({"total", seconds_since(begun)});
+    r.timings.total_s = seconds_since(begun);
     if (progress)
         progress->store(1.0);
     out.diagnostics.insert(out.diagnostics.end(), r.diagnostics.begin(), r.diagnostics.end());

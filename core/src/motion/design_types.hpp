@@ -8,7 +8,7 @@
 
 namespace popup::motion {
 
-/// The clock of the stages' timings (MotionResult::timings_s), and seconds since a reading of it.
+/// The clock of the stages' timings (MotionResult::timings), and seconds since a reading of it.
 using Clock = std::chrono::steady_clock;
 inline double seconds_since(Clock::time_point t)
 {

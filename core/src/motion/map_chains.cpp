@@ -24,7 +24,7 @@ double layer_height_max(const MotionOptions& o)
 {
     if (o.layer_height_max > 0)
         return o.layer_height_max;
-    return 25.0 * std::sqrt(o.view.card_width * o.view.card_depth / (210.0 * 148.5));
+    return 25.0 * std::sqrt(o.view.card.width * o.view.card.depth / (210.0 * 148.5));
 }
 
 MotionDesign map_chains(const MotionTargets& targets, const MotionOptions& o,

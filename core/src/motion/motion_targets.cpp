@@ -5,27 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 #include "popup/motion/adaptive_samples.hpp"
 
 namespace popup {
 
 namespace {
-
-std::string text(double x)
-{
-    std::ostringstream s;
-    s << x;
-    return s.str();
-}
-
-std::string text(const Vec3& v)
-{
-    std::ostringstream s;
-    s << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";
-    return s.str();
-}
 
 /// Rows: the card's x, y, z axes in the file's axes. z points at the viewer (against `view`), y
 /// is `up` made perpendicular to it, x = y × z (right-handed).
@@ -55,42 +40,24 @@ struct ViewRefusal {
     }
 };
 
-// The view's options and frame range, against the animation's frames.
+// The view's options (check_motion_view), then its frame range against the animation's frames.
 bool check_view(const Animation& animation, const MotionView& view, const ViewRefusal& refuse)
 {
     const int frames = animation.frames();
     if (frames < 2 || animation.local.size() != size_t(frames))
         return refuse("animation", "has " + std::to_string(frames) +
                                        " frames; check_animation it first (at least 2 needed)");
-    if (!view.view.allFinite() || view.view.norm() < 1e-12)
-        return refuse("view", "= " + text(view.view) + ", must be a finite non-zero direction");
-    if (!view.up.allFinite() || view.up.norm() < 1e-12)
-        return refuse("up", "= " + text(view.up) + ", must be a finite non-zero direction");
-    if (view.up.normalized().cross(view.view.normalized()).norm() < 1e-6)
-        return refuse("up", "= " + text(view.up) + " is parallel to view " + text(view.view) +
-                                ", must be across it");
-    if (!(view.card_width > 0.0) || !std::isfinite(view.card_width))
-        return refuse("card_width", "= " + text(view.card_width) + " mm, must be > 0");
-    if (!(view.card_depth > 0.0) || !std::isfinite(view.card_depth))
-        return refuse("card_depth", "= " + text(view.card_depth) + " mm, must be > 0");
-    if (!(view.margin >= 0.0 && view.margin < 0.5))
-        return refuse("margin", "= " + text(view.margin) + ", must be in [0, 0.5)");
-    if (view.scale && !(*view.scale > 0.0 && std::isfinite(*view.scale)))
-        return refuse("scale", "= " + text(*view.scale) + " mm per unit, must be > 0");
-    if (view.centre && !view.centre->allFinite())
-        return refuse("centre", "must be finite");
-    if (!(view.angle_tolerance > 0.0 && view.angle_tolerance < 90.0))
-        return refuse("angle_tolerance",
-                      "= " + text(view.angle_tolerance) + " degrees, must be in (0, 90)");
-    if (view.min_intervals < 1 || view.min_intervals > 1000)
-        return refuse("min_intervals",
-                      "= " + std::to_string(view.min_intervals) + ", must be in 1..1000");
+    const Diagnostics bad = check_motion_view(view);
+    if (!bad.empty()) {
+        refuse.result.fail_with(bad);
+        return false;
+    }
     const int first = view.first_frame;
     const int last = view.last_frame < 0 ? frames - 1 : view.last_frame;
-    if (first < 0 || first > frames - 1)
+    if (first > frames - 1)
         return refuse("first_frame", "= " + std::to_string(first) + ", must be in 0.." +
                                          std::to_string(frames - 2));
-    if (view.last_frame < -1 || last > frames - 1 || last <= first)
+    if (last > frames - 1 || last <= first)
         return refuse("last_frame",
                       "= " + std::to_string(view.last_frame) + ", must be -1 (the last) or in " +
                           std::to_string(first + 1) + ".." + std::to_string(frames - 1) +
@@ -140,8 +107,8 @@ Result<MotionTargets> motion_targets(const Animation& animation, const MotionVie
     if (view.scale) {
         scale = *view.scale;
     } else {
-        const double room_x = 2.0 * view.card_depth * (1.0 - 2.0 * view.margin);
-        const double room_y = view.card_width * (1.0 - 2.0 * view.margin);
+        const double room_x = 2.0 * view.card.depth * (1.0 - 2.0 * view.margin);
+        const double room_y = view.card.width * (1.0 - 2.0 * view.margin);
         scale = std::numeric_limits<double>::infinity();
         if (extent.x() > 0.0)
             scale = std::min(scale, room_x / extent.x());
@@ -151,7 +118,7 @@ Result<MotionTargets> motion_targets(const Animation& animation, const MotionVie
             return refuse("scale", "cannot be found: the character's projection is a point "
                                    "over the frame range (give scale)");
     }
-    const Vec2 centre = view.centre ? *view.centre : Vec2(0.0, 0.5 * view.card_width);
+    const Vec2 centre = view.centre ? *view.centre : Vec2(0.0, 0.5 * view.card.width);
     const Vec3 box_centre = box.center();
     // card = scale · (axes · p − box centre) + (centre, 0): the depth centre goes to z = 0.
     Eigen::Matrix4d to_card = Eigen::Matrix4d::Identity();

@@ -19,8 +19,8 @@ namespace {
 /// the length plus the depth fits the card's usable width, height plus half depth a page's.
 double expected_scale(double length, double half_depth, double height, const FitOptions& o)
 {
-    return std::min(o.card_width * (1 - 2 * o.margin) / (length + 2 * half_depth),
-                    o.card_depth * (1 - 2 * o.margin) / (height + half_depth));
+    return std::min(o.card.width * (1 - 2 * o.margin) / (length + 2 * half_depth),
+                    o.card.depth * (1 - 2 * o.margin) / (height + half_depth));
 }
 
 /// Distance from x to the nearest patch of the scaffold (planar polygons, computed here).
@@ -116,10 +116,10 @@ TEST(FitDesign, CuboidIsOneBoxFoldWhoseDesignStateIsTheCuboid)
     EXPECT_NEAR(q.at("depth_ground"), depth, 0.02 * 2 * depth);
     EXPECT_NEAR(q.at("depth_backdrop"), depth, 0.02 * 2 * depth);
     EXPECT_NEAR(q.at("height"), height, 0.02 * height);
-    EXPECT_NEAR(q.at("offset"), (o.card_width - length) / 2, 0.02 * length);
+    EXPECT_NEAR(q.at("offset"), (o.card.width - length) / 2, 0.02 * length);
 
     // The design state is the cuboid: its surface lies on the patches.
-    const Vec3 lo(-depth, (o.card_width - length) / 2, 0), hi(depth, lo.y() + length, height);
+    const Vec3 lo(-depth, (o.card.width - length) / 2, 0), hi(depth, lo.y() + length, height);
     const double diagonal = (hi - lo).norm();
     EXPECT_LE(mean_box_to_scaffold(r.scaffold, lo, hi), 0.005 * diagonal);
 }
@@ -157,7 +157,7 @@ struct Frame {
 #define EXPECT_ACROSS(value, model, frame) EXPECT_NEAR(value, (model)*frame.s, 0.02 * frame.depth)
 #define EXPECT_UP(value, model, frame) EXPECT_NEAR(value, (model)*frame.s, 0.02 * frame.height)
 
-FitResult fitted(const ModelMesh& m, const FitOptions& o = {})
+FitResult fitted(const ModelMesh& m, const FitOptions& o = FitOptions())
 {
     auto r = fit_design(m, o);
     EXPECT_TRUE(r.ok) << (r.diagnostics.empty() ? "" : r.diagnostics[0].message);

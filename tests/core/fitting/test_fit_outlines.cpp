@@ -247,7 +247,7 @@ TEST(FitOutlines, FitDesignProfilesTheArchedBlockDeterministically)
         EXPECT_LT(p.area, p.area_before); // only outlines that cut something are kept
     }
     bool timed = false;
-    for (const auto& [stage, seconds] : a.value.timings_s)
+    for (const auto& [stage, seconds] : a.value.timings.stages)
         timed |= stage == "outlines";
     EXPECT_TRUE(timed);
 

@@ -4,6 +4,7 @@
 
 #include "popup/fitting/surface_samples.hpp"
 #include "popup/input/model_mesh.hpp"
+#include "popup/model/card.hpp"
 #include "popup/model/result.hpp"
 
 namespace popup {
@@ -20,10 +21,10 @@ struct Alignment {
     Eigen::AlignedBox3d card_box; ///< the model's tight bounding box in the card's frame (mm)
 };
 
-/// What the card offers the model: width along the fold, each page's depth, the free border.
+/// What the card offers the model: its width along the fold and each page's depth, less the
+/// free border.
 struct CardRoom {
-    double width = 210.0;
-    double depth = 148.0;
+    CardParams card;
     double margin = 0.1; ///< fraction of each card dimension kept free on every side
 };
 

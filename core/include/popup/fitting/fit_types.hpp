@@ -4,13 +4,13 @@
 #include <cstdint>
 #include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "popup/mechanisms/designed_card.hpp"
 #include "popup/model/card.hpp"
 #include "popup/model/result.hpp"
 #include "popup/model/scaffold.hpp"
+#include "popup/model/stage_timings.hpp"
 #include "popup/sheets/sheet_layout.hpp"
 
 namespace popup {
@@ -21,9 +21,8 @@ struct FitOptions {
     /// Model direction that faces the viewer: it becomes the card's +x, the ground side the
     /// viewer stands on. Default: the normal of the model's mirror plane containing `up`.
     std::optional<Vec3> facing;
-    double card_width = 210.0; ///< card along its central fold (mm), from the paper
-    double card_depth = 148.0; ///< each page (mm)
-    double margin = 0.1;       ///< free border of the card, fraction of each card dimension
+    CardParams card;     ///< its width along the central fold and depth (mm), from the paper
+    double margin = 0.1; ///< free border of the card, fraction of each card dimension
     int max_mechanisms = 8;
     /// Smallest primitive worth finding: a cube of this edge, as a fraction of the model's
     /// diagonal (τ; in samples, its five visible faces: docs/MATH.md, Fitting).
@@ -78,13 +77,17 @@ struct FitResult {
     std::vector<FittedDepthLayer> depth_layers; ///< options.depth_layers: every layer tried
     bool valid = false;    ///< the simulator's full validity check passed on `scaffold`
     double coverage = 0.0; ///< fraction of the pseudo-vertices within threshold of the pop-up
-    std::vector<std::pair<std::string, double>> timings_s; ///< stage -> seconds, in order
+    StageTimings timings;  ///< each stage's seconds, in order, and the whole call's
     /// Warnings (mechanism_dropped, one per repair that dropped something) and, when no design
     /// passed, the last validity check's findings.
     Diagnostics diagnostics;
     double coverage_error = 1.0; ///< thesis eq. 5.1 over the returned mechanisms
     double symmetry_error = 0.0; ///< mean mirrored-sample distance / the model's diagonal
     long ransac_draws = 0;       ///< minimal samples drawn by the primitive search
+
+    /// `valid` with at least one mechanism on the card: a bare card is no pop-up, so no
+    /// design is made of it and no sheets are cut.
+    bool pops_up() const { return valid && !mechanisms.empty(); }
 };
 
 } // namespace popup

@@ -4,31 +4,9 @@
 
 #include "popup/geometry/pose.hpp"
 #include "popup/motion/linkage_chains.hpp"
+#include "popup/motion/motion_view.hpp"
 
 namespace popup {
-
-/// How the character sits on the card (thesis ch. 6: the user's viewpoint and placement). The
-/// card frame is the project's: y along the central fold, the card open flat in z = 0, ground
-/// page x > 0. The viewer looks down from +z: the viewer's right (view × up) becomes +x, the
-/// file's up +y. A character facing the eye has its own right hand at −x.
-struct MotionView {
-    Vec3 view = Vec3(0, 0, -1); ///< from the eye toward the character, in the file's axes
-    Vec3 up = Vec3(0, 1, 0);    ///< the file's direction that becomes the card's +y
-    /// Card mm per file unit; default: the projected bounding box (over the frame range) fits the
-    /// card inside `margin`.
-    std::optional<double> scale;
-    /// Card (x, y) of the projected bounding box's centre; default (0, width / 2).
-    std::optional<Vec2> centre;
-    double margin = 0.1;       ///< free border, fraction of each card dimension
-    double card_width = 210.0; ///< along the fold (mm)
-    double card_depth = 148.0; ///< each page (mm)
-    int first_frame = 0;
-    int last_frame = -1;          ///< -1: the last
-    double angle_tolerance = 2.0; ///< τangle (degrees) of the adaptive sampling (thesis §6.2)
-    /// The adaptive sampling starts from this many equal intervals of s, so a straight path keeps
-    /// samples along it and eq 6.6 sees its pace (adaptive_samples.hpp).
-    int min_intervals = 8;
-};
 
 /// A chain's target motion on the card. s in [0, 1] is the frame parameter: s = 0 the first
 /// frame, where the card is closed (θ = 0), s = 1 the last frame, the card open flat (θ = 180°);

@@ -1,13 +1,14 @@
 #pragma once
 #include <cstdint>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "popup/mechanisms/designed_card.hpp"
 #include "popup/model/card.hpp"
+#include "popup/model/option_field.hpp"
 #include "popup/model/result.hpp"
 #include "popup/model/scaffold.hpp"
+#include "popup/model/stage_timings.hpp"
 #include "popup/motion/motion_targets.hpp"
 
 // The options and the result of design_motion, below its driver and its stages.
@@ -28,6 +29,17 @@ struct MotionOptions {
     std::uint64_t seed = 1;
     bool outlines = true; ///< moving and stationary patches take the character's outline
 };
+
+/// MotionOptions' fields (motion_options.cpp): its own first (motion_weight ... outlines), then
+/// the view's (group "view", motion_view_fields()) and the chains' (group "chains"); each with
+/// its name, doc, unit, default (MotionOptions{}'s) and the range design_motion accepts. The
+/// workbench builds `popup animate`'s flags and the From-animation panel from them.
+const std::vector<OptionField>& motion_option_fields();
+
+/// The ranges design_motion accepts (motion_option_fields(), check_motion_view, and the two
+/// weights of eq 6.5 not both 0); one bad_option error per option outside them, naming it and
+/// its range. The frame range against the animation is motion_targets' to check.
+Diagnostics check_motion_options(const MotionOptions& options);
 
 /// One chain of the result, as report.json lists it.
 struct ChainReport {
@@ -60,8 +72,12 @@ struct MotionResult {
     double weighted_floor = 0.0; ///< Σ v_j floor(j): no design on this card scores lower
     long iterations = 0;         ///< annealing iterations run (all search chains)
     double cost = 0.0;           ///< eq 6.5 of the returned state
-    std::vector<std::pair<std::string, double>> timings_s; ///< stage -> seconds, in order
+    StageTimings timings; ///< each stage's seconds, in order ("targets" first), and the call's
     Diagnostics diagnostics;
+
+    /// `valid` with at least one mechanism on the card: when every chain is printed on the page
+    /// nothing stands up, so no design is made of it and no sheets are cut.
+    bool pops_up() const { return valid && !mechanisms.empty(); }
 };
 
 } // namespace popup
