@@ -26,7 +26,7 @@ def _result(popupcore, mechanisms, scale=2.0):
 
 
 BOX = _mechanism(
-    type="box_fold",
+    kind="box_fold",
     name="B1",
     host="central fold",
     parameters=dict(
@@ -41,13 +41,13 @@ BOX = _mechanism(
     ),
 )
 TENT = _mechanism(
-    type="tent_fold",
+    kind="tent_fold",
     name="T1",
     host="B1.top",
     parameters=dict(offset=10.0, width=30.0, foot=10.0, foot_backdrop=10.0, slope=15.0),
 )
 VFOLD = _mechanism(
-    type="v_fold",
+    kind="v_fold",
     name="V1",
     host="central fold",
     parameters=dict(
@@ -184,7 +184,7 @@ def test_an_unknown_parameter_field_is_named(doc, core):
     from popupwb.fitting.design_from_fit import build_design
 
     bad = _mechanism(
-        type="tent_fold", name="T1", host="central fold", parameters=dict(foot=10, apex=3)
+        kind="tent_fold", name="T1", host="central fold", parameters=dict(foot=10, apex=3)
     )
     with pytest.raises(ValueError, match=r"T1: parameter\(s\) \['apex'\]"):
         build_design(doc, _result(core, [bad]))
