@@ -16,7 +16,7 @@ DEBS := cmake make g++ pkg-config freecad \
 	libpolyclipping-dev libpng-dev libjpeg62-turbo-dev python3-pil python3-svgwrite python3-reportlab python3-matplotlib python3-pypdf librecad \
 	xvfb xauth clang-format black patch clang-14 libclang-rt-14-dev llvm-14
 
-.PHONY: all deps build test demo bench lint format install install-dev clean fuzz asan layers
+.PHONY: all deps build test demo bench lint format install install-dev clean fuzz asan layers corpus
 
 all: build
 
@@ -67,6 +67,13 @@ asan: deps
 # out/layers.png, and every arrow that runs back up or circle, if any (exit 1).
 layers:
 	$(PYTHON) tools/layers.py --png out/layers.png
+
+# The realistic corpus (tools/make_corpus.py, docs/CORPUS.md) into $(BUILD)/corpus, and a preview
+# of each model (its file read back through popupcore) with the contact sheet beside them.
+corpus: deps
+	$(PYTHON) tools/make_corpus.py --out $(BUILD)/corpus
+	PYTHONPATH=$(CURDIR)/$(BUILD)/python $(PYTHON) tools/corpus_previews.py --corpus $(BUILD)/corpus \
+	  --out $(BUILD)/corpus/previews --sheet $(BUILD)/corpus/previews/contact_sheet.png
 
 lint: deps
 	clang-format --dry-run --Werror $$(git ls-files '*.cpp' '*.hpp')

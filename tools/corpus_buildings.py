@@ -115,7 +115,8 @@ def house_hip(up="+z"):
 # shed_cabin, metres, moved to (1520, -860, 212) as a survey-referenced export would be.
 SHED_OFFSET = (1520.0, -860.0, 212.0)
 SHED = {
-    "walls": ((0, 0, 0.25), (6, 4, 3.2)),
+    "front_wall": ((0, 0, 0.25), (6, 0.2, 3.2)),
+    "back_wall": ((0, 3.8, 0.25), (6, 4, 2.4)),
     "roof_high_edge": ((-0.4, -0.6, 3.47), (6.4, -0.6, 3.47)),
 }
 
