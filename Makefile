@@ -70,7 +70,8 @@ layers:
 
 # The realistic corpus (tools/make_corpus.py, docs/CORPUS.md) into $(BUILD)/corpus, and a preview
 # of each model (its file read back through popupcore) with the contact sheet beside them.
-corpus: deps
+corpus: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS) --target popupcore
 	$(PYTHON) tools/make_corpus.py --out $(BUILD)/corpus
 	PYTHONPATH=$(CURDIR)/$(BUILD)/python $(PYTHON) tools/corpus_previews.py --corpus $(BUILD)/corpus \
 	  --out $(BUILD)/corpus/previews --sheet $(BUILD)/corpus/previews/contact_sheet.png

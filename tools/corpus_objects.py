@@ -164,45 +164,60 @@ def spider(up="+z"):
     return {"pieces": pieces}
 
 
-def bust_scan(up="+z"):
-    """A scanned head on a neck, millimetres: one displaced grid (radius with a nose, brows and
-    scan noise), open at the bottom cut and with three dropped patches (holes), vertex colours."""
-    rng = np.random.default_rng(7)
-    rings, segments = 56, 96
-    phi = np.linspace(0, math.radians(150), rings)
-    theta = np.linspace(0, 2 * math.pi, segments, endpoint=False)
-    pp, tt = np.meshgrid(phi, theta, indexing="ij")
-    front = np.exp(-((tt - 1.5 * math.pi) ** 2) / 0.05)
-    nose = 18 * front * np.exp(-((pp - 1.65) ** 2) / 0.02)
-    brow = 6 * np.exp(-((tt - 1.5 * math.pi) ** 2) / 0.4) * np.exp(-((pp - 1.3) ** 2) / 0.01)
-    neck = np.where(pp > 2.1, -35 * np.sin((pp - 2.1) / 0.52 * math.pi / 2), 0.0)
-    radius = 100 + nose + brow + neck + rng.normal(0, 0.3, pp.shape)
-    x = radius * np.sin(pp) * np.cos(tt) * 0.82
-    y = radius * np.sin(pp) * np.sin(tt) * 0.9
-    z = 120 + radius * np.cos(pp) * 1.12
-    vertices = np.column_stack([x.ravel(), y.ravel(), z.ravel()])
-    index = np.arange(rings * segments).reshape(rings, segments)
-    nxt = np.roll(index, -1, axis=1)
-    a, b, c, d = index[:-1], index[1:], nxt[1:], nxt[:-1]
-    triangles = np.vstack(
-        [
-            np.column_stack([a.ravel(), b.ravel(), c.ravel()]),
-            np.column_stack([a.ravel(), c.ravel(), d.ravel()]),
-        ]
+def _bust_profile():
+    """(r, z) of the bust's surface of revolution from the crown down: head, neck, shoulders."""
+    phi = np.linspace(0, 0.8 * math.pi, 40)
+    head = np.column_stack([80 * np.sin(phi), 220 + 100 * np.cos(phi)])
+    neck_z = np.linspace(132, 96, 5)
+    neck = np.column_stack([np.full(5, 44.0), neck_z])
+    shoulder_z = np.linspace(88, 0, 12)
+    shoulders = np.column_stack(
+        [44 + 110 * np.sin(0.5 * math.pi * (88 - shoulder_z) / 88), shoulder_z]
     )
-    keep = np.ones(len(triangles), dtype=bool)
-    for ring, segment in ((20, 10), (33, 60), (44, 30)):  # occluded spots the scanner missed
+    return np.vstack([head, neck, shoulders])
+
+
+def bust_scan(up="+z"):
+    """A scanned bust, millimetres: a surface of revolution (head, neck, shoulders) with a nose,
+    ears and scan noise, open at the bottom cut and with three dropped patches (holes), vertex
+    colours; the crown is one vertex, every ring below has `segments` of them."""
+    rng = np.random.default_rng(7)
+    profile, segments = _bust_profile(), 96
+    theta = np.linspace(0, 2 * math.pi, segments, endpoint=False)
+    rr, tt = np.meshgrid(profile[1:, 0], theta, indexing="ij")
+    zz = np.repeat(profile[1:, 1][:, None], segments, axis=1)
+    front = np.exp(-((tt - 1.5 * math.pi) ** 2) / 0.04)
+    rr = (
+        rr
+        + 22 * front * np.exp(-((zz - 205) ** 2) / 150)
+        + 10 * front * np.exp(-((zz - 160) ** 2) / 200)
+    )
+    ears = np.exp(-(np.minimum(tt, 2 * math.pi - tt) ** 2) / 0.03) + np.exp(
+        -((tt - math.pi) ** 2) / 0.03
+    )
+    rr = rr + 9 * ears * np.exp(-((zz - 215) ** 2) / 300) + rng.normal(0, 0.3, rr.shape)
+    squash = np.where(zz < 100, 0.55, 0.92)  # shoulders wide along x, the head a little
+    x, y = rr * np.cos(tt), rr * np.sin(tt) * squash
+    vertices = np.vstack(
+        [[(0.0, 0.0, profile[0, 1])], np.column_stack([x.ravel(), y.ravel(), zz.ravel()])]
+    )
+    rings = len(profile) - 1
+    index = 1 + np.arange(rings * segments).reshape(rings, segments)
+    nxt = np.roll(index, -1, axis=1)
+    crown = np.column_stack([np.zeros(segments, dtype=int), index[0], nxt[0]])
+    a, b, c, d = index[:-1], index[1:], nxt[1:], nxt[:-1]
+    quads = [
+        np.column_stack([a.ravel(), b.ravel(), c.ravel()]),
+        np.column_stack([a.ravel(), c.ravel(), d.ravel()]),
+    ]
+    keep = np.ones(len(quads[0]), dtype=bool)
+    for ring, segment in ((12, 10), (33, 60), (50, 30)):  # occluded spots the scanner missed
         for dr in range(2):
-            for ds in range(3):
-                cell = (ring + dr) * segments + (segment + ds)
-                keep[[cell, cell + (rings - 1) * segments]] = False
+            keep[(ring + dr) * segments + segment : (ring + dr) * segments + segment + 3] = False
+    triangles = np.vstack([crown, quads[0][keep], quads[1][keep]])
     grey = 0.62 + 0.05 * rng.standard_normal(len(vertices))
     colours = np.clip(np.column_stack([grey, grey * 0.97, grey * 0.92]), 0, 1)
-    return {
-        "pieces": [
-            Piece("scan", to_file(vertices, up), triangles[keep], (0.62, 0.6, 0.57), colours)
-        ]
-    }
+    return {"pieces": [Piece("scan", to_file(vertices, up), triangles, (0.62, 0.6, 0.57), colours)]}
 
 
 def tree_cards(up="+z"):

@@ -228,9 +228,9 @@ CORPUS = {
         "organic open-shell holes scan-noise vertex-colours",
         parts=1,
         components=1,
-        bbox=((NAN, NAN, NAN), (NAN, NAN, 232.0)),
+        bbox=((NAN, NAN, 0), (NAN, NAN, 320)),
         open=True,
-        summary="scanned head, open below, three holes, noise",
+        summary="scanned bust, open below, three holes, noise",
     ),
     "tree_cards": _entry(
         objects.tree_cards,
