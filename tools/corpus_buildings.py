@@ -8,7 +8,6 @@ import numpy as np
 
 from corpus_shapes import (
     box,
-    box_to_file,
     cut,
     ellipsoid,
     extrude_xz,
@@ -376,8 +375,3 @@ def barn_bmp(up="+z"):
         ],
         "texture": ("barn.bmp", barn_texture()),
     }
-
-
-def answers_in_file(answers, up, offset=(0, 0, 0)):
-    """Boxes and lines of the design frame in the file's axes."""
-    return {key: box_to_file(lo, hi, up, offset) for key, (lo, hi) in answers.items()}

@@ -11,7 +11,6 @@ import numpy as np
 from corpus_shapes import (
     Piece,
     box,
-    cut,
     ellipsoid,
     extrude_xz,
     extrude_yz,

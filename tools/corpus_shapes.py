@@ -156,13 +156,6 @@ def sheet(name, quads, colour, up="+z", offset=(0, 0, 0), flip=()):
     return Piece(name, to_file(vertices, up, offset), triangles, colour)
 
 
-def unshared(p):
-    """The piece with a corner of its own for every triangle (so uvs can be set per face)."""
-    vertices = p.vertices[p.triangles.reshape(-1)]
-    triangles = np.arange(len(vertices)).reshape(-1, 3)
-    return Piece(p.name, vertices, triangles, p.colour)
-
-
 def box_uvs(design_vertices, scale, v_range=(0.0, 1.0)):
     """Planar uvs per triangle from the design-frame corners: each face projected on the plane
     its normal is closest to, `scale` units to one texture repeat, v squeezed into v_range."""

@@ -344,6 +344,10 @@ def write_3mf(path, pieces, unit="millimeter"):
         'Type="http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel"/></Relationships>\n'
     )
     with zipfile.ZipFile(path, "w", zipfile.ZIP_DEFLATED) as z:
-        z.writestr("[Content_Types].xml", content_types)
-        z.writestr("_rels/.rels", rels)
-        z.writestr("3D/3dmodel.model", model)
+        for name, text in (
+            ("[Content_Types].xml", content_types),
+            ("_rels/.rels", rels),
+            ("3D/3dmodel.model", model),
+        ):
+            entry = zipfile.ZipInfo(name, date_time=(2024, 1, 1, 0, 0, 0))  # same bytes each run
+            z.writestr(entry, text, zipfile.ZIP_DEFLATED)
