@@ -13,7 +13,7 @@ DEBS := cmake make g++ pkg-config freecad \
 	libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libtbb-dev \
 	libcgal-dev libboost-dev libeigen3-dev pybind11-dev python3-dev nlohmann-json3-dev libassimp-dev \
 	python3-ezdxf python3-pytest python3-numpy libgtest-dev libbenchmark-dev \
-	libpolyclipping-dev libpng-dev libjpeg62-turbo-dev python3-pil python3-svgwrite python3-reportlab python3-matplotlib python3-pypdf librecad \
+	libpolyclipping-dev libstb-dev python3-pil python3-svgwrite python3-reportlab python3-matplotlib python3-pypdf librecad \
 	xvfb xauth clang-format black patch clang-14 libclang-rt-14-dev llvm-14
 
 .PHONY: all deps build test demo bench lint format install install-dev clean fuzz asan layers corpus

@@ -62,12 +62,25 @@ py::dict metrics_dict(const FitMetrics& m)
 void bind_model_input(py::module_& m)
 {
     m.def(
-        "load_model", [](const std::string& path) { return bindings::unwrap(load_model(path)); },
-        py::arg("path"), py::call_guard<py::gil_scoped_release>(),
+        "load_model",
+        [](const std::string& path) {
+            Result<ModelMesh> r;
+            {
+                py::gil_scoped_release release;
+                r = load_model(path);
+            }
+            const Diagnostics warnings = r.diagnostics;
+            py::object mesh = py::cast(bindings::unwrap(std::move(r)));
+            mesh.attr("warnings") = bindings::diagnostic_list(warnings);
+            return mesh;
+        },
+        py::arg("path"),
         "Reads a mesh file through assimp (OBJ, STL, PLY, OFF, glTF/GLB, FBX, Collada, 3MF, ...) "
         "into one ModelMesh with node transforms applied, triangulated, identical vertices "
         "joined, with vertex colours, texture coordinates and texture where the file has them. "
-        "DesignError (unreadable_model, then check_model's codes) names the file and the reason.");
+        "DesignError (unreadable_model, then check_model's codes) names the file and the reason; "
+        "the mesh's .warnings lists a texture that cannot be read (unreadable_texture), the mesh "
+        "loading all the same.");
     m.def(
         "clean_model",
         [](const ModelMesh& mesh) {

@@ -19,7 +19,8 @@ using Rows3i = Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor>;
 
 void bind_model_mesh(py::module_& m)
 {
-    py::class_<ModelMesh>(m, "ModelMesh",
+    // dynamic_attr: load_model hangs its warnings on the mesh it returns (.warnings).
+    py::class_<ModelMesh>(m, "ModelMesh", py::dynamic_attr(),
                           "A triangle mesh given as the model of a pop-up (model units taken as "
                           "mm); colours and texture coordinates are per vertex")
         .def(py::init([](const Rows3d& vertices, const Rows3i& triangles, std::string source) {

@@ -400,5 +400,5 @@ def test_a_png_texture_written_by_pil_is_mapped_by_its_uvs(scaffold, tmp_path):
         assert colour == (round(255 * (1 - blue)), 0, round(255 * blue), 255), point
     mesh.texture = str(tmp_path / "missing.png")
     shaded = popupcore.render_artwork(mesh, ground, pixels_per_mm=1.0)
-    assert [w["code"] for w in shaded.warnings] == ["unreadable_model"]
+    assert [w["code"] for w in shaded.warnings] == ["unreadable_texture"]
     assert "missing.png" in shaded.warnings[0]["message"]

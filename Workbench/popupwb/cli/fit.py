@@ -114,6 +114,10 @@ def run(args):
             except (ValueError, RuntimeError, OSError) as e:
                 raise InputError(steps.named(args.model, e))
     say(f"{what}: {len(model.vertices)} vertices, {len(model.triangles)} triangles")
+    # A texture that cannot be read leaves the model usable, shaded grey on the sheets.
+    model_warnings = list(getattr(model, "warnings", None) or [])
+    for d in model_warnings:
+        say(f"warning: {d['code']}: {d['message']}")
     with stages.stage("clean", "cleaning the mesh"):
         try:
             model, repairs = fit_run.clean_model(model)
@@ -129,6 +133,7 @@ def run(args):
         model_file=os.path.abspath(args.model),
         model=model,
         model_repairs=repairs,
+        model_warnings=model_warnings,
         options=fit_run.options_dict(options),
     )
     say(f"fitting (seed {options.seed}, at most {options.max_mechanisms} mechanisms)")

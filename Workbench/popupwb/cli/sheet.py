@@ -226,12 +226,16 @@ def run(args):
 def _artwork(args, design, sheet_set):
     """The model's appearance on each laid-out patch, for a card designed from a model (its
     SourceModel) whose CuttingSheets print it (PrintArtwork, cutting_sheet.card_prints_artwork);
-    None otherwise. The print layer of the PDF and SVG carries it, with registration marks."""
+    None otherwise. The print layer of the PDF and SVG carries it, with registration marks; its
+    warnings (a texture that cannot be read) are said on stderr."""
     if design.model is None:
         return None
-    from popupwb.sheets.print_artwork import source_model_artwork
+    from popupwb.sheets.print_artwork import artwork_warnings, source_model_artwork
 
     try:
-        return source_model_artwork(design.model, design.scaffold, sheet_set, args.design)
+        artwork = source_model_artwork(design.model, design.scaffold, sheet_set, args.design)
     except ValueError as e:
         raise InputError(one_line(e))
+    for d in artwork_warnings(artwork):  # an unreadable texture: the model prints shaded
+        print(printable(f"warning: {d['code']}: {d['message']}"), file=sys.stderr)
+    return artwork

@@ -400,6 +400,11 @@ def export_cutting_sheet(obj, folder, style=None):
         raise ValueError(f"{obj.Label}: no layout to export ({reason}); fix it and recompute")
     sheet_set = stored_sheet_set(obj)
     artwork = sheet_artwork(obj, sheet_set) if getattr(obj, "PrintArtwork", False) else None
+    if artwork:
+        from popupwb.sheets.print_artwork import artwork_warnings
+
+        for d in artwork_warnings(artwork):  # an unreadable texture: the model prints shaded
+            FreeCAD.Console.PrintWarning(f"{obj.Label}: {d['message']}\n")
     try:
         return export.export_sheets(
             sheet_set, folder, style=style, not_valid=not_valid_of(obj), artwork=artwork

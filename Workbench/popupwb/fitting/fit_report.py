@@ -93,6 +93,7 @@ def build_report(
     model,
     model_repairs,
     options,
+    model_warnings=(),
     result,
     validity,
     metrics,
@@ -104,7 +105,8 @@ def build_report(
     """The report dict. `result` is the popupcore.FitResult (None when the fit found no design),
     `validity` the check of the built card (popupwb.validity.run_check's dict, or None),
     `metrics` popupcore.fit_metrics' dict (or None), `patches` the card's patch count, `stages`
-    [(stage, seconds)] of every stage run, `files` {role: path} written."""
+    [(stage, seconds)] of every stage run, `files` {role: path} written, `model_warnings` the
+    diagnostic dicts of reading the model (load_model's .warnings: an unreadable texture)."""
     mechanisms = [mechanism_entry(m) for m in result.mechanisms] if result is not None else []
     valid = bool(result is not None and result.valid and validity is not None and validity["valid"])
     report = {
@@ -114,6 +116,9 @@ def build_report(
             "file": model_file,
             "vertices": int(len(model.vertices)) if model is not None else 0,
             "triangles": int(len(model.triangles)) if model is not None else 0,
+            "warnings": [
+                {key: d[key] for key in ("severity", "code", "message")} for d in model_warnings
+            ],
         },
         "valid": valid,
         "mechanisms": mechanisms,

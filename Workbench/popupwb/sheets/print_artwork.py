@@ -163,6 +163,16 @@ def source_model_artwork(mesh, scaffold, sheet_set, owner, run=None):
         raise ValueError(f"{owner}: artwork of the source model: {why}") from None
 
 
+def artwork_warnings(artwork):
+    """The distinct warnings of rendered images {patch id: PatchArtwork} (each image carries its
+    model's: a texture that cannot be read, so the model prints shaded), in order."""
+    distinct = {}
+    for art in (artwork or {}).values():
+        for d in getattr(art, "warnings", None) or []:
+            distinct.setdefault(d["message"], d)
+    return list(distinct.values())
+
+
 def pil_image(rgba):
     """The image as a PIL RGBA image (reportlab draws it, keeping the alpha as a soft mask)."""
     from PIL import Image

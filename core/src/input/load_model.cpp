@@ -17,6 +17,7 @@
 
 #include "child_process.hpp"
 #include "model_mesh_bytes.hpp"
+#include "popup/input/model_texture.hpp"
 #include "text_coordinates.hpp"
 
 namespace popup {
@@ -241,29 +242,51 @@ std::string read_with_assimp(const std::string& path, ModelMesh& mesh)
     return {};
 }
 
-// The mesh crosses from the reading child to the caller as plain bytes: why not, then the mesh.
-std::string encode(const std::string& why, const ModelMesh& mesh)
+/// Why the mesh's texture cannot be shown ("" when it decodes or there is none). Decoded here,
+/// in the child, so a decoder crash on a hostile image ends only the reader.
+std::string texture_problem(const ModelMesh& mesh)
+{
+    if (mesh.texture.empty())
+        return {};
+    const Result<RgbaImage> image = read_model_texture(mesh);
+    if (image.ok)
+        return {};
+    std::string why;
+    for (const Diagnostic& d : image.diagnostics)
+        why += (why.empty() ? "" : "; ") + d.message;
+    return why + (mesh.colours.empty() ? "; its artwork is the shaded base colour"
+                                       : "; its artwork shows the vertex colours");
+}
+
+// The mesh crosses from the reading child to the caller as plain bytes: why not, the mesh, then
+// why its texture cannot be shown.
+std::string encode(const std::string& why, const ModelMesh& mesh, const std::string& texture)
 {
     ByteWriter w;
     w.put_text(why);
     put_mesh(w, mesh);
+    w.put_text(texture);
     return w.bytes;
 }
 
-/// Reads the file in a child process (child_process.hpp). Returns why not ("" when read).
-std::string read_isolated(const std::string& path, double timeout_s, ModelMesh& mesh)
+/// Reads the file in a child process (child_process.hpp). Returns why not ("" when read);
+/// `texture_warning` says why the texture cannot be shown ("" when it can or there is none).
+std::string read_isolated(const std::string& path, double timeout_s, ModelMesh& mesh,
+                          std::string& texture_warning)
 {
     std::string bytes;
     const std::string failed = run_in_child(
         [&] {
             ModelMesh read;
-            std::string why;
+            std::string why, texture;
             try {
                 why = read_with_assimp(path, read);
+                if (why.empty())
+                    texture = texture_problem(read);
             } catch (const std::exception& e) {
                 why = std::string("assimp failed: ") + e.what();
             }
-            return encode(why, read);
+            return encode(why, read, texture);
         },
         timeout_s, bytes);
     if (!failed.empty())
@@ -271,6 +294,7 @@ std::string read_isolated(const std::string& path, double timeout_s, ModelMesh& 
     ByteReader r{bytes};
     const std::string why = r.get_text();
     get_mesh(r, mesh);
+    texture_warning = r.get_text();
     if (!r.whole())
         return "the reader process ended without a whole answer";
     return why;
@@ -307,11 +331,16 @@ Result<ModelMesh> load_model(const std::string& path, const LoadModelOptions& op
         return result;
     }
     ModelMesh mesh;
-    const std::string why = read_isolated(path, options.timeout_s, mesh);
+    std::string texture_warning;
+    const std::string why = read_isolated(path, options.timeout_s, mesh, texture_warning);
     if (!why.empty())
         return refuse(why);
     mesh.source = path;
-    return check_model(std::move(mesh));
+    Result<ModelMesh> checked = check_model(std::move(mesh));
+    if (checked.ok && !texture_warning.empty())
+        checked.warn(DiagnosticCode::unreadable_texture, texture_warning,
+                     about_parameter(checked.value.texture));
+    return checked;
 }
 
 } // namespace popup

@@ -1,143 +1,85 @@
 #include "popup/input/texture_image.hpp"
 
-#include <csetjmp>
-#include <cstdio>
+#include <climits>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <sstream>
 
-#include <jpeglib.h>
-#include <png.h>
+#include <stb_image.h>
 
 namespace popup {
 
+const char* const kTextureFormats = "PNG, JPEG, TGA, BMP, GIF, PSD, HDR, PIC or PNM";
+
 namespace {
 
-bool starts_with(const std::string& bytes, const char* signature, size_t n)
-{
-    return bytes.size() >= n && std::memcmp(bytes.data(), signature, n) == 0;
-}
-
-Result<RgbaImage> too_large(const std::string& name, long long width, long long height)
+Result<RgbaImage> unreadable(const std::string& name, const std::string& why)
 {
     Result<RgbaImage> r;
-    r.fail(DiagnosticCode::unreadable_model,
-           "texture " + name + ": " + std::to_string(width) + " x " + std::to_string(height) +
-               " pixels, at most " + std::to_string(kMaxTexturePixels) + " pixels are read");
+    r.fail(DiagnosticCode::unreadable_texture, "texture " + name + ": " + why);
     return r;
 }
 
-Result<RgbaImage> decode_png(const std::string& bytes, const std::string& name)
+/// stb_image's reason for the last failure on this thread (a short phrase such as "bad png sig").
+std::string stb_reason()
 {
-    Result<RgbaImage> r;
-    png_image png;
-    std::memset(&png, 0, sizeof png);
-    png.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_memory(&png, bytes.data(), bytes.size())) {
-        r.fail(DiagnosticCode::unreadable_model,
-               "texture " + name + ": not a readable PNG (" + png.message + ")");
-        return r;
-    }
-    if (static_cast<long long>(png.width) * png.height > kMaxTexturePixels) {
-        png_image_free(&png);
-        return too_large(name, png.width, png.height);
-    }
-    png.format = PNG_FORMAT_RGBA;
-    RgbaImage& image = r.value;
-    image.width = int(png.width);
-    image.height = int(png.height);
-    image.pixels.resize(PNG_IMAGE_SIZE(png));
-    if (!png_image_finish_read(&png, nullptr, image.pixels.data(), 0, nullptr)) {
-        r.fail(DiagnosticCode::unreadable_model,
-               "texture " + name + ": broken PNG data (" + png.message + ")");
-        image = RgbaImage{};
-    }
-    return r;
-}
-
-// libjpeg reports errors through error_exit, which must not return: jump back to the caller.
-struct JpegErrors {
-    jpeg_error_mgr manager;
-    std::jmp_buf back;
-    char message[JMSG_LENGTH_MAX];
-};
-
-void jpeg_fail(j_common_ptr info)
-{
-    JpegErrors* errors = reinterpret_cast<JpegErrors*>(info->err);
-    errors->manager.format_message(info, errors->message);
-    std::longjmp(errors->back, 1);
-}
-
-// The decompressor and the output live on the heap, so nothing the jump skips needs destroying.
-struct JpegDecoder {
-    jpeg_decompress_struct info;
-    JpegErrors errors;
-    RgbaImage image;
-};
-
-Result<RgbaImage> decode_jpeg(const std::string& bytes, const std::string& name)
-{
-    Result<RgbaImage> r;
-    auto decoder = std::make_unique<JpegDecoder>();
-    JpegDecoder* d = decoder.get();
-    d->info.err = jpeg_std_error(&d->errors.manager);
-    d->errors.manager.error_exit = jpeg_fail;
-    if (setjmp(d->errors.back)) {
-        jpeg_destroy_decompress(&d->info);
-        r.fail(DiagnosticCode::unreadable_model,
-               "texture " + name + ": broken JPEG data (" + d->errors.message + ")");
-        return r;
-    }
-    jpeg_create_decompress(&d->info);
-    jpeg_mem_src(&d->info, reinterpret_cast<const unsigned char*>(bytes.data()),
-                 static_cast<unsigned long>(bytes.size()));
-    jpeg_read_header(&d->info, TRUE);
-    if (static_cast<long long>(d->info.image_width) * d->info.image_height > kMaxTexturePixels) {
-        const long long w = d->info.image_width, h = d->info.image_height;
-        jpeg_destroy_decompress(&d->info);
-        return too_large(name, w, h);
-    }
-    d->info.out_color_space = JCS_EXT_RGBA; // libjpeg-turbo: alpha filled with 255
-    jpeg_start_decompress(&d->info);
-    d->image.width = int(d->info.output_width);
-    d->image.height = int(d->info.output_height);
-    d->image.pixels.resize(size_t(4) * d->image.width * d->image.height);
-    while (d->info.output_scanline < d->info.output_height) {
-        JSAMPROW row =
-            d->image.pixels.data() + size_t(4) * d->image.width * d->info.output_scanline;
-        jpeg_read_scanlines(&d->info, &row, 1);
-    }
-    jpeg_finish_decompress(&d->info);
-    jpeg_destroy_decompress(&d->info);
-    r.value = std::move(d->image);
-    return r;
+    const char* reason = stbi_failure_reason();
+    return reason ? reason : "no reason given";
 }
 
 } // namespace
 
 Result<RgbaImage> decode_image(const std::string& bytes, const std::string& name)
 {
-    if (starts_with(bytes, "\x89PNG\r\n\x1a\n", 8))
-        return decode_png(bytes, name);
-    if (starts_with(bytes, "\xff\xd8\xff", 3))
-        return decode_jpeg(bytes, name);
+    if (bytes.empty())
+        return unreadable(name, "the file is empty");
+    if (bytes.size() > size_t(INT_MAX))
+        return unreadable(name, std::to_string(bytes.size()) + " bytes, at most " +
+                                    std::to_string(INT_MAX) + " bytes are read");
+    const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+    const int length = int(bytes.size());
+    auto too_large = [&](long long width, long long height) {
+        return unreadable(name, std::to_string(width) + " x " + std::to_string(height) +
+                                    " pixels, at most " + std::to_string(kMaxTexturePixels) +
+                                    " pixels are read");
+    };
+    // The header first, so its size is checked before the pixels are allocated. When stb_image
+    // cannot read a header, decoding says why (its header readers leave only "unknown type").
+    int width = 0, height = 0, channels = 0;
+    const bool header = stbi_info_from_memory(data, length, &width, &height, &channels);
+    if (header && static_cast<long long>(width) * height > kMaxTexturePixels)
+        return too_large(width, height);
+    std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
+        stbi_load_from_memory(data, length, &width, &height, &channels, 4), stbi_image_free);
+    if (!pixels) {
+        const std::string reason = stb_reason();
+        if (reason == "unknown image type")
+            return unreadable(name, "not an image in a format read here (" +
+                                        std::to_string(bytes.size()) + " bytes); textures may be " +
+                                        kTextureFormats);
+        return unreadable(name, "broken image data (stb_image: " + reason + ")");
+    }
+    if (static_cast<long long>(width) * height > kMaxTexturePixels)
+        return too_large(width, height);
     Result<RgbaImage> r;
-    r.fail(DiagnosticCode::unreadable_model, "texture " + name + ": neither PNG nor JPEG (" +
-                                                 std::to_string(bytes.size()) +
-                                                 " bytes); textures must be PNG or JPEG");
+    r.value.width = width;
+    r.value.height = height;
+    r.value.pixels.assign(pixels.get(), pixels.get() + size_t(4) * width * height);
     return r;
 }
 
 Result<RgbaImage> read_image(const std::string& path)
 {
+    std::error_code error;
+    const auto size = std::filesystem::file_size(path, error);
     std::ifstream file(path, std::ios::binary);
-    if (!file) {
-        Result<RgbaImage> r;
-        r.fail(DiagnosticCode::unreadable_model, "texture " + path + ": cannot open the file");
-        return r;
-    }
+    if (error || !file)
+        return unreadable(path, "cannot open the file");
+    if (size > size_t(INT_MAX))
+        return unreadable(path, std::to_string(size) + " bytes, at most " +
+                                    std::to_string(INT_MAX) + " bytes are read");
     std::ostringstream bytes;
     bytes << file.rdbuf();
     return decode_image(bytes.str(), path);

@@ -3,11 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <filesystem>
 #include <iomanip>
 #include <limits>
 #include <optional>
 #include <sstream>
+
+#include "popup/input/model_texture.hpp"
 
 namespace popup {
 
@@ -42,18 +43,6 @@ struct Appearance {
     bool vertex_colours = false;
     Vec3 light = Vec3::UnitZ(); ///< unit
 };
-
-/// The texture's file: as given, else beside the model file (assimp reports paths relative to it).
-std::string texture_path(const ModelMesh& mesh)
-{
-    namespace fs = std::filesystem;
-    const fs::path given(mesh.texture);
-    std::error_code ignored;
-    if (given.is_absolute() || fs::exists(given, ignored) || mesh.source.empty())
-        return mesh.texture;
-    const fs::path beside = fs::path(mesh.source).parent_path() / given;
-    return fs::exists(beside, ignored) ? beside.string() : mesh.texture;
-}
 
 /// Checks the parts of the mesh rendering reads beyond check_model: one colour and one texture
 /// coordinate per vertex (or none), all finite.
@@ -114,18 +103,17 @@ Result<Appearance> prepare(const ModelMesh& mesh, const ArtworkOptions& options)
         const std::string fallback =
             r.value.vertex_colours ? "vertex colours are used" : "the shaded base colour is used";
         if (mesh.uvs.empty()) {
-            r.warn(DiagnosticCode::unreadable_model,
+            r.warn(DiagnosticCode::unreadable_texture,
                    model_name(mesh) + ": texture " + mesh.texture +
                        " has no texture coordinates to map it; " + fallback,
                    about_parameter("uvs"));
         } else {
-            Result<RgbaImage> image = read_image(texture_path(mesh));
+            Result<RgbaImage> image = read_model_texture(mesh);
             if (image.ok)
                 r.value.texture = std::move(image.value);
             else
                 for (const Diagnostic& d : image.diagnostics)
-                    r.warn(d.code, model_name(mesh) + ": " + d.message + "; " + fallback,
-                           about_parameter("texture"));
+                    r.warn(d.code, d.message + "; " + fallback, about_parameter("texture"));
         }
     }
     return r;

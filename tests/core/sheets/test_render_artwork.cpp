@@ -1,16 +1,15 @@
 // The artwork rasteriser against constructions with known answers: face areas, texels placed by
 // their uvs, the nearest surface, Lambert's formula, and named refusals.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <string>
 
-#include <jpeglib.h>
-#include <png.h>
-
+#include "popup/input/load_model.hpp"
 #include "popup/sheets/render_artwork.hpp"
 
 using namespace popup;
@@ -109,19 +108,24 @@ bool has(const Diagnostics& diagnostics, DiagnosticCode code, const std::string&
     return false;
 }
 
-/// Writes a PNG of `width` × `height` RGBA pixels (rows top to bottom) with libpng.
-std::string write_png(const std::string& name, int width, int height,
-                      const std::vector<std::uint8_t>& rgba)
+/// Writes an uncompressed 32-bit TGA (top row first) of `width` × `height` RGBA pixels (rows top
+/// to bottom), byte by byte: the texture does not depend on the decoder under test.
+std::string write_texture(const std::string& name, int width, int height,
+                          const std::vector<std::uint8_t>& rgba)
 {
     const std::string path =
-        (std::filesystem::temp_directory_path() / ("popup_artwork_" + name + ".png")).string();
-    png_image png{};
-    png.version = PNG_IMAGE_VERSION;
-    png.width = width;
-    png.height = height;
-    png.format = PNG_FORMAT_RGBA;
-    EXPECT_TRUE(png_image_write_to_file(&png, path.c_str(), 0, rgba.data(), 0, nullptr))
-        << png.message;
+        (std::filesystem::temp_directory_path() / ("popup_artwork_" + name + ".tga")).string();
+    std::string bytes(18, '\0');
+    bytes[2] = 2; // true colour, uncompressed
+    bytes[12] = char(width & 0xff);
+    bytes[13] = char(width >> 8);
+    bytes[14] = char(height & 0xff);
+    bytes[15] = char(height >> 8);
+    bytes[16] = 32;   // bits per pixel
+    bytes[17] = 0x28; // 8 alpha bits, rows from the top
+    for (size_t i = 0; i < rgba.size(); i += 4)
+        bytes += {char(rgba[i + 2]), char(rgba[i + 1]), char(rgba[i]), char(rgba[i + 3])};
+    std::ofstream(path, std::ios::binary) << bytes;
     return path;
 }
 
@@ -197,7 +201,7 @@ TEST(RenderArtwork, TexelsLandWhereTheUvsSay)
     quad.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 0}, {1, 1}, {0, 1}};
     quad.vertices = {{0, 0, 0}, {40, 0, 0}, {40, 40, 0}, {0, 0, 0}, {40, 40, 0}, {0, 40, 0}};
     quad.triangles = {{0, 1, 2}, {3, 4, 5}};
-    quad.texture = write_png("checker", 2, 2, checker);
+    quad.texture = write_texture("checker", 2, 2, checker);
     const Patch patch = patch_with({{0, 0, 0}, {40, 0, 0}, {40, 40, 0}, {0, 40, 0}});
     ArtworkOptions o;
     o.pixels_per_mm = 0.25; // pixel centres at 2, 6, 10, 14, ... mm: on the texel centres
@@ -230,7 +234,9 @@ TEST(RenderArtwork, UnreadableTextureWarnsAndShades)
     o.ambient = 1.0; // all light ambient: exactly the base colour
     const Result<PatchArtwork> r = render_artwork(quad, patch, o);
     ASSERT_TRUE(r.ok);
-    EXPECT_TRUE(has(r.diagnostics, DiagnosticCode::unreadable_model, "popup_texture.png"));
+    EXPECT_TRUE(has(r.diagnostics, DiagnosticCode::unreadable_texture,
+                    "quad: texture /nonexistent/popup_texture.png: cannot open the file; the "
+                    "shaded base colour is used"));
     EXPECT_EQ(r.diagnostics.front().severity, Severity::warning);
     EXPECT_EQ(rgb_at(r.value, {20, 20, 0}), (Rgb{255, 255, 255}));
 }
@@ -370,7 +376,7 @@ TEST(RenderArtwork, CornersWithoutTextureTakeTheirVertexColour)
     two.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {nan, nan}, {nan, nan}, {nan, nan}, {nan, nan}};
     const Vec3 white(1, 1, 1);
     two.colours = {white, white, white, white, kRed, kRed, kRed, kRed};
-    two.texture = write_png("checker_two", 2, 2, checker);
+    two.texture = write_texture("checker_two", 2, 2, checker);
     const Patch patch = patch_with({{0, 0, 0}, {80, 0, 0}, {80, 40, 0}, {0, 40, 0}});
     ArtworkOptions o;
     o.pixels_per_mm = 0.25;
@@ -417,51 +423,6 @@ TEST(RenderArtwork, BadMeshesAndPatchesAreNamed)
                     "not planar"));
 }
 
-TEST(RenderArtwork, JpegTextureIsDecoded)
-{
-    // A solid JPEG written by libjpeg at quality 100 decodes within a few levels of its colour.
-    const std::string path =
-        (std::filesystem::temp_directory_path() / "popup_artwork_solid.jpg").string();
-    std::FILE* file = std::fopen(path.c_str(), "wb");
-    ASSERT_NE(file, nullptr);
-    jpeg_compress_struct info;
-    jpeg_error_mgr errors;
-    info.err = jpeg_std_error(&errors);
-    jpeg_create_compress(&info);
-    jpeg_stdio_dest(&info, file);
-    info.image_width = 16;
-    info.image_height = 16;
-    info.input_components = 3;
-    info.in_color_space = JCS_RGB;
-    jpeg_set_defaults(&info);
-    jpeg_set_quality(&info, 100, TRUE);
-    jpeg_start_compress(&info, TRUE);
-    std::vector<std::uint8_t> row;
-    for (int i = 0; i < 16; ++i)
-        row.insert(row.end(), {200, 50, 30});
-    while (info.next_scanline < 16) {
-        JSAMPROW p = row.data();
-        jpeg_write_scanlines(&info, &p, 1);
-    }
-    jpeg_finish_compress(&info);
-    jpeg_destroy_compress(&info);
-    std::fclose(file);
-    const Result<RgbaImage> image = read_image(path);
-    ASSERT_TRUE(image.ok);
-    EXPECT_EQ(image.value.width, 16);
-    EXPECT_EQ(image.value.height, 16);
-    const std::uint8_t* p = image.value.at(7, 9);
-    EXPECT_NEAR(p[0], 200, 3);
-    EXPECT_NEAR(p[1], 50, 3);
-    EXPECT_NEAR(p[2], 30, 3);
-    EXPECT_EQ(p[3], 255);
-    std::filesystem::remove(path);
-    EXPECT_TRUE(has(decode_image("GIF89a....", "logo.gif").diagnostics,
-                    DiagnosticCode::unreadable_model, "logo.gif: neither PNG nor JPEG"));
-    EXPECT_TRUE(has(decode_image(std::string("\x89PNG\r\n\x1a\nbroken", 14), "bad.png").diagnostics,
-                    DiagnosticCode::unreadable_model, "bad.png: not a readable PNG"));
-}
-
 TEST(RenderArtwork, ModelFarBesideThePatchLeavesItTransparent)
 {
     // 1e9 mm away in the patch plane: no pixel index may overflow, nothing shows.
@@ -470,4 +431,51 @@ TEST(RenderArtwork, ModelFarBesideThePatchLeavesItTransparent)
     const Result<PatchArtwork> r = render_artwork(cube, patch);
     ASSERT_TRUE(r.ok);
     EXPECT_EQ(r.value.covered_pixels, 0);
+}
+
+TEST(RenderArtwork, TexturedModelsPrintTheirTextureOrWarnAndShade)
+{
+    // tools/make_textured_models.py's cuboid [0, 60] x [0, 40] x [0, 30], every face showing the
+    // 32 x 16 texture of four blocks upright: its top, seen from above, red top-left, green
+    // top-right, blue bottom-left, yellow bottom-right, each over a 30 x 20 mm quarter.
+    const std::string folder = "tests/data/textures/";
+    std::ifstream file(folder + "expected.json");
+    const auto blocks = nlohmann::json::parse(file)["blocks"];
+    auto block = [&](const char* name) { return blocks[name].get<Rgb>(); };
+    const Patch top = patch_with({{0, 0, 30}, {60, 0, 30}, {60, 40, 30}, {0, 40, 30}});
+    ArtworkOptions o;
+    o.pixels_per_mm = 1.0;
+    for (const char* name : {"cube_tga.obj", "cube_bmp.obj", "cube_png.glb"}) {
+        const Result<ModelMesh> model = load_model(folder + name);
+        ASSERT_TRUE(model.ok) << name;
+        const Result<PatchArtwork> r = render_artwork(model.value, top, o);
+        ASSERT_TRUE(r.ok) << name;
+        EXPECT_TRUE(r.diagnostics.empty()) << name << ": " << r.diagnostics.front().message;
+        EXPECT_EQ(r.value.covered_pixels, 60 * 40) << name;
+        EXPECT_EQ(rgb_at(r.value, {15, 30, 30}), block("top_left")) << name;
+        EXPECT_EQ(rgb_at(r.value, {45, 30, 30}), block("top_right")) << name;
+        EXPECT_EQ(rgb_at(r.value, {15, 10, 30}), block("bottom_left")) << name;
+        EXPECT_EQ(rgb_at(r.value, {45, 10, 30}), block("bottom_right")) << name;
+        // Only the texels next to a block edge blend (bilinear): most of each quarter is exact.
+        for (const char* quarter : {"top_left", "top_right", "bottom_left", "bottom_right"})
+            EXPECT_GE(count_rgb(r.value, block(quarter)), 500) << name << " " << quarter;
+    }
+    for (const auto& [name, texture] : std::vector<std::pair<std::string, std::string>>{
+             {"cube_missing.obj", "missing.tga"}, {"cube_corrupt.obj", "corrupt.png"}}) {
+        const Result<ModelMesh> model = load_model(folder + name);
+        ASSERT_TRUE(model.ok) << name;
+        const Result<PatchArtwork> r = render_artwork(model.value, top, o);
+        ASSERT_TRUE(r.ok) << name;
+        ASSERT_EQ(r.diagnostics.size(), 1u) << name;
+        EXPECT_EQ(r.diagnostics.front().severity, Severity::warning);
+        EXPECT_TRUE(has(r.diagnostics, DiagnosticCode::unreadable_texture,
+                        folder + name + ": texture " + folder + texture + ": "))
+            << r.diagnostics.front().message;
+        EXPECT_TRUE(has(r.diagnostics, DiagnosticCode::unreadable_texture,
+                        "; the shaded base colour is used"));
+        // Grey: the material's 0.8 grey shaded by the light, the same on the whole flat top.
+        const Rgb grey = rgb_at(r.value, {30, 20, 30});
+        EXPECT_TRUE(grey[0] == grey[1] && grey[1] == grey[2]) << name;
+        EXPECT_EQ(count_rgb(r.value, grey), 60 * 40) << name;
+    }
 }

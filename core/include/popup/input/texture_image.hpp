@@ -21,12 +21,21 @@ struct RgbaImage {
 /// The largest texture decoded (width × height), so a corrupt header cannot ask for gigabytes.
 constexpr long long kMaxTexturePixels = 1LL << 27;
 
-/// Decodes a PNG (libpng) or JPEG (libjpeg) image held in memory, recognised by its signature;
-/// `name` says what it is in messages. Fails with unreadable_model naming `name` and the
-/// decoder's reason for anything else, or for more than kMaxTexturePixels pixels.
+/// The image formats decode_image reads, for messages and documentation.
+extern const char* const kTextureFormats;
+
+/// Decodes an image held in memory with stb_image (Debian's libstb): PNG (8 and 16 bits, any
+/// colour type, interlaced), JPEG (baseline and progressive), TGA (uncompressed and RLE), BMP
+/// (uncompressed), GIF (the first frame), PSD (the composite), HDR (tone mapped), PIC and PNM,
+/// recognised by their content, never by a name. Grey and RGB images get alpha 255; 16-bit and
+/// HDR images come down to 8 bits. `name` says what the image is in messages. Fails with
+/// unreadable_texture naming `name` and stb_image's reason for anything else, for a truncated
+/// or corrupt image stb_image notices, or for more than kMaxTexturePixels pixels. It does not
+/// notice a truncated TGA, BMP or PNM: the missing pixels decode as black (or repeated) ones.
 Result<RgbaImage> decode_image(const std::string& bytes, const std::string& name);
 
-/// Reads and decodes the image file at `path` (as decode_image).
+/// Reads and decodes the image file at `path` (as decode_image); unreadable_texture naming the
+/// path when it cannot be opened.
 Result<RgbaImage> read_image(const std::string& path);
 
 } // namespace popup

@@ -59,6 +59,7 @@ namespace popup {
     X(enclosure_unknown)                                                                           \
     /* models and automatic design (fitting) */                                                    \
     X(unreadable_model)                                                                            \
+    X(unreadable_texture)                                                                          \
     X(empty_model)                                                                                 \
     X(non_finite_model)                                                                            \
     X(degenerate_model)                                                                            \

@@ -46,11 +46,12 @@ struct PatchArtwork {
 /// Renders `mesh` (card mm) onto `patch` (design state) with a z-buffer: for each pixel centre
 /// of the patch's bounding box, the first front-facing triangle met looking along the patch's
 /// normal (towards it, from the rendered side) within [-behind, depth] of its plane gives the
-/// colour: the texture (mesh.texture, bilinear, repeating; v = 0 is the image's bottom row),
-/// else the interpolated vertex colours, else base_colour × (ambient + (1 − ambient) ×
-/// max(0, n · light)) with the triangle's normal n. A texture that cannot be read gives a
-/// warning and the next of these. Bad options, a bad mesh or a degenerate patch fail with a
-/// diagnostic naming the value and the allowed range.
+/// colour: the texture (read_model_texture: embedded or a file; bilinear, repeating; v = 0 is
+/// the image's bottom row), else the interpolated vertex colours, else base_colour × (ambient +
+/// (1 − ambient) × max(0, n · light)) with the triangle's normal n. A texture that cannot be
+/// read (or mapped: no texture coordinates) gives an unreadable_texture warning naming the model
+/// and the texture, and the next of these. Bad options, a bad mesh or a degenerate patch fail with
+/// a diagnostic naming the value and the allowed range.
 Result<PatchArtwork> render_artwork(const ModelMesh& mesh, const Patch& patch,
                                     const ArtworkOptions& options = {});
 
