@@ -7,13 +7,14 @@ Known answers are the colours the script painted (its BLOCKS), never a decoder's
 
 import base64
 import io
+import os
 
 import numpy as np
 import pytest
 from PIL import Image
 
 import popupcore
-from cli_runner import load_tool, read_report, run_design
+from cli_runner import DATA_DIR, load_tool, read_report, run_design
 from test_cli_fit import UPRIGHT
 from test_cli_sheet_artwork import print_layer
 
@@ -106,3 +107,19 @@ def test_popup_fit_says_the_missing_texture_and_prints_grey(fitted, folder):
     assert all(count(pixels, rgb) == 0 for rgb in BLOCK_COLOURS)
     # The MTL's 0.8 grey, shaded: red, green and blue equal on every printed pixel.
     assert np.all(pixels == pixels[:, :1])
+
+
+def test_the_committed_test_textures_are_what_the_script_writes(folder):
+    # The C++ tests read tests/data/textures: the same files, the same answers. Pillow's image
+    # bytes may differ between versions, so the images are compared by their pixels.
+    committed = os.path.join(DATA_DIR, "textures")
+    names = sorted(p.name for p in folder.iterdir())
+    assert sorted(set(os.listdir(committed)) - {"README.md"}) == names
+    for name in names:
+        written, kept = folder / name, os.path.join(committed, name)
+        if name.startswith("texture"):
+            with Image.open(written) as a, Image.open(kept) as b:
+                same = np.asarray(a.convert("RGBA")).astype(int) - np.asarray(b.convert("RGBA"))
+                assert np.abs(same).max() <= 1, name  # JPEG encoders may round apart
+        elif name != "cube_png.glb":  # it holds the PNG's bytes
+            assert written.read_bytes() == open(kept, "rb").read(), name
