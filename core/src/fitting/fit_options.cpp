@@ -11,11 +11,7 @@ namespace {
 using Field = OptionField;
 constexpr auto direction = OptionKind::direction;
 
-/// A field and how to read its value (none for a direction: it has no range).
-struct FitField {
-    OptionField field;
-    double (*value)(const FitOptions&) = nullptr;
-};
+using FitField = OptionRow<FitOptions>; // no value for a direction: it has no range
 
 const std::vector<FitField>& fit_fields()
 {
@@ -81,11 +77,7 @@ const std::vector<FitField>& fit_fields()
                            "top become nested mechanisms (needs outlines)"),
              [](const FitOptions& o) { return double(o.depth_layers); }},
         };
-        const FitOptions defaults;
-        for (FitField& f : table)
-            if (f.value)
-                f.field.default_value = f.value(defaults);
-        return table;
+        return with_struct_defaults(table);
     }();
     return fields;
 }
@@ -94,21 +86,14 @@ const std::vector<FitField>& fit_fields()
 
 const std::vector<OptionField>& fit_option_fields()
 {
-    static const std::vector<OptionField> fields = [] {
-        std::vector<OptionField> out;
-        for (const FitField& f : fit_fields())
-            out.push_back(f.field);
-        return out;
-    }();
+    static const std::vector<OptionField> fields = fields_of(fit_fields());
     return fields;
 }
 
 Diagnostics check_fit_options(const FitOptions& o)
 {
     Diagnostics d;
-    for (const FitField& f : fit_fields())
-        if (f.value)
-            check_option(d, "FitOptions", f.field, f.value(o));
+    check_rows(d, fit_fields(), o, "FitOptions");
     // min_part_mm's upper end depends on the card: a quarter of its smaller side.
     const double quarter = 0.25 * std::min(o.card.width, o.card.depth);
     if (std::isfinite(o.min_part_mm) && o.min_part_mm > quarter)

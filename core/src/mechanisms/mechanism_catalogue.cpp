@@ -28,7 +28,7 @@ ParameterField field(T Owner::*member, std::string name, std::string property, F
                      {},
                      {}};
     f.get = [member](const MechanismParams& p) { return double(std::get<Params>(p).*member); };
-    f.set = [member, unit](MechanismParams& p, double value) {
+    f.set = [member](MechanismParams& p, double value) {
         T& slot = std::get<Params>(p).*member;
         if constexpr (std::is_same_v<T, bool>)
             slot = value > 0.5;
@@ -36,7 +36,6 @@ ParameterField field(T Owner::*member, std::string name, std::string property, F
             slot = int(std::lround(value));
         else
             slot = value;
-        (void)unit;
     };
     return f;
 }

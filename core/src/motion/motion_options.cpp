@@ -8,11 +8,7 @@ namespace {
 
 using Field = OptionField;
 
-/// A field and how to read its value.
-struct MotionField {
-    OptionField field;
-    double (*value)(const MotionOptions&) = nullptr;
-};
+using MotionField = OptionRow<MotionOptions>;
 
 const std::vector<MotionField>& own_fields()
 {
@@ -56,10 +52,7 @@ const std::vector<MotionField>& own_fields()
                  .in("chains"),
              [](const MotionOptions& o) { return o.chains.prune_fraction; }},
         };
-        const MotionOptions defaults;
-        for (MotionField& f : table)
-            f.field.default_value = f.value(defaults);
-        return table;
+        return with_struct_defaults(table);
     }();
     return fields;
 }
@@ -83,9 +76,7 @@ const std::vector<OptionField>& motion_option_fields()
 Diagnostics check_motion_options(const MotionOptions& o)
 {
     Diagnostics errors;
-    for (const MotionField& f : own_fields())
-        check_option(errors, f.field.group.empty() ? "MotionOptions" : "ChainOptions", f.field,
-                     f.value(o));
+    check_rows(errors, own_fields(), o, "MotionOptions", "ChainOptions");
     // Eq 6.5 needs some weight on the paths or on the depth order.
     if (o.motion_weight == 0 && o.depth_weight == 0)
         errors.push_back(Diagnostic::error(

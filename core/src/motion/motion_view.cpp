@@ -10,12 +10,8 @@ namespace {
 
 using Field = OptionField;
 
-/// A field and how to read its value: none for a vector (checked on its own below) and for an
-/// optional left unset.
-struct ViewField {
-    OptionField field;
-    std::optional<double> (*value)(const MotionView&) = nullptr;
-};
+/// No value for a vector (checked on its own below), none either for an optional left unset.
+using ViewField = OptionRow<MotionView>;
 
 const std::vector<ViewField>& view_fields()
 {
@@ -65,11 +61,7 @@ const std::vector<ViewField>& view_fields()
                  .at_most(1000),
              [](const MotionView& v) { return std::optional<double>(v.min_intervals); }},
         };
-        const MotionView defaults;
-        for (ViewField& f : table)
-            if (f.value && f.value(defaults))
-                f.field.default_value = *f.value(defaults);
-        return table;
+        return with_struct_defaults(table);
     }();
     return fields;
 }
@@ -106,12 +98,7 @@ void check_directions(const MotionView& view, Diagnostics& errors)
 
 const std::vector<OptionField>& motion_view_fields()
 {
-    static const std::vector<OptionField> fields = [] {
-        std::vector<OptionField> out;
-        for (const ViewField& f : view_fields())
-            out.push_back(f.field);
-        return out;
-    }();
+    static const std::vector<OptionField> fields = fields_of(view_fields());
     return fields;
 }
 
@@ -119,10 +106,7 @@ Diagnostics check_motion_view(const MotionView& view)
 {
     Diagnostics errors;
     check_directions(view, errors);
-    for (const ViewField& f : view_fields())
-        if (f.value)
-            if (const std::optional<double> value = f.value(view))
-                check_option(errors, "MotionView", f.field, *value);
+    check_rows(errors, view_fields(), view, "MotionView");
     if (view.centre && !view.centre->allFinite())
         refuse(errors, "centre", "must be finite");
     if (view.last_frame >= 0 && view.first_frame >= 0 && view.last_frame <= view.first_frame)

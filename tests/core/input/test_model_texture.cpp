@@ -12,34 +12,19 @@
 
 #include "popup/input/load_model.hpp"
 #include "popup/input/model_texture.hpp"
+#include "texture_fixtures.hpp"
 
 namespace fs = std::filesystem;
 using namespace popup;
 
 namespace {
 
-const std::string kFolder = "tests/data/textures/";
-
-std::string bytes_of(const std::string& path)
-{
-    std::ifstream file(path, std::ios::binary);
-    std::ostringstream bytes;
-    bytes << file.rdbuf();
-    return bytes.str();
-}
-
-bool has(const Diagnostics& diagnostics, DiagnosticCode code, const std::string& words)
-{
-    for (const Diagnostic& d : diagnostics)
-        if (d.code == code && d.message.find(words) != std::string::npos)
-            return true;
-    return false;
-}
+using namespace texture_fixtures;
 
 /// The RGB make_textured_models painted on the named block.
 std::array<int, 3> block(const std::string& name)
 {
-    const auto blocks = nlohmann::json::parse(bytes_of(kFolder + "expected.json"))["blocks"];
+    const auto blocks = expected()["blocks"];
     return blocks[name].get<std::array<int, 3>>();
 }
 

@@ -10,33 +10,13 @@
 #include <nlohmann/json.hpp>
 
 #include "popup/input/texture_image.hpp"
+#include "texture_fixtures.hpp"
 
 using namespace popup;
 
 namespace {
 
-const std::string kFolder = "tests/data/textures/";
-
-std::string bytes_of(const std::string& path)
-{
-    std::ifstream file(path, std::ios::binary);
-    std::ostringstream bytes;
-    bytes << file.rdbuf();
-    return bytes.str();
-}
-
-nlohmann::json expected()
-{
-    return nlohmann::json::parse(bytes_of(kFolder + "expected.json"));
-}
-
-bool has(const Diagnostics& diagnostics, DiagnosticCode code, const std::string& words)
-{
-    for (const Diagnostic& d : diagnostics)
-        if (d.code == code && d.message.find(words) != std::string::npos)
-            return true;
-    return false;
-}
+using namespace texture_fixtures;
 
 /// Every probe texel of `image` is within the tolerance of what make_textured_models wrote.
 void expect_texels(const RgbaImage& image, const nlohmann::json& written, const std::string& name)

@@ -3,8 +3,11 @@
 // default, the range the core accepts), so that the pipelines' option tables (fit_options.cpp,
 // motion_options.cpp) are the one place a range or a default is written: the core checks with
 // them and the workbench builds its command-line flags and task panels from them.
+#include <functional>
 #include <limits>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "popup/model/result.hpp"
 
@@ -59,6 +62,49 @@ struct OptionField {
 /// accepts `value`.
 void check_option(Diagnostics& errors, const std::string& owner, const OptionField& field,
                   double value);
+
+/// One row of an options struct's table: its field and how to read its value (none, or an empty
+/// optional, for what has no range to check: a direction, an option left unset).
+template <class Options> struct OptionRow {
+    OptionField field;
+    std::function<std::optional<double>(const Options&)> value = nullptr;
+};
+
+/// The rows with each field's default read from a default-made Options, so a default is written
+/// once, in the struct.
+template <class Options>
+std::vector<OptionRow<Options>> with_struct_defaults(std::vector<OptionRow<Options>> rows)
+{
+    const Options defaults = Options();
+    for (OptionRow<Options>& row : rows)
+        if (row.value)
+            if (const std::optional<double> value = row.value(defaults))
+                row.field.default_value = *value;
+    return rows;
+}
+
+template <class Options>
+std::vector<OptionField> fields_of(const std::vector<OptionRow<Options>>& rows)
+{
+    std::vector<OptionField> fields;
+    for (const OptionRow<Options>& row : rows)
+        fields.push_back(row.field);
+    return fields;
+}
+
+/// check_option on every row that has a value; `owner` names a field of the top struct,
+/// `group_owner` one of its nested group.
+template <class Options>
+void check_rows(Diagnostics& errors, const std::vector<OptionRow<Options>>& rows,
+                const Options& options, const std::string& owner,
+                const std::string& group_owner = "")
+{
+    for (const OptionRow<Options>& row : rows)
+        if (row.value)
+            if (const std::optional<double> value = row.value(options))
+                check_option(errors, row.field.group.empty() ? owner : group_owner, row.field,
+                             *value);
+}
 
 /// A number as messages write it (6 significant digits; whole numbers in full up to 1e15).
 std::string option_number(double value);
