@@ -6,6 +6,7 @@
 #include "binding_support.hpp"
 #include "point_rows.hpp"
 #include "popup/fitting/fit_design.hpp"
+#include "popup/fitting/supporting_plate.hpp"
 
 namespace py = pybind11;
 using namespace popup;
@@ -121,6 +122,21 @@ void bind_fitting(py::module_& m)
         .def_readonly("mean_before_mm", &FittedDepthLayer::mean_before_mm)
         .def_readonly("mean_after_mm", &FittedDepthLayer::mean_after_mm);
 
+    py::class_<SupportingPlate>(m, "SupportingPlate",
+                                "The plate a model stands on (a terrain slab, a print bed), which "
+                                "becomes the card's page (docs/MATH.md)")
+        .def_property_readonly("up",
+                               [](const SupportingPlate& p) {
+                                   return std::make_tuple(p.up.x(), p.up.y(), p.up.z());
+                               })
+        .def_readonly("top", &SupportingPlate::top)
+        .def_readonly("thickness", &SupportingPlate::thickness)
+        .def_readonly("top_area", &SupportingPlate::top_area);
+
+    m.def("above_plate", &above_plate, py::arg("mesh"), py::arg("plate"),
+          "The model without its plate: the triangles wholly at or below the plate's top removed "
+          "(what fit_metrics and the preview measure and draw)");
+
     py::class_<FitResult>(m, "FitResult")
         .def_readonly("card", &FitResult::card)
         .def_property_readonly("model_to_card",
@@ -136,6 +152,10 @@ void bind_fitting(py::module_& m)
         .def_readonly("coverage_error", &FitResult::coverage_error)
         .def_readonly("symmetry_error", &FitResult::symmetry_error)
         .def_readonly("ransac_draws", &FitResult::ransac_draws)
+        .def_readonly("outer_samples", &FitResult::outer_samples)
+        .def_readonly("inner_samples", &FitResult::inner_samples)
+        .def_readonly("turned_faces", &FitResult::turned_faces)
+        .def_readonly("plate", &FitResult::plate, "the SupportingPlate that became the page, or None")
         .def_readonly("timings", &FitResult::timings)
         .def_property_readonly("pops_up", &FitResult::pops_up,
                                "valid with at least one mechanism: a bare card is no pop-up")

@@ -185,15 +185,17 @@ def _write_design(args, result, model, options, stages, files, say):
             )
         scaffold = built.scaffold
         metrics = None  # a card without mechanisms has no pop-up to measure
+        # On a plate (a terrain slab, a print bed) the pop-up is what stands on it.
+        shown = fit_run.standing_model(model, result)
         if result.mechanisms:
             with stages.stage("metrics", "measuring the pop-up against the model"):
-                metrics = fit_run.measure(model, result, scaffold, options)
+                metrics = fit_run.measure(shown, result, scaffold, options)
         with stages.stage("preview", "drawing the preview"):
             outlines, card_patches = scaffold_outlines(scaffold)
             files["preview"] = write_preview(
                 os.path.join(args.out, PREVIEW_FILE),
-                transformed(model.vertices, result.model_to_card),
-                model.triangles,
+                transformed(shown.vertices, result.model_to_card),
+                shown.triangles,
                 outlines,
                 card_patches,
                 title=f"{os.path.basename(args.model)}: {len(result.mechanisms)} mechanism(s)",

@@ -87,6 +87,18 @@ def depth_layer_entry(layer):
     }
 
 
+def plate_entry(plate):
+    """The plate that became the page (model units along the model's up), or None."""
+    if plate is None:
+        return None
+    return {
+        "up": list(plate.up),
+        "top": float(plate.top),
+        "thickness": float(plate.thickness),
+        "top_area": float(plate.top_area),
+    }
+
+
 def build_report(
     *,
     model_file,
@@ -145,12 +157,21 @@ def build_report(
         "fit": (
             {
                 name: getattr(result, name)
-                for name in ("coverage", "coverage_error", "symmetry_error", "ransac_draws")
+                for name in (
+                    "coverage",
+                    "coverage_error",
+                    "symmetry_error",
+                    "ransac_draws",
+                    "outer_samples",
+                    "inner_samples",
+                    "turned_faces",
+                )
                 if hasattr(result, name)
             }
             if result is not None
             else None
         ),
+        "plate": plate_entry(getattr(result, "plate", None)) if result is not None else None,
         "diagnostics": list(getattr(result, "diagnostics", None) or []) if result else [],
         "primitives": [primitive_entry(p) for p in result.primitives] if result is not None else [],
         "profiles": (

@@ -143,6 +143,15 @@ def uniform_scale(matrix):
     return abs(float(np.linalg.det(np.asarray(matrix, dtype=float)[:3, :3]))) ** (1.0 / 3.0)
 
 
+def standing_model(model, result):
+    """The model the pop-up shows: without the plate it stands on when the fit found one (its top
+    became the card's page, docs/MATH.md), else the model itself."""
+    from popupwb.core import popupcore
+
+    plate = getattr(result, "plate", None)
+    return model if plate is None else popupcore.above_plate(model, plate)
+
+
 def measure(model, result, scaffold, options):
     """popupcore.fit_metrics of the delivered pop-up (`scaffold`, the card's at 180°) against the
     model, with the fit's own threshold in mm."""

@@ -116,16 +116,40 @@ std::array<double, 2> end_areas(const ModelMesh& model, const Vec3& axis)
     return area;
 }
 
+/// `axis` turned onto the area-weighted mean normal of the faces within 3° of it (either
+/// sense): an NPCA axis a little off a large flat face (a terrain slab under a house whose roof
+/// is not quite symmetric) lies in it again, so that face is the model's flat end.
+Vec3 snapped_to_faces(const ModelMesh& model, const Vec3& axis)
+{
+    const double within = std::cos(3.0 * M_PI / 180.0);
+    Vec3 sum = Vec3::Zero();
+    for (const auto& t : model.triangles) {
+        const Vec3 c = (model.vertices[t[1]] - model.vertices[t[0]])
+                           .cross(model.vertices[t[2]] - model.vertices[t[0]]);
+        const double twice = c.norm();
+        if (!(twice > 0))
+            continue;
+        const double along = c.dot(axis) / twice;
+        if (std::abs(along) >= within)
+            sum += along > 0 ? c : Vec3(-c); // c's length is twice the face's area
+    }
+    return sum.norm() > 0 ? Vec3(sum.normalized()) : axis;
+}
+
 /// The up a model stands on (docs/MATH.md, "Which way is up"): the signed NPCA axis whose
 /// bounding-box bottom carries the most flat, downward-facing area (a house's floor, not its
 /// roof; an upright cylinder's cap, not a facet of its side). Axes whose bottoms are within
 /// 10 % of the largest are as good (a truck's floor and its flat side): the larger NPCA
-/// eigenvalue decides among them, the thesis's up. A model with no flat bottom worth the name
+/// eigenvalue decides among them, the thesis's up (each axis snapped onto the flat faces within
+/// 3° of it first). A model with no flat bottom worth the name
 /// (under 1 % of its area: a blob) keeps the first NPCA axis. The sign: the end with more flat
 /// area, the skew deciding a tie.
-Vec3 standing_up(const ModelMesh& model, const Mat3& axes, const std::vector<Vec3>& points,
+Vec3 standing_up(const ModelMesh& model, const Mat3& npca, const std::vector<Vec3>& points,
                  const Vec3& centre)
 {
+    Mat3 axes;
+    for (int k = 0; k < 3; ++k)
+        axes.col(k) = snapped_to_faces(model, npca.col(k));
     double total = 0;
     for (const auto& t : model.triangles)
         total += 0.5 * (model.vertices[t[1]] - model.vertices[t[0]])
@@ -378,50 +402,22 @@ double best_mirror_angle(const MirrorScores& mirror, size_t coarse_stride, size_
     return best_theta;
 }
 
-} // namespace
-
-Result<std::vector<Alignment>> alignment_candidates(const ModelMesh& model,
-                                                    const SurfaceSamples& samples,
-                                                    const std::optional<Vec3>& up_option,
-                                                    const std::optional<Vec3>& facing_option,
-                                                    const CardRoom& room)
+Vec3 centroid(const std::vector<Vec3>& points)
 {
-    Result<std::vector<Alignment>> r;
-    if (up_option && !usable_direction(*up_option))
-        r.fail(DiagnosticCode::bad_option,
-               "up: must be a finite, non-zero 3-vector (the model direction that becomes the "
-               "card's z)",
-               about_parameter("up"));
-    if (facing_option && !usable_direction(*facing_option))
-        r.fail(DiagnosticCode::bad_option,
-               "facing: must be a finite, non-zero 3-vector (the model direction that faces the "
-               "viewer)",
-               about_parameter("facing"));
-    if (!r.ok)
-        return r;
-    if (samples.points.empty()) {
-        r.fail(DiagnosticCode::degenerate_model,
-               model.source + ": the model has no surface area to align");
-        return r;
-    }
-    const std::vector<Vec3>& pts = samples.points;
     Vec3 centre = Vec3::Zero();
-    for (const Vec3& p : pts)
+    for (const Vec3& p : points)
         centre += p;
-    centre /= double(pts.size());
+    return points.empty() ? centre : Vec3(centre / double(points.size()));
+}
 
-    const Mat3 axes = normal_principal_axes(model);
-    const Vec3 up =
-        up_option ? Vec3(up_option->normalized()) : standing_up(model, axes, pts, centre);
-    if (facing_option) {
-        const Vec3 f = *facing_option - facing_option->dot(up) * up;
-        if (f.norm() < 1e-6 * facing_option->norm()) {
-            r.fail(DiagnosticCode::bad_option,
-                   "facing: must not be parallel to up (it gives the card's x, across the fold)",
-                   about_parameter("facing"));
-            return r;
-        }
-    }
+/// The alignments for a given up (alignment_candidates' mirror planes, axes and folds).
+std::vector<Alignment> aligned_on(const ModelMesh& model, const SurfaceSamples& samples,
+                                  const Mat3& axes, const Vec3& up,
+                                  const std::optional<Vec3>& facing_option, const CardRoom& room)
+{
+    std::vector<Alignment> out;
+    const std::vector<Vec3>& pts = samples.points;
+    const Vec3 centre = centroid(pts);
     // A reference direction across `up` that turns with the model: the NPCA axis least
     // parallel to it.
     Vec3 e1 = axes.col(1) - axes.col(1).dot(up) * up;
@@ -484,9 +480,63 @@ Result<std::vector<Alignment>> alignment_candidates(const ModelMesh& model,
         for (const auto& fold : folds) {
             Alignment a = placed(model, x, y, up, fold, room);
             a.symmetry_error = mirrored / diagonal;
-            r.value.push_back(a);
+            out.push_back(a);
         }
     }
+    return out;
+}
+
+} // namespace
+
+Result<std::vector<Alignment>> alignment_candidates(const ModelMesh& model,
+                                                    const SurfaceSamples& samples,
+                                                    const std::optional<Vec3>& up_option,
+                                                    const std::optional<Vec3>& facing_option,
+                                                    const CardRoom& room)
+{
+    Result<std::vector<Alignment>> r;
+    if (up_option && !usable_direction(*up_option))
+        r.fail(DiagnosticCode::bad_option,
+               "up: must be a finite, non-zero 3-vector (the model direction that becomes the "
+               "card's z)",
+               about_parameter("up"));
+    if (facing_option && !usable_direction(*facing_option))
+        r.fail(DiagnosticCode::bad_option,
+               "facing: must be a finite, non-zero 3-vector (the model direction that faces the "
+               "viewer)",
+               about_parameter("facing"));
+    if (!r.ok)
+        return r;
+    if (samples.points.empty()) {
+        r.fail(DiagnosticCode::degenerate_model,
+               model.source + ": the model has no surface area to align");
+        return r;
+    }
+    const Mat3 axes = normal_principal_axes(model);
+    const Vec3 up = up_option ? Vec3(up_option->normalized())
+                              : standing_up(model, axes, samples.points, centroid(samples.points));
+    if (facing_option) {
+        const Vec3 f = *facing_option - facing_option->dot(up) * up;
+        if (f.norm() < 1e-6 * facing_option->norm()) {
+            r.fail(DiagnosticCode::bad_option,
+                   "facing: must not be parallel to up (it gives the card's x, across the fold)",
+                   about_parameter("facing"));
+            return r;
+        }
+    }
+    // On a plate (a terrain slab, a print bed), what stands on it is placed on the card and the
+    // plate becomes the page (docs/MATH.md, "The plate under a model").
+    const std::optional<SupportingPlate> plate = supporting_plate(model, up);
+    if (!plate) {
+        r.value = aligned_on(model, samples, axes, up, facing_option, room);
+        return r;
+    }
+    const ModelMesh standing = above_plate(model, *plate);
+    const SurfaceSamples above = samples_above(*plate, samples);
+    r.value = aligned_on(standing, above.points.empty() ? samples : above, axes, up,
+                         facing_option, room);
+    for (Alignment& a : r.value)
+        a.plate = plate;
     return r;
 }
 

@@ -6,6 +6,7 @@
 namespace popup {
 
 PrimitiveSearch search_primitives(const ModelMesh& model, const SurfaceSamples& model_samples,
+                                  const std::vector<bool>& inner,
                                   const std::vector<Alignment>& alignments,
                                   const FitOptions& options, const CancelFlag* cancel)
 {
@@ -30,6 +31,7 @@ PrimitiveSearch search_primitives(const ModelMesh& model, const SurfaceSamples& 
         ro.max_primitives = options.max_mechanisms;
         ro.min_part = options.min_part_mm;
         ro.cancel = cancel;
+        ro.inner = inner;
         t.fit = fit_prisms(t.samples, card, ro);
         size_t n = 0;
         for (size_t i = 0; i < t.fit.owner.size(); ++i)

@@ -26,6 +26,7 @@ struct PrimitiveSearch {
 /// (the mirror plane) unless another explains a hundredth more (docs/MATH.md, "Which way is
 /// up").
 PrimitiveSearch search_primitives(const ModelMesh& model, const SurfaceSamples& model_samples,
+                                  const std::vector<bool>& inner,
                                   const std::vector<Alignment>& alignments,
                                   const FitOptions& options, const CancelFlag* cancel);
 

@@ -39,7 +39,7 @@ void draw_candidates(const Round& round, const DrawInputs& in, std::mt19937_64& 
                      std::uniform_int_distribution<size_t>& pick_point,
                      std::uniform_int_distribution<int>& pick_level, Candidates& found)
 {
-    const int p1 = round.remaining[pick_point(rng)];
+    const int p1 = round.starts[pick_point(rng)];
     std::vector<int> eligible;
     for (int h = 0; h < int(in.hosts.size()); ++h)
         if (above_host(in.hosts[h], in.locals[h][p1], in.eps))

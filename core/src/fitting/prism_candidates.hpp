@@ -22,7 +22,10 @@ bool triangle_from_lines(const PrismHost& h, Vec2 p1, Vec2 d1, Vec2 p2, Vec2 d2,
 /// its draws score against.
 struct Round {
     std::vector<int> remaining; ///< samples no prism explains, not on a host's plane
-    double N = 0.0;             ///< how many
+    /// Those of `remaining` on the outer surface: a draw starts at one (an inner sample, a
+    /// box's top under its roof, may carry a face but no prism needs to explain it).
+    std::vector<int> starts;
+    double N = 0.0; ///< how many starts
     double scale = 1.0;         ///< remaining samples per sample of the scoring subset
     /// Gap allowed along the hinge between samples of one face: a few sample spacings of the
     /// scoring subset.

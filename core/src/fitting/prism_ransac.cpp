@@ -83,15 +83,16 @@ std::vector<int> unexplained(const RansacResult& r)
 
 /// A round over `remaining` (at least one sample): its scoring subset and, per host, the
 /// subset and the `guard` samples above it.
-Round start_round(std::vector<int> remaining, const RansacResult& r,
+Round start_round(std::vector<int> remaining, std::vector<int> starts, const RansacResult& r,
                   const std::vector<std::vector<Local>>& locals, const std::vector<int>& guard,
                   double spacing, double eps)
 {
     Round round;
     round.remaining = std::move(remaining);
-    round.N = double(round.remaining.size());
+    round.starts = std::move(starts);
+    round.N = double(round.starts.size());
     const std::vector<int> subset = every_kth(round.remaining, 1000);
-    round.scale = round.N / double(subset.size());
+    round.scale = double(round.remaining.size()) / double(subset.size());
     round.gap = 4.0 * spacing * std::sqrt(round.scale);
     const int H = int(r.hosts.size());
     for (int i : round.remaining) {
@@ -189,25 +190,31 @@ RansacResult fit_prisms(const SurfaceSamples& samples, const PrismHost& card,
         box.extend(p);
     const double extent = box.sizes().maxCoeff();
     std::mt19937_64 rng(o.seed);
-    std::vector<int> all(total);
+    // The guard: samples a prism may not enclose, of the outer surface only.
+    std::vector<int> outer;
     for (size_t i = 0; i < total; ++i)
-        all[i] = int(i);
-    const std::vector<int> guard = every_kth(all, 3000);
+        if (o.inner.empty() || !o.inner[i])
+            outer.push_back(int(i));
+    const std::vector<int> guard = every_kth(outer, 3000);
     std::vector<Eigen::AlignedBox3d> taken; // boxes of the accepted prisms, card frame
 
     while (int(r.prisms.size()) < o.max_primitives) {
         stop_if_cancelled(o.cancel, "fit_design: fitting primitives");
         std::vector<int> remaining = unexplained(r);
-        const double N = double(remaining.size());
+        std::vector<int> starts;
+        for (int i : remaining)
+            if (o.inner.empty() || !o.inner[size_t(i)])
+                starts.push_back(i);
+        const double N = double(starts.size());
         if (N < o.min_points) {
             r.stopped_by_probability = true;
             break;
         }
-        const Round round =
-            start_round(std::move(remaining), r, locals, guard, samples.spacing, eps);
+        const Round round = start_round(std::move(remaining), std::move(starts), r, locals, guard,
+                                        samples.spacing, eps);
         Cells cells(samples.points, round.remaining, extent);
         const int hosts_per_sample = round.hosts_per_sample;
-        std::uniform_int_distribution<size_t> pick_point(0, round.remaining.size() - 1);
+        std::uniform_int_distribution<size_t> pick_point(0, round.starts.size() - 1);
         std::uniform_int_distribution<int> pick_level(0, kLevels - 1);
 
         const DrawInputs in{r.hosts, locals, search, cells, taken, box, eps, o.min_part};

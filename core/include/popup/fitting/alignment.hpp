@@ -2,6 +2,7 @@
 #include <optional>
 #include <vector>
 
+#include "popup/fitting/supporting_plate.hpp"
 #include "popup/fitting/surface_samples.hpp"
 #include "popup/input/model_mesh.hpp"
 #include "popup/model/card.hpp"
@@ -19,6 +20,9 @@ struct Alignment {
     double symmetry_error = 0.0;  ///< mean distance of the mirrored samples to the model,
                                   ///< divided by its diagonal (0: mirror-symmetric)
     Eigen::AlignedBox3d card_box; ///< the model's tight bounding box in the card's frame (mm)
+    /// The plate the model stands on, when it has one: its top is the card's page, and the box
+    /// and scale are those of what stands on it.
+    std::optional<SupportingPlate> plate;
 };
 
 /// What the card offers the model: its width along the fold and each page's depth, less the

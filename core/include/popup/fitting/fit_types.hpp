@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "popup/fitting/supporting_plate.hpp"
 #include "popup/mechanisms/designed_card.hpp"
 #include "popup/model/card.hpp"
 #include "popup/model/result.hpp"
@@ -84,6 +85,14 @@ struct FitResult {
     double coverage_error = 1.0; ///< thesis eq. 5.1 over the returned mechanisms
     double symmetry_error = 0.0; ///< mean mirrored-sample distance / the model's diagonal
     long ransac_draws = 0;       ///< minimal samples drawn by the primitive search
+    /// The plate under the model (a terrain slab, a print bed) that became the card's page;
+    /// the pop-up shows what stands on it, and is measured against that (above_plate).
+    std::optional<SupportingPlate> plate;
+    /// Pseudo-vertices of the search above the plate: on the outer surface, and inside the
+    /// model's volume (faces between touching parts, a box's top under its roof, inner parts,
+    /// window reveals: they may carry a prism's face but never refuse one); and the model's
+    /// triangles turned to face out of its volume (docs/MATH.md, "The model's volume").
+    int outer_samples = 0, inner_samples = 0, turned_faces = 0;
 
     /// `valid` with at least one mechanism on the card: a bare card is no pop-up, so no
     /// design is made of it and no sheets are cut.

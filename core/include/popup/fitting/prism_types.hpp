@@ -63,6 +63,10 @@ struct RansacOptions {
     /// host) and up: thinner mechanism parts get no glue tab on the cutting sheets.
     double min_part = 0.0;
     long max_draws = 100000; ///< safety bound on minimal samples drawn in one search
+    /// Per sample, or empty: inside the model's volume (outer_surface: a face between touching
+    /// parts, a box's top under its roof). Such samples may carry a prism's face but never
+    /// refuse a prism that encloses them.
+    std::vector<bool> inner;
     const CancelFlag* cancel = nullptr;
 };
 
