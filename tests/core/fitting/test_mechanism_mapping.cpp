@@ -1,7 +1,7 @@
 // Table 5.1: which mechanism each prism becomes. With samples, by their distance to each
 // mechanism's patches (docs/MATH.md, "Mapping by distance"), worked out by hand from the prism's
 // dimensions; without, or on a tie, by eq. 5.1, whose areas are worked out by hand too
-// (docs/DESIGN.md, "Why eq. 5.1 never picks a v-fold").
+// (docs/DESIGN.md, "Mapping by distance (why eq. 5.1 never picked a v-fold)").
 #include <gtest/gtest.h>
 
 #include <cmath>
