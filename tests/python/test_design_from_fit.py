@@ -109,8 +109,8 @@ def test_fitted_mechanisms_become_features_with_their_dimensions(doc, core, tetr
 def test_a_fit_result_with_a_v_fold_builds_its_wings_where_the_parameters_put_them(
     doc, core, tetrahedron
 ):
-    """eq. 5.1 never maps a prism to a v-fold (docs/DESIGN.md), but the repair and hand-edited
-    results carry them. At 180° the card is the plane z = 0, the fold the y axis: O = (0, 150, 0)
+    """The mapping gives a v-fold where a prism's samples lie on its wings (docs/DESIGN.md,
+    "Mapping by distance"); the repair and hand-edited results carry them too. At 180° the card is the plane z = 0, the fold the y axis: O = (0, 150, 0)
     on the fold, A and B `run` = 20 mm away at 45° to it on either page, the tip P in the bisecting
     plane x = 0, `spine` = 25 mm from O at 60° above the fold."""
     from popupwb import validity

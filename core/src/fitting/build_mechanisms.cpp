@@ -18,7 +18,7 @@ BuiltMechanisms build_mechanisms(RansacResult fit, const SurfaceSamples& samples
     std::vector<MechanismPlan> plans;
     int plans_made = 0;
     auto plan_and_build = [&](const RansacResult& prisms) {
-        Mapping mapping = map_mechanisms(prisms);
+        Mapping mapping = map_mechanisms(prisms, samples);
         for (int k : mapping.unmapped) {
             const std::string name = "primitive " + std::to_string(k + 1);
             r.repairs.push_back({name, "dropped", "no mechanism of Table 5.1 fits its host"});

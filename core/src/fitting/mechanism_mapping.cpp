@@ -7,6 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "popup/fitting/mechanism_patches.hpp"
+
 namespace popup {
 namespace {
 
@@ -157,20 +159,74 @@ double coverage_error(const std::vector<MechanismPlan>& plans)
     return total > 0 ? 1.0 - principal / total : 1.0;
 }
 
-Mapping map_mechanisms(const RansacResult& fit)
+namespace {
+
+/// Per prism: how many samples the search assigned to it, and for each of its options the sum
+/// of their distances to that mechanism's patches at the design state.
+struct OptionDistances {
+    std::vector<int> samples;
+    std::vector<std::vector<double>> sum;
+};
+
+OptionDistances option_distances(const RansacResult& fit, const SurfaceSamples& samples,
+                                 const std::vector<std::vector<MechanismKind>>& options)
+{
+    const size_t n = fit.prisms.size();
+    if (fit.owner.size() != samples.points.size())
+        throw std::invalid_argument(
+            "map_mechanisms: fit.owner has " + std::to_string(fit.owner.size()) + " entries for " +
+            std::to_string(samples.points.size()) + " samples: it needs one per sample");
+    std::vector<std::vector<Vec3>> owned(n);
+    for (size_t i = 0; i < fit.owner.size(); ++i) {
+        const int k = fit.owner[i];
+        if (k < -1 || k >= int(n))
+            throw std::invalid_argument("map_mechanisms: fit.owner[" + std::to_string(i) +
+                                        "] = " + std::to_string(k) + ", must be -1 or in [0, " +
+                                        std::to_string(int(n) - 1) + "] (the prisms' indices)");
+        if (k >= 0)
+            owned[k].push_back(host_coordinates(fit.hosts[fit.prisms[k].host], samples.points[i]));
+    }
+    OptionDistances d;
+    d.samples.resize(n);
+    d.sum.resize(n);
+    for (size_t k = 0; k < n; ++k) {
+        d.samples[k] = int(owned[k].size());
+        const Prism& m = fit.prisms[k];
+        const PrismHost& h = fit.hosts[m.host];
+        for (MechanismKind kind : options[k]) {
+            const std::vector<HostPolygon> patches = design_patches(plan_mechanism(kind, m, h), h);
+            double sum = 0;
+            for (const Vec3& q : owned[k])
+                sum += distance_to_patches(q, patches);
+            d.sum[k].push_back(sum);
+        }
+    }
+    return d;
+}
+
+} // namespace
+
+Mapping map_mechanisms(const RansacResult& fit, const SurfaceSamples& samples)
 {
     Mapping best;
     const size_t n = fit.prisms.size();
     std::vector<std::vector<MechanismKind>> options(n);
     for (size_t i = 0; i < n; ++i)
         options[i] = mechanism_options(fit.prisms[i], fit.hosts[fit.prisms[i].host]);
+    const OptionDistances distances = option_distances(fit, samples, options);
+    int owned = 0;
+    for (size_t k = 0; k < n; ++k)
+        owned += options[k].empty() ? 0 : distances.samples[k];
+    // Sums closer than a nanometre per sample are a tie (docs/MATH.md, "Mapping by distance").
+    const double tie = 1e-9 * (1 + owned);
     // Exhaustive: few primitives (max_mechanisms), at most two options each.
     std::vector<int> choice(n, 0);
-    double best_error = 2.0;
+    double best_distance = 1e300, best_error = 2.0;
     std::vector<int> best_choice;
     std::function<void(size_t)> visit = [&](size_t i) {
         if (i == n) {
             std::vector<MechanismPlan> plans;
+            double distance = 0;
             for (size_t k = 0; k < n; ++k) {
                 if (options[k].empty())
                     continue;
@@ -181,9 +237,12 @@ Mapping map_mechanisms(const RansacResult& fit)
                      options[h.parent][choice[h.parent]] != MechanismKind::box_fold))
                     return; // stands on a part only a box fold offers
                 plans.push_back(plan_mechanism(options[k][choice[k]], m, h));
+                distance += distances.sum[k][choice[k]];
             }
             const double e = coverage_error(plans);
-            if (e < best_error - 1e-12) {
+            if (distance < best_distance - tie ||
+                (distance <= best_distance + tie && e < best_error - 1e-12)) {
+                best_distance = distance;
                 best_error = e;
                 best_choice = choice;
             }
@@ -199,6 +258,7 @@ Mapping map_mechanisms(const RansacResult& fit)
     if (best_choice.empty())
         return best;
     best.coverage_error = best_error;
+    best.sample_distance = owned > 0 ? best_distance / owned : 0.0;
     std::map<MechanismKind, int> counters;
     std::vector<int> plan_of(n, -1);
     for (size_t k = 0; k < n; ++k) {
@@ -211,6 +271,8 @@ Mapping map_mechanisms(const RansacResult& fit)
         MechanismPlan p = plan_mechanism(options[k][best_choice[k]], m, h);
         p.prism = int(k);
         p.name = catalogue_entry(p.kind).short_name + std::to_string(++counters[p.kind]);
+        p.samples = distances.samples[k];
+        p.sample_distance = p.samples ? distances.sum[k][best_choice[k]] / p.samples : 0.0;
         if (h.parent < 0) {
             p.host = "central fold";
         } else {

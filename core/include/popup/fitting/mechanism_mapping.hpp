@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "popup/fitting/prism_ransac.hpp"
+#include "popup/fitting/surface_samples.hpp"
 #include "popup/mechanisms/designed_mechanism.hpp"
 
 namespace popup {
@@ -14,6 +15,8 @@ struct MechanismPlan : DesignedMechanism {
     int parent = -1;             ///< index of the plan it stands on, -1 for the card
     double principal_area = 0.0; ///< faces of the prism its patches lie on (Fig 5.3)
     double face_area = 0.0;      ///< all faces of the prism
+    int samples = 0;             ///< samples the search assigned to the prism (its inliers)
+    double sample_distance = 0;  ///< their mean distance to its patches at the design state (mm)
     double coverage_error() const { return face_area > 0 ? 1.0 - principal_area / face_area : 1; }
 };
 
@@ -25,16 +28,22 @@ std::vector<MechanismKind> mechanism_options(const Prism& prism, const PrismHost
 MechanismPlan plan_mechanism(MechanismKind kind, const Prism& prism, const PrismHost& host);
 
 /// Table 5.1 mapping, exhaustive over the combinations: every prism takes one of its options,
-/// a prism standing on another's top or side needs that one to be a box fold, and the
-/// combination with the lowest coverage error (eq. 5.1, over all prisms) wins. Plans come in
-/// host order, named per type. Prisms whose host cannot be a box in any combination are left
-/// out (their index is in `unmapped`).
+/// and a prism standing on another's top or side needs that one to be a box fold. The
+/// combination whose patches at the design state lie nearest the prisms' own samples wins: the
+/// lowest sum over every sample the search assigned to a prism (`fit.owner`) of its distance to
+/// the nearest patch of that prism's mechanism (mechanism_patches.hpp); ties, as when no sample
+/// is assigned, go to the lower coverage error (eq. 5.1, over all prisms) (docs/MATH.md,
+/// "Mapping by distance"). Plans come in host order, named per type. Prisms whose host cannot
+/// be a box in any combination are left out (their index is in `unmapped`).
+/// `fit.owner` needs one entry per sample of `samples`, each -1 or a prism's index
+/// (std::invalid_argument naming the count or the entry otherwise).
 struct Mapping {
     std::vector<MechanismPlan> plans;
     double coverage_error = 1.0;
+    double sample_distance = 0.0; ///< mean over the mapped prisms' samples (mm)
     std::vector<int> unmapped;
 };
-Mapping map_mechanisms(const RansacResult& fit);
+Mapping map_mechanisms(const RansacResult& fit, const SurfaceSamples& samples);
 
 /// Eq. 5.1 over the given plans: 1 − Σ principal areas / Σ face areas.
 double coverage_error(const std::vector<MechanismPlan>& plans);
