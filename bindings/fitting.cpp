@@ -125,10 +125,9 @@ void bind_fitting(py::module_& m)
     py::class_<SupportingPlate>(m, "SupportingPlate",
                                 "The plate a model stands on (a terrain slab, a print bed), which "
                                 "becomes the card's page (docs/MATH.md)")
-        .def_property_readonly("up",
-                               [](const SupportingPlate& p) {
-                                   return std::make_tuple(p.up.x(), p.up.y(), p.up.z());
-                               })
+        .def_property_readonly(
+            "up",
+            [](const SupportingPlate& p) { return std::make_tuple(p.up.x(), p.up.y(), p.up.z()); })
         .def_readonly("top", &SupportingPlate::top)
         .def_readonly("thickness", &SupportingPlate::thickness)
         .def_readonly("top_area", &SupportingPlate::top_area);
@@ -155,7 +154,8 @@ void bind_fitting(py::module_& m)
         .def_readonly("outer_samples", &FitResult::outer_samples)
         .def_readonly("inner_samples", &FitResult::inner_samples)
         .def_readonly("turned_faces", &FitResult::turned_faces)
-        .def_readonly("plate", &FitResult::plate, "the SupportingPlate that became the page, or None")
+        .def_readonly("plate", &FitResult::plate,
+                      "the SupportingPlate that became the page, or None")
         .def_readonly("timings", &FitResult::timings)
         .def_property_readonly("pops_up", &FitResult::pops_up,
                                "valid with at least one mechanism: a bare card is no pop-up")

@@ -533,8 +533,8 @@ Result<std::vector<Alignment>> alignment_candidates(const ModelMesh& model,
     }
     const ModelMesh standing = above_plate(model, *plate);
     const SurfaceSamples above = samples_above(*plate, samples);
-    r.value = aligned_on(standing, above.points.empty() ? samples : above, axes, up,
-                         facing_option, room);
+    r.value =
+        aligned_on(standing, above.points.empty() ? samples : above, axes, up, facing_option, room);
     for (Alignment& a : r.value)
         a.plate = plate;
     return r;

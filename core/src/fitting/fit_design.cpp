@@ -7,9 +7,9 @@
 #include "build_mechanisms.hpp"
 #include "design_distance.hpp"
 #include "design_profiles.hpp"
+#include "outer_surface.hpp"
 #include "popup/fitting/alignment.hpp"
 #include "popup/fitting/surface_samples.hpp"
-#include "outer_surface.hpp"
 #include "primitive_search.hpp"
 #include "stage_timer.hpp"
 

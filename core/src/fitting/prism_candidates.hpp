@@ -25,8 +25,8 @@ struct Round {
     /// Those of `remaining` on the outer surface: a draw starts at one (an inner sample, a
     /// box's top under its roof, may carry a face but no prism needs to explain it).
     std::vector<int> starts;
-    double N = 0.0; ///< how many starts
-    double scale = 1.0;         ///< remaining samples per sample of the scoring subset
+    double N = 0.0;     ///< how many starts
+    double scale = 1.0; ///< remaining samples per sample of the scoring subset
     /// Gap allowed along the hinge between samples of one face: a few sample spacings of the
     /// scoring subset.
     double gap = 0.0;

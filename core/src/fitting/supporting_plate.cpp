@@ -71,9 +71,8 @@ std::optional<SupportingPlate> supporting_plate(const ModelMesh& model, const Ve
     }
     if (area_at.empty())
         return std::nullopt;
-    const auto widest = std::max_element(area_at.begin(), area_at.end(), [](auto& x, auto& y) {
-        return x.second < y.second;
-    });
+    const auto widest = std::max_element(area_at.begin(), area_at.end(),
+                                         [](auto& x, auto& y) { return x.second < y.second; });
     SupportingPlate plate;
     plate.up = up;
     plate.thickness = widest->first * bin;
