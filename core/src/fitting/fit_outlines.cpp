@@ -3,6 +3,8 @@
 #include "../geometry/clipper_paths.hpp"
 #include "../model/millimetres.hpp"
 #include "outline_support.hpp"
+#include "projected_faces.hpp"
+#include "silhouette_cache.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -11,7 +13,6 @@
 #include <optional>
 #include <set>
 
-#include "popup/fitting/silhouette.hpp"
 #include "popup/model/apply_profile.hpp"
 #include "popup/model/profile.hpp"
 #include "popup/sheets/sheet_layout.hpp"
@@ -282,8 +283,9 @@ std::map<std::string, double> carried_folds(const Scaffold& s, int patch, const 
 
 /// Applies one part's silhouette to `s`; the profile it kept (an empty part when the silhouette
 /// covers the whole part: `s` unchanged), or why not.
-Result<FittedProfile> outline_part(Scaffold& s, const ModelMesh& model, const FittedMechanism& m,
-                                   const Part& part, bool pose_at_90, double glued_joint)
+Result<FittedProfile> outline_part(Scaffold& s, SilhouetteCache& silhouettes,
+                                   const FittedMechanism& m, const Part& part, bool pose_at_90,
+                                   double glued_joint)
 {
     Result<FittedProfile> r;
     const Result<ProfileFrame> frame = profile_frame(s, part.patch);
@@ -291,7 +293,7 @@ Result<FittedProfile> outline_part(Scaffold& s, const ModelMesh& model, const Fi
         r.fail_with(frame.diagnostics);
         return r;
     }
-    SilhouetteOptions so;
+    std::optional<Pose> pose;
     if (pose_at_90) {
         const Result<FoldSweep> sweep = simulate_fold(s, {M_PI / 2});
         if (!sweep.ok || sweep.value.states.empty()) {
@@ -300,9 +302,12 @@ Result<FittedProfile> outline_part(Scaffold& s, const ModelMesh& model, const Fi
                 r.fail(DiagnosticCode::bad_profile, "the card could not be posed at 90°");
             return r;
         }
-        so.pose = sweep.value.states.front().poses[size_t(s.patch_index(part.patch))];
+        pose = sweep.value.states.front().poses[size_t(s.patch_index(part.patch))];
     }
-    const Result<Silhouette> sil = silhouette_profile(model, s, part.patch, so);
+    const Patch& patch = *s.find_patch(part.patch);
+    const Result<Silhouette> sil =
+        silhouettes.seen_in(posed(frame.value, pose),
+                            patch.name.empty() ? "patch " + std::to_string(patch.id) : patch.name);
     if (!sil.ok) {
         r.fail_with(sil.diagnostics);
         return r;
@@ -409,9 +414,9 @@ namespace {
 
 /// One mechanism's outlines (fit_outlines' loop body): together when the check passes, else one
 /// at a time, keeping what the simulator accepts.
-void outline_mechanism(OutlineOutcome& out, const ModelMesh& model_in_card,
-                       const FittedMechanism& m, const std::vector<std::string>& prefixes,
-                       bool pose_at_90, double glued_joint, const CancelFlag* cancel)
+void outline_mechanism(OutlineOutcome& out, SilhouetteCache& silhouettes, const FittedMechanism& m,
+                       const std::vector<std::string>& prefixes, bool pose_at_90,
+                       double glued_joint, const CancelFlag* cancel)
 {
     ValidityOptions vo;
     vo.cancel = cancel;
@@ -425,7 +430,7 @@ void outline_mechanism(OutlineOutcome& out, const ModelMesh& model_in_card,
     bool all_applied = true;
     for (const Part& part : parts) {
         Result<FittedProfile> fp =
-            outline_part(together, model_in_card, m, part, pose_at_90, glued_joint);
+            outline_part(together, silhouettes, m, part, pose_at_90, glued_joint);
         if (!fp.ok) {
             all_applied = false;
             break;
@@ -443,7 +448,7 @@ void outline_mechanism(OutlineOutcome& out, const ModelMesh& model_in_card,
     for (const Part& part : parts) {
         Scaffold trial = out.scaffold;
         Result<FittedProfile> fp =
-            outline_part(trial, model_in_card, m, part, pose_at_90, glued_joint);
+            outline_part(trial, silhouettes, m, part, pose_at_90, glued_joint);
         if (!fp.ok) {
             out.dropped.push_back(
                 {m.name, "profile dropped",
@@ -472,9 +477,10 @@ OutlineOutcome fit_outlines(const ModelMesh& model_in_card, const Scaffold& scaf
 {
     OutlineOutcome out;
     out.scaffold = scaffold;
+    SilhouetteCache silhouettes(model_in_card);
     for (const FittedMechanism& m : mechanisms)
-        outline_mechanism(out, model_in_card, m, principal_parts(m.kind),
-                          lies_flat(out.scaffold, m), glued_joint_mm, cancel);
+        outline_mechanism(out, silhouettes, m, principal_parts(m.kind), lies_flat(out.scaffold, m),
+                          glued_joint_mm, cancel);
     return out;
 }
 
@@ -484,7 +490,8 @@ OutlineOutcome fit_outlines_of(const ModelMesh& model_in_card, const Scaffold& s
 {
     OutlineOutcome out;
     out.scaffold = scaffold;
-    outline_mechanism(out, model_in_card, mechanism, parts, false,
+    SilhouetteCache silhouettes(model_in_card);
+    outline_mechanism(out, silhouettes, mechanism, parts, false,
                       shortest_tabbed_crease(SheetOptions{}), cancel);
     return out;
 }
