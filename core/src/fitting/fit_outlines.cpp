@@ -323,9 +323,11 @@ Result<FittedProfile> outline_part(Scaffold& s, SilhouetteCache& silhouettes,
     }
     if (glued_joint > 0) {
         // Every glued joint of the part long enough for a glue tab keeps room for one on each of
-        // its pieces: an outline that meets its page in a sliver (a figure's feet, a wheel) leaves
-        // a joint the sheets cannot glue. The crease is FitOptions.min_part_mm, by default the
-        // sheets' shortest tabbed crease; 0 lets the maker glue by hand (docs/DESIGN.md).
+        // its pieces. The strips (part_outline) see to it where the silhouette meets the joint
+        // (a figure's feet, a wheel); this guards the rest: a joint the silhouette leaves entirely
+        // is lost, and the sheets could not glue it. The crease is FitOptions.min_part_mm, by
+        // default the sheets' shortest tabbed crease; 0 lets the maker glue by hand
+        // (docs/DESIGN.md).
         const double crease = glued_joint;
         const std::map<std::string, double> joints_after = joint_lengths(s, part.patch);
         for (const auto& [name, whole] : joints_before) {
