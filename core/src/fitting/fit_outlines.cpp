@@ -2,7 +2,10 @@
 
 #include "../geometry/clipper_paths.hpp"
 #include "../model/millimetres.hpp"
+#include "glued_joints.hpp"
 #include "outline_support.hpp"
+#include "projected_faces.hpp"
+#include "silhouette_cache.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -11,7 +14,6 @@
 #include <optional>
 #include <set>
 
-#include "popup/fitting/silhouette.hpp"
 #include "popup/model/apply_profile.hpp"
 #include "popup/model/profile.hpp"
 #include "popup/sheets/sheet_layout.hpp"
@@ -20,6 +22,8 @@
 
 namespace popup {
 
+using glued_joints::joint_lengths;
+using glued_joints::joints_without_room;
 using outline_support::first_error;
 using outline_support::placed;
 using outline_support::record_cut;
@@ -100,12 +104,8 @@ bool lies_flat(const Scaffold& s, const FittedMechanism& m)
 /// smallest feature (SheetOptions::min_feature, 3 mm) is twice it.
 constexpr double kSmallestCut = 1.5;
 
-/// `patch` (its outline in `frame`) minus the parts of the region the silhouette cuts away that
-/// are wider than 2·kSmallestCut (a morphological opening of the cut-away region, exact on
-/// Clipper's grid): slivers between a fitted part and a model a little smaller, and thin
-/// notches, stay paper. Empty when nothing is left to cut.
-std::optional<Profile> significant_cut(const Patch& patch, const ProfileFrame& frame,
-                                       const Profile& silhouette)
+/// `patch`'s paper (its outline minus its holes) in `frame`.
+ClipperLib::Paths paper_of(const Patch& patch, const ProfileFrame& frame)
 {
     using namespace ClipperLib;
     Loop2 outline;
@@ -125,13 +125,32 @@ std::optional<Profile> significant_cut(const Patch& patch, const ProfileFrame& f
         c.AddPaths(counter_clockwise_paths(holes), ptClip, true);
         c.Execute(ctDifference, paper, pftNonZero, pftNonZero);
     }
-    Paths shape = counter_clockwise_paths({silhouette.outer});
-    if (!silhouette.holes.empty()) {
+    return paper;
+}
+
+/// The region `profile` covers (its outer loop minus its holes).
+ClipperLib::Paths region_of(const Profile& profile)
+{
+    using namespace ClipperLib;
+    Paths shape = counter_clockwise_paths({profile.outer});
+    if (!profile.holes.empty()) {
         Clipper c;
         c.AddPaths(shape, ptSubject, true);
-        c.AddPaths(counter_clockwise_paths(silhouette.holes), ptClip, true);
+        c.AddPaths(counter_clockwise_paths(profile.holes), ptClip, true);
         c.Execute(ctDifference, shape, pftNonZero, pftNonZero);
     }
+    return shape;
+}
+
+/// `paper` minus the parts of the region `shape` cuts away that are wider than 2·kSmallestCut
+/// (a morphological opening of the cut-away region, exact on Clipper's grid): slivers between
+/// a fitted part and a model a little smaller, and thin notches, stay paper. Its largest piece
+/// with its holes, named `name` (apply_profile drops pieces without folds anyway); empty when
+/// nothing is left to cut.
+std::optional<Profile> significant_cut(const ClipperLib::Paths& paper,
+                                       const ClipperLib::Paths& shape, const std::string& name)
+{
+    using namespace ClipperLib;
     Paths away;
     {
         Clipper c;
@@ -153,14 +172,20 @@ std::optional<Profile> significant_cut(const Patch& patch, const ProfileFrame& f
         o.AddPaths(eroded, jtMiter, etClosedPolygon);
         o.Execute(opened, r);
     }
+    // Growing back with mitred corners can reach past the region where an edge shorter than r
+    // vanished in the shrink (a strip's end next to a slanted silhouette): what is cut stays
+    // within what the shape leaves, so the shape is always kept.
     PolyTree kept;
     {
         Clipper c;
+        c.AddPaths(opened, ptSubject, true);
+        c.AddPaths(away, ptClip, true);
+        c.Execute(ctIntersection, opened, pftNonZero, pftNonZero);
+        c.Clear();
         c.AddPaths(paper, ptSubject, true);
         c.AddPaths(opened, ptClip, true);
         c.Execute(ctDifference, kept, pftNonZero, pftNonZero);
     }
-    // The largest piece, with its holes (apply_profile drops pieces without folds anyway).
     const PolyNode* best = nullptr;
     double best_area = 0;
     for (const PolyNode* n : kept.Childs) {
@@ -173,89 +198,37 @@ std::optional<Profile> significant_cut(const Patch& patch, const ProfileFrame& f
     if (!best)
         return std::nullopt;
     Profile out;
-    out.name = silhouette.name;
+    out.name = name;
     out.outer = to_loop(best->Contour);
     for (const PolyNode* h : best->Childs)
         out.holes.push_back(to_loop(h->Contour));
     return out;
 }
 
-/// Length of the shortest piece of each glued joint of `patch` (an outline may split one into
-/// several, each carrying a tab of its own on the sheets), by the other patch's name.
-std::map<std::string, double> joint_lengths(const Scaffold& s, int patch)
+/// The outline part `patch` of `s` takes from `silhouette` (in `frame`): its significant cut,
+/// and where glued joints are kept (`crease` > 0) that cut again with the strips of paper its
+/// glued joints need united into it (glued_joints::joint_strips, the default sheets' tab
+/// depth deep). Empty when nothing is left to cut.
+std::optional<Profile> part_outline(const Scaffold& s, int patch, const ProfileFrame& frame,
+                                    const Profile& silhouette, double crease)
 {
-    std::map<std::string, double> out;
-    for (const Hinge& h : s.hinges) {
-        if ((h.patch_a != patch && h.patch_b != patch) || h.kind != JointKind::tab)
-            continue;
-        const Patch* p = s.find_patch(h.patch_a == patch ? h.patch_b : h.patch_a);
-        if (!p)
-            continue;
-        const double length = (h.to - h.from).norm();
-        out[p->name] = out.count(p->name) ? std::min(out[p->name], length) : length;
-    }
-    return out;
-}
-
-bool inside_loop(const std::vector<Vec2>& loop, const Vec2& q)
-{
-    bool inside = false;
-    for (size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++) {
-        const Vec2 &a = loop[j], &b = loop[i];
-        if ((a.y() > q.y()) != (b.y() > q.y()) &&
-            q.x() < a.x() + (q.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y()))
-            inside = !inside;
-    }
-    return inside;
-}
-
-/// Glued joints of `patch` (by the other patch's name) along which the patch does not reach
-/// `depth` inward over the joint's whole length: no tab that deep can be glued onto it there.
-std::set<std::string> joints_without_room(const Scaffold& s, int patch_id, double depth)
-{
-    std::set<std::string> out;
-    Patch patch = *s.find_patch(patch_id);
-    patch.derive_frame();
-    std::vector<Vec2> outer;
-    for (const Vec3& v : patch.outer)
-        outer.push_back(patch.to_local(v));
-    std::vector<std::vector<Vec2>> holes;
-    for (const Loop3& h : patch.holes) {
-        holes.emplace_back();
-        for (const Vec3& v : h)
-            holes.back().push_back(patch.to_local(v));
-    }
-    auto in_patch = [&](const Vec3& x) {
-        const Vec2 q = patch.to_local(x);
-        if (!inside_loop(outer, q))
-            return false;
-        for (const auto& h : holes)
-            if (inside_loop(h, q))
-                return false;
-        return true;
-    };
-    for (const Hinge& h : s.hinges) {
-        if ((h.patch_a != patch_id && h.patch_b != patch_id) || h.kind != JointKind::tab)
-            continue;
-        const Patch* other = s.find_patch(h.patch_a == patch_id ? h.patch_b : h.patch_a);
-        const Vec3 along = h.to - h.from;
-        if (!other || along.norm() < 1e-9)
-            continue;
-        Vec3 inward = patch.normal.cross(along).normalized();
-        const Vec3 mid = 0.5 * (h.from + h.to);
-        if (!in_patch(mid + 1e-3 * depth * inward))
-            inward = -inward;
-        // Every half millimetre along the joint, its ends left out (the corners of the patch).
-        const int steps = std::max(2, int(std::ceil(along.norm() / 0.5)));
-        for (int k = 1; k < steps; ++k) {
-            const double u = double(k) / steps;
-            if (!in_patch(h.from + u * along + 0.999 * depth * inward)) {
-                out.insert(other->name);
-                break;
-            }
-        }
-    }
-    return out;
+    using namespace ClipperLib;
+    const Paths paper = paper_of(*s.find_patch(patch), frame);
+    const std::optional<Profile> cut =
+        significant_cut(paper, region_of(silhouette), silhouette.name);
+    if (!cut || !(crease > 0))
+        return cut;
+    const Paths shape = region_of(*cut);
+    const Paths strips =
+        glued_joints::joint_strips(s, patch, frame, shape, crease, SheetOptions{}.tab_width);
+    if (strips.empty())
+        return cut;
+    Paths kept;
+    Clipper c;
+    c.AddPaths(shape, ptSubject, true);
+    c.AddPaths(strips, ptClip, true);
+    c.Execute(ctUnion, kept, pftNonZero, pftNonZero);
+    return significant_cut(paper, kept, silhouette.name);
 }
 
 /// Length of each fold and joint of `patch`, by the other patch's name, when the patch carries
@@ -282,8 +255,9 @@ std::map<std::string, double> carried_folds(const Scaffold& s, int patch, const 
 
 /// Applies one part's silhouette to `s`; the profile it kept (an empty part when the silhouette
 /// covers the whole part: `s` unchanged), or why not.
-Result<FittedProfile> outline_part(Scaffold& s, const ModelMesh& model, const FittedMechanism& m,
-                                   const Part& part, bool pose_at_90, double glued_joint)
+Result<FittedProfile> outline_part(Scaffold& s, SilhouetteCache& silhouettes,
+                                   const FittedMechanism& m, const Part& part, bool pose_at_90,
+                                   double glued_joint)
 {
     Result<FittedProfile> r;
     const Result<ProfileFrame> frame = profile_frame(s, part.patch);
@@ -291,7 +265,7 @@ Result<FittedProfile> outline_part(Scaffold& s, const ModelMesh& model, const Fi
         r.fail_with(frame.diagnostics);
         return r;
     }
-    SilhouetteOptions so;
+    std::optional<Pose> pose;
     if (pose_at_90) {
         const Result<FoldSweep> sweep = simulate_fold(s, {M_PI / 2});
         if (!sweep.ok || sweep.value.states.empty()) {
@@ -300,9 +274,12 @@ Result<FittedProfile> outline_part(Scaffold& s, const ModelMesh& model, const Fi
                 r.fail(DiagnosticCode::bad_profile, "the card could not be posed at 90°");
             return r;
         }
-        so.pose = sweep.value.states.front().poses[size_t(s.patch_index(part.patch))];
+        pose = sweep.value.states.front().poses[size_t(s.patch_index(part.patch))];
     }
-    const Result<Silhouette> sil = silhouette_profile(model, s, part.patch, so);
+    const Patch& patch = *s.find_patch(part.patch);
+    const Result<Silhouette> sil =
+        silhouettes.seen_in(posed(frame.value, pose),
+                            patch.name.empty() ? "patch " + std::to_string(patch.id) : patch.name);
     if (!sil.ok) {
         r.fail_with(sil.diagnostics);
         return r;
@@ -314,7 +291,7 @@ Result<FittedProfile> outline_part(Scaffold& s, const ModelMesh& model, const Fi
     fp.part = part.name;
     fp.reference = size_in(*s.find_patch(part.patch), frame.value);
     const std::optional<Profile> wanted =
-        significant_cut(*s.find_patch(part.patch), frame.value, silhouette);
+        part_outline(s, part.patch, frame.value, silhouette, glued_joint);
     if (!wanted) { // the part is the model's outline there, up to slivers
         fp.part.clear();
         return r;
@@ -346,14 +323,16 @@ Result<FittedProfile> outline_part(Scaffold& s, const ModelMesh& model, const Fi
     }
     if (glued_joint > 0) {
         // Every glued joint of the part long enough for a glue tab keeps room for one on each of
-        // its pieces: an outline that meets its page in a sliver (a figure's feet, a wheel) leaves
-        // a joint the sheets cannot glue. The crease is FitOptions.min_part_mm, by default the
-        // sheets' shortest tabbed crease; 0 lets the maker glue by hand (docs/DESIGN.md).
+        // its pieces. The strips (part_outline) see to it where the silhouette meets the joint
+        // (a figure's feet, a wheel); this guards the rest: a joint the silhouette leaves entirely
+        // is lost, and the sheets could not glue it. The crease is FitOptions.min_part_mm, by
+        // default the sheets' shortest tabbed crease; 0 lets the maker glue by hand
+        // (docs/DESIGN.md).
         const double crease = glued_joint;
         const std::map<std::string, double> joints_after = joint_lengths(s, part.patch);
         for (const auto& [name, whole] : joints_before) {
             const double length = joints_after.count(name) ? joints_after.at(name) : 0.0;
-            if (whole >= crease && length < crease) {
+            if (whole >= crease - tol && length < crease - tol) { // tol: Clipper's rounding
                 s = std::move(before);
                 r.fail(DiagnosticCode::bad_profile,
                        "the outline would leave a piece of its glued joint with " + name + " " +
@@ -409,9 +388,9 @@ namespace {
 
 /// One mechanism's outlines (fit_outlines' loop body): together when the check passes, else one
 /// at a time, keeping what the simulator accepts.
-void outline_mechanism(OutlineOutcome& out, const ModelMesh& model_in_card,
-                       const FittedMechanism& m, const std::vector<std::string>& prefixes,
-                       bool pose_at_90, double glued_joint, const CancelFlag* cancel)
+void outline_mechanism(OutlineOutcome& out, SilhouetteCache& silhouettes, const FittedMechanism& m,
+                       const std::vector<std::string>& prefixes, bool pose_at_90,
+                       double glued_joint, const CancelFlag* cancel)
 {
     ValidityOptions vo;
     vo.cancel = cancel;
@@ -425,7 +404,7 @@ void outline_mechanism(OutlineOutcome& out, const ModelMesh& model_in_card,
     bool all_applied = true;
     for (const Part& part : parts) {
         Result<FittedProfile> fp =
-            outline_part(together, model_in_card, m, part, pose_at_90, glued_joint);
+            outline_part(together, silhouettes, m, part, pose_at_90, glued_joint);
         if (!fp.ok) {
             all_applied = false;
             break;
@@ -443,7 +422,7 @@ void outline_mechanism(OutlineOutcome& out, const ModelMesh& model_in_card,
     for (const Part& part : parts) {
         Scaffold trial = out.scaffold;
         Result<FittedProfile> fp =
-            outline_part(trial, model_in_card, m, part, pose_at_90, glued_joint);
+            outline_part(trial, silhouettes, m, part, pose_at_90, glued_joint);
         if (!fp.ok) {
             out.dropped.push_back(
                 {m.name, "profile dropped",
@@ -472,9 +451,10 @@ OutlineOutcome fit_outlines(const ModelMesh& model_in_card, const Scaffold& scaf
 {
     OutlineOutcome out;
     out.scaffold = scaffold;
+    SilhouetteCache silhouettes(model_in_card);
     for (const FittedMechanism& m : mechanisms)
-        outline_mechanism(out, model_in_card, m, principal_parts(m.kind),
-                          lies_flat(out.scaffold, m), glued_joint_mm, cancel);
+        outline_mechanism(out, silhouettes, m, principal_parts(m.kind), lies_flat(out.scaffold, m),
+                          glued_joint_mm, cancel);
     return out;
 }
 
@@ -484,7 +464,8 @@ OutlineOutcome fit_outlines_of(const ModelMesh& model_in_card, const Scaffold& s
 {
     OutlineOutcome out;
     out.scaffold = scaffold;
-    outline_mechanism(out, model_in_card, mechanism, parts, false,
+    SilhouetteCache silhouettes(model_in_card);
+    outline_mechanism(out, silhouettes, mechanism, parts, false,
                       shortest_tabbed_crease(SheetOptions{}), cancel);
     return out;
 }

@@ -179,41 +179,100 @@ TEST(FitOutlines, AnOutlineThatLosesAFoldIsDroppedAndReported)
     EXPECT_TRUE(check_validity(out.scaffold).valid());
 }
 
-TEST(FitOutlines, AnOutlineKeepsEveryFoldLongEnoughToGlue)
+TEST(FitOutlines, AnOutlineKeepsAStripAlongEachGluedJoint)
 {
     // A T-shaped side section: a stem `foot` mm wide under a full-width block. The stem is all
-    // that meets the side's foot fold, so the outline shortens that fold to `foot` mm: an 8 mm
-    // foot is under the shortest crease a glue tab fits on (the sheets' rule), a 20 mm one is not.
+    // the silhouette leaves of the side's glued joint with its page. A stem narrower than the
+    // shortest crease a glue tab fits on (c, the sheets' rule) gets a strip of paper c long and
+    // a default tab (8 mm) deep, centred under it: the side is the T plus that strip, area
+    // foot·20 + W·(H − 20) + (c − foot)·8 (the strip's 3.56 mm shoulders beside a 4 mm stem are
+    // wider than the 3 mm cut the sheets can make, so the notches above them stay cut; beside
+    // an 8 mm stem they are 1.56 mm, but open onto the wide cut-away beside the stem, so they
+    // stay cut too). A 20 mm stem already holds a tab: the side is the T.
     const double glued = shortest_tabbed_crease(SheetOptions{});
+    const double tab = SheetOptions{}.tab_width;
     ASSERT_GT(glued, 8.0);
     ASSERT_LT(glued, 20.0);
-    for (const double foot : {8.0, 20.0}) {
+    for (const double foot : {4.0, 8.0, 20.0}) {
         const double a = 0.5 * (kWidth - foot), b = 0.5 * (kWidth + foot);
         std::vector<Vec2> s{{a, 0},       {b, 0},  {b, 20}, {kWidth, 20}, {kWidth, kHeight},
                             {0, kHeight}, {0, 20}, {a, 20}};
         Design d = box_design();
         const OutlineOutcome out =
             fit_outlines(placed_section(s, d.host), d.scaffold, d.mechanisms);
+        EXPECT_TRUE(out.dropped.empty()) << out.dropped.front().reason;
         std::vector<std::string> sides;
         for (const FittedProfile& p : out.profiles)
             if (p.part == "L" || p.part == "R")
                 sides.push_back(p.part);
-        if (foot < glued) {
-            EXPECT_TRUE(sides.empty());
-            int named = 0;
-            for (const FitRepair& r : out.dropped)
-                named += r.reason.find("8 mm long, shorter than the narrowest glue tab") !=
-                         std::string::npos;
-            EXPECT_EQ(named, 2) << (out.dropped.empty() ? "" : out.dropped.front().reason);
-            EXPECT_NEAR(patch_named(out.scaffold, "B1.L").area(), kWidth * kHeight, 1e-9);
-        } else {
-            EXPECT_EQ(sides, (std::vector<std::string>{"L", "R"}));
-            // The side is the T: stem plus block.
-            const double area = foot * 20 + kWidth * (kHeight - 20);
-            EXPECT_NEAR(patch_named(out.scaffold, "B1.L").area(), area, 1e-3);
-        }
+        EXPECT_EQ(sides, (std::vector<std::string>{"L", "R"})) << foot;
+        const double strip = foot < glued ? (glued - foot) * tab : 0.0;
+        const double area = foot * 20 + kWidth * (kHeight - 20) + strip;
+        const Patch& side = patch_named(out.scaffold, "B1.L");
+        EXPECT_NEAR(side.area(), area, 1e-3) << foot;
+        // The side's joint with the page is the strip's (or the stem's) length, one piece.
+        double joint = 0;
+        int pieces = 0;
+        for (const Hinge& h : out.scaffold.hinges)
+            if (h.kind == JointKind::tab && (h.patch_a == side.id || h.patch_b == side.id) &&
+                out.scaffold.find_patch(h.patch_a == side.id ? h.patch_b : h.patch_a)->name ==
+                    "Card.ground") {
+                joint += (h.to - h.from).norm();
+                ++pieces;
+            }
+        EXPECT_EQ(pieces, 1) << foot;
+        EXPECT_NEAR(joint, std::max(foot, glued), 1e-5) << foot;
+        // The outline holds the strip's corners, centred on the side's foot (its frame's u = 0).
+        if (foot < glued)
+            for (const FittedProfile& p : out.profiles)
+                for (const Vec2& corner : {Vec2(-0.5 * glued, 0), Vec2(0.5 * glued, 0),
+                                           Vec2(-0.5 * glued, tab), Vec2(0.5 * glued, tab)}) {
+                    double nearest = 1e9;
+                    for (const Vec2& q : p.outer)
+                        nearest = std::min(nearest, (q - corner).norm());
+                    EXPECT_LT(nearest, 1e-5) << p.part << " " << foot;
+                }
         EXPECT_TRUE(check_validity(out.scaffold).valid());
     }
+}
+
+TEST(FitOutlines, WithoutTheGlueRuleAThinFootIsCutAsTheModelIs)
+{
+    // min_part 0 (--min-part 0) lets the maker glue by hand: no strip, the side is the T.
+    const double foot = 8.0;
+    const double a = 0.5 * (kWidth - foot), b = 0.5 * (kWidth + foot);
+    std::vector<Vec2> s{{a, 0},       {b, 0},  {b, 20}, {kWidth, 20}, {kWidth, kHeight},
+                        {0, kHeight}, {0, 20}, {a, 20}};
+    Design d = box_design();
+    const OutlineOutcome out =
+        fit_outlines(placed_section(s, d.host), d.scaffold, d.mechanisms, nullptr, 0.0);
+    EXPECT_NEAR(patch_named(out.scaffold, "B1.L").area(), foot * 20 + kWidth * (kHeight - 20),
+                1e-3);
+}
+
+TEST(FitOutlines, TopHalvesCutOnBothSidesKeepTheirCreaseWithTheCentreWallWhole)
+{
+    // A model whose top view leaves both ends of the top crease (a 60 × 30 box's crease runs
+    // along its width over x = 0): a block 30 wide in the middle of the width, the full depth
+    // and height. Each top half is cut to it, and since the centre wall's one tab along the
+    // crease holds both halves only where one's joint lies within the other's, both keep the
+    // crease whole under a tab-deep strip: area 30·30 + 2·15·8 each. The sheets glue it.
+    std::vector<Vec2> s{{15, 0}, {45, 0}, {45, kHeight}, {15, kHeight}};
+    Design d = box_design();
+    const OutlineOutcome out = fit_outlines(placed_section(s, d.host), d.scaffold, d.mechanisms);
+    const double tab = SheetOptions{}.tab_width;
+    for (const std::string part : {"TG", "TB"})
+        EXPECT_NEAR(patch_named(out.scaffold, "B1." + part).area(), 30 * kDepth + 2 * 15 * tab,
+                    1e-3)
+            << part;
+    EXPECT_TRUE(check_validity(out.scaffold).valid());
+    SheetOptions o;
+    o.nest.paper = paper_by_name("A3").value;
+    const Result<SheetSet> laid = layout_sheets(out.scaffold, o);
+    ASSERT_TRUE(laid.ok);
+    for (const Diagnostic& x : laid.value.diagnostics)
+        EXPECT_NE(x.severity, Severity::error) << x.message;
+    EXPECT_TRUE(laid.value.round_trip.ok);
 }
 
 TEST(FitOutlines, FitDesignProfilesTheArchedBlockDeterministically)

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "fitting/silhouette_cache.hpp"
 #include "popup/fitting/depth_layers.hpp"
 #include "popup/fitting/silhouette.hpp"
 #include "popup/mechanisms/step_fold.hpp"
@@ -285,4 +286,32 @@ TEST(Silhouette, AStandingRiserSeesTheModelWhereItStands)
     // At the design state the riser lies flat: the same block seen along z is another shape.
     const Result<Silhouette> flat = silhouette_profile(block, card_with_step(), riser);
     EXPECT_GT(std::abs(flat.value.area - 20 * 40), 1.0);
+}
+
+TEST(SilhouetteCache, AParallelPartGetsTheSilhouetteItWouldProject)
+{
+    // The open card's ground and backdrop lie in one plane with different frames (each u along
+    // the fold, v onto its own page): the silhouette projected once on the ground and carried
+    // into the backdrop's frame is the backdrop's own, point for point to a nanometre, and the
+    // ground's is silhouette_profile's exactly.
+    ModelMesh m;
+    add_wheel(m, 20, 90, 15, 0, 10, 24);
+    add_box(m, {-30, 60, 0}, {10, 130, 25});
+    const Scaffold s = card();
+    SilhouetteCache cache(m);
+    for (int patch : {0, 1}) {
+        const Result<Silhouette> direct = silhouette_profile(m, s, patch);
+        const Result<Silhouette> cached = cache.seen_in(profile_frame(s, patch).value, "page");
+        ASSERT_TRUE(direct.ok);
+        ASSERT_TRUE(cached.ok);
+        EXPECT_NEAR(cached.value.area, direct.value.area, 1e-9);
+        const Loop2 &a = cached.value.profile.outer, &b = direct.value.profile.outer;
+        ASSERT_EQ(a.size(), b.size()) << patch;
+        for (const Vec2& q : a) {
+            double nearest = 1e9;
+            for (const Vec2& r : b)
+                nearest = std::min(nearest, (q - r).norm());
+            EXPECT_LT(nearest, 2e-6) << patch;
+        }
+    }
 }

@@ -31,11 +31,14 @@ struct OutlineOutcome {
 /// the ones that break validity (or that apply_profile refuses) are dropped and reported. A
 /// part whose silhouette covers it whole keeps no profile (a stored outline would clip later
 /// edits of its dimensions); a part carrying a later mechanism keeps one only when that
-/// mechanism's folds on it stay whole (the workbench cuts a part before it builds on it). A
-/// silhouette that would leave a piece of one of the part's glued joints shorter than
-/// `glued_joint_mm` (by default the default sheets' shortest tabbed crease, as
-/// FitOptions::min_part_mm), or the part short of the default tab width inward along such a
-/// joint, is dropped too (the sheets could not glue it); 0 checks neither.
+/// mechanism's folds on it stay whole (the workbench cuts a part before it builds on it). Along
+/// each glued joint the silhouette still meets, the outline keeps a strip of paper the default
+/// tab width deep over that stretch, lengthened to `glued_joint_mm` where shorter (by default
+/// the default sheets' shortest tabbed crease, as FitOptions::min_part_mm; a crease shared with
+/// another glued joint is kept whole), so the sheets can glue it (docs/DESIGN.md, "Outlines that
+/// follow the model"). An outline that would still leave a piece of a glued joint shorter than
+/// `glued_joint_mm`, or the part short of the default tab width inward along such a joint, is
+/// dropped; 0 keeps no strips and checks neither.
 OutlineOutcome fit_outlines(const ModelMesh& model_in_card, const Scaffold& scaffold,
                             const std::vector<FittedMechanism>& mechanisms,
                             const CancelFlag* cancel = nullptr,
@@ -44,7 +47,7 @@ OutlineOutcome fit_outlines(const ModelMesh& model_in_card, const Scaffold& scaf
 /// fit_outlines for one mechanism whose outlined parts are `parts` (part-name prefixes, as
 /// principal_parts gives them) instead of its type's principal parts, posed at the design state
 /// (180°). The motion design outlines each moving patch with its own body part this way,
-/// under the same glue-tab rule.
+/// with the same strips along glued joints and the same checks.
 OutlineOutcome fit_outlines_of(const ModelMesh& model_in_card, const Scaffold& scaffold,
                                const FittedMechanism& mechanism,
                                const std::vector<std::string>& parts,
