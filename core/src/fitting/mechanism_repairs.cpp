@@ -105,10 +105,13 @@ std::optional<RepairAttempt> trim(const std::vector<MechanismPlan>& plans, const
     if (t.other < 0 || t.failure == TrialFailure::refused)
         return std::nullopt;
     auto e = trim_away(plans, t, i, host->second, limits);
-    if (!e)
+    if (!e || describe_changes(p, e->plans[i]).empty()) // clear of it already: no trim helps
         return std::nullopt;
+    const std::string other = plans[size_t(t.other)].name;
+    const bool cut = std::abs(e->plans[i].extent() - p.extent()) > 0;
     return attempt(std::move(*e), p, i, "trimmed",
-                   "trimmed along its hinge away from " + plans[size_t(t.other)].name);
+                   cut ? "trimmed along its hinge away from " + other
+                       : "its end panels facing " + other + " taken off");
 }
 
 /// The plan offering pair `name`, -1 for the card's central fold, -2 for none.

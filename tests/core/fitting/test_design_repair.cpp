@@ -129,6 +129,30 @@ TEST(FitDesignRepair, OverlappingSweepsTrimTheLaterAndWhatStandsOnIt)
     EXPECT_FALSE(repair_of(o, "B1")) << (repair_of(o, "B1") ? repair_of(o, "B1")->reason : "");
 }
 
+TEST(FitDesignRepair, EndPanelsRunningIntoANeighbourComeOff)
+{
+    // B3 stands on B2's top, its front end at B2's front, 2 mm from B1's back end. Closing, its
+    // front panels swing out by its half depth (25) over B1: they pass through B1's top. Shrunk
+    // it still reaches past B2's front (the middle stays); its front panels come off instead.
+    MechanismPlan b1 = box("B1", "central fold", -1, 40, 40, 30, 40);
+    b1.as<BoxFoldParams>().back = false;
+    MechanismPlan b2 = box("B2", "central fold", -1, 82, 40, 30, 10);
+    b2.as<BoxFoldParams>().front = false;
+    const RepairOutcome o =
+        build_until_valid(CardParams(), {b1, b2, box("B3", "B2.top", 1, 0, 40, 25, 20)});
+    EXPECT_TRUE(o.valid) << story(o);
+    EXPECT_EQ(o.kept, (std::vector<bool>{true, true, true})) << story(o);
+    ASSERT_TRUE(repair_of(o, "B3")) << story(o);
+    EXPECT_EQ(repair_of(o, "B3")->action, "trimmed");
+    EXPECT_NE(
+        repair_of(o, "B3")->reason.find("its end panels facing B1 taken off (Front yes → no)"),
+        std::string::npos)
+        << story(o);
+    EXPECT_NE(repair_of(o, "B3")->reason.find("(B1.TG) passes through"), std::string::npos)
+        << story(o);
+    EXPECT_EQ(o.plans[2].value("width"), 40);
+}
+
 TEST(FitDesignRepair, AChildOverhangingItsHostIsTrimmedToIt)
 {
     // B2 on B1's 100 mm top runs [60, 110]: its generator refuses it. Shrunk about its middle
