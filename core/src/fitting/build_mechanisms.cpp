@@ -32,7 +32,8 @@ BuiltMechanisms build_mechanisms(RansacResult fit, const SurfaceSamples& samples
         if (plans_made++ == 0) // the bulk box's mapping counts as validation time
             timer.lap("map");
         stop_if_cancelled(cancel, "fit_design: mapping");
-        RepairOutcome outcome = build_until_valid(r.card, plans, cancel);
+        RepairOutcome outcome = build_until_valid(r.card, plans, options.min_part_mm, cancel);
+        plans = outcome.plans;
         for (const FitRepair& repair : outcome.repairs)
             r.repairs.push_back(repair);
         for (const Diagnostic& d : outcome.warnings)

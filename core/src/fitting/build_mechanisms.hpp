@@ -16,16 +16,16 @@ namespace popup {
 /// What the mechanism stage made of the primitives.
 struct BuiltMechanisms {
     RansacResult fit;                 ///< the primitives mapped: the search's, or the bulk box
-    std::vector<MechanismPlan> plans; ///< one per mapped primitive
+    std::vector<MechanismPlan> plans; ///< one per mapped primitive, as repaired
     RepairOutcome outcome;            ///< what was kept of them, and the last validity check
 };
 
 /// Table 5.1 mapping by coverage error, the §4.2.2 refit, then validity: build, check
-/// everything, drop what the simulator refuses, check again. The model's bulk as one box fold
-/// (bulk_prism.hpp) replaces that design when it stands up from the page (the samples lie half
-/// as far from it as from the page alone): instead of nothing when nothing the search found
-/// survives, and instead of a valid design the samples lie twice as far from on average
-/// (docs/DESIGN.md). Repairs and warnings go to `r`; laps "map".
+/// everything, repair or drop what the simulator refuses, check again (build_until_valid). The
+/// model's bulk as one box fold (bulk_prism.hpp) replaces that design when it stands up from the
+/// page (the samples lie half as far from it as from the page alone): instead of nothing when
+/// nothing the search found survives, and instead of a valid design the samples lie twice as far
+/// from on average (docs/DESIGN.md). Repairs and warnings go to `r`; laps "map".
 BuiltMechanisms build_mechanisms(RansacResult fit, const SurfaceSamples& samples,
                                  const FitOptions& options, const CancelFlag* cancel,
                                  StageTimer& timer, FitResult& r);

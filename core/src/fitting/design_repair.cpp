@@ -1,171 +1,115 @@
 #include "popup/fitting/design_repair.hpp"
 
-#include <algorithm>
-#include <map>
+#include "design_trial.hpp"
+#include "mechanism_repairs.hpp"
+#include "plan_edits.hpp"
 
 namespace popup {
 namespace {
 
-/// The scaffold of some plans: card first, then each plan on the pair its host offered.
-struct Built {
-    Scaffold scaffold;
-    std::vector<MechanismParts> parts; ///< per plan; empty name when not built
-    std::vector<std::string> refused;  ///< per plan: why the generator refused it, or empty
-    std::map<std::string, BasePatchPair> pairs; ///< offered by the card and the built plans
+// Each repair tried is a rebuild and, unless a generator refuses it, a full validity check
+// (~0.1 s on a few mechanisms): at most this many per design, then culprits are dropped.
+constexpr int max_repair_tries = 16;
+
+/// Per plan, the last repair done to it; a drop also warns.
+struct RepairLog {
+    std::vector<FitRepair> last;
+    Diagnostics warnings;
+
+    void repaired(const std::vector<MechanismPlan>& before, size_t i, const RepairAttempt& a,
+                  const std::string& why)
+    {
+        last[i] = {before[i].name, a.action, a.change + ", because " + why};
+        for (int k : a.carried) {
+            const MechanismPlan& p = before[size_t(k)];
+            const std::string changes = describe_changes(p, a.plans[size_t(k)]);
+            last[size_t(k)] = {p.name, a.action,
+                               a.action + " with " + before[i].name + ", which it stands on" +
+                                   (changes.empty() ? "" : " (" + changes + ")")};
+        }
+    }
+
+    void dropped(const MechanismPlan& p, size_t i, const std::string& reason)
+    {
+        last[i] = {p.name, "dropped", reason};
+        const std::string msg =
+            p.name + " (" + catalogue_entry(p.kind).name + ") dropped: " + reason;
+        warnings.push_back(
+            Diagnostic::warning(DiagnosticCode::mechanism_dropped, msg, about_parameter(p.name)));
+    }
 };
 
-Built build(const CardParams& card, const std::vector<MechanismPlan>& plans,
-            const std::vector<bool>& keep)
+std::string drop_reason(const DesignTrial& t, const std::vector<RepairAttempt>& tried,
+                        bool out_of_tries)
 {
-    Built b;
-    auto made = make_card(card);
-    b.scaffold = made.value;
-    b.parts.resize(plans.size());
-    b.refused.resize(plans.size());
-    std::map<std::string, BasePatchPair> pairs{{"central fold", central_fold(b.scaffold)}};
-    for (size_t i = 0; i < plans.size(); ++i) {
-        if (!keep[i])
-            continue;
-        const MechanismPlan& p = plans[i];
-        const auto host = pairs.find(p.host);
-        if (host == pairs.end()) {
-            b.refused[i] = "its host " + p.host + " is not in the design";
-            continue;
-        }
-        // Round-off between the fitted host and the built one must not push a mechanism that
-        // spans its whole host off its end.
-        DesignedMechanism q = p;
-        const double length = host->second.length;
-        q.set_value("offset", std::clamp(q.offset(), 0.0, length));
-        if (catalogue_entry(q.kind).field("width")) {
-            const double width = q.value("width");
-            if (q.offset() + width > length && q.offset() + width < length * 1.01) {
-                q.set_value("offset", std::max(0.0, length - width));
-                q.set_value("width", std::min(width, length - q.offset()));
-            }
-        }
-        const Result<MechanismParts> added = add_mechanism(b.scaffold, host->second, q);
-        if (!added.ok) {
-            b.refused[i] = added.diagnostics.empty() ? "its generator refused it"
-                                                     : added.diagnostics.front().message;
-            continue;
-        }
-        for (const BasePatchPair& offered : added.value.offered)
-            pairs[offered.name] = offered;
-        b.parts[i] = added.value;
-    }
-    b.pairs = pairs;
-    return b;
-}
-
-/// The plan a patch belongs to, or -1 for the card.
-int owner_of(const Built& b, int patch)
-{
-    for (size_t i = 0; i < b.parts.size(); ++i)
-        for (int id : b.parts[i].patches)
-            if (id == patch)
-                return int(i);
-    return -1;
+    if (out_of_tries)
+        return t.why + "; no repair tried (all " + std::to_string(max_repair_tries) +
+               " tries of this design were spent)";
+    if (tried.empty())
+        return t.why + (t.failure == TrialFailure::host_missing
+                            ? ", and no other pair at its place takes it"
+                            : "; it could not be shrunk (its parts would fall below the "
+                              "smallest part), trimmed or moved to make it fit");
+    std::string what;
+    for (size_t k = 0; k < tried.size(); ++k)
+        what += (k == 0 ? "" : k + 1 == tried.size() ? " and " : ", ") + tried[k].what;
+    return t.why + "; " + what + " did not help";
 }
 
 } // namespace
 
-RepairOutcome build_until_valid(const CardParams& card, const std::vector<MechanismPlan>& plans,
-                                const CancelFlag* cancel)
+RepairOutcome build_until_valid(const CardParams& card, std::vector<MechanismPlan> plans,
+                                double min_part, const CancelFlag* cancel)
 {
-    RepairOutcome out;
+    const RepairLimits limits{min_part, 1e-6 * std::max(card.width, card.depth)};
     std::vector<bool> keep(plans.size(), true);
-    auto drop = [&](size_t i, const std::string& why) {
-        // What stands on it goes with it.
-        std::vector<size_t> gone{i};
-        keep[i] = false;
-        for (size_t k = i + 1; k < plans.size(); ++k)
-            if (plans[k].parent >= 0 && !keep[size_t(plans[k].parent)] && keep[k]) {
-                keep[k] = false;
-                gone.push_back(k);
-            }
-        for (size_t k : gone) {
-            const std::string reason =
-                k == i ? why : "it stood on " + plans[i].name + ", which was dropped";
-            out.repairs.push_back({plans[k].name, "dropped", reason});
-            const std::string msg =
-                plans[k].name + " (" + catalogue_entry(plans[k].kind).name + ") dropped: " + reason;
-            out.warnings.push_back(Diagnostic::warning(DiagnosticCode::mechanism_dropped, msg,
-                                                       about_parameter(plans[k].name)));
-        }
-    };
-    Built built;
-    ValidityReport report;
-    ValidityOptions vo;
-    vo.cancel = cancel;
-    for (;;) {
-        built = build(card, plans, keep);
-        bool refused = false;
-        for (size_t i = 0; i < plans.size(); ++i)
-            if (keep[i] && !built.refused[i].empty()) {
-                drop(i, built.refused[i]);
-                refused = true;
+    RepairLog log{std::vector<FitRepair>(plans.size()), {}};
+    std::map<std::string, BasePatchPair> seen; // every pair any trial built
+    int tries_left = max_repair_tries;
+    DesignTrial trial = try_design(card, plans, keep, cancel);
+    while (trial.failure != TrialFailure::none) {
+        for (const auto& [name, pair] : trial.built.pairs)
+            seen[name] = pair;
+        const size_t i = size_t(trial.culprit);
+        const std::vector<RepairAttempt> attempts =
+            tries_left > 0 ? repair_attempts(plans, trial, seen, limits)
+                           : std::vector<RepairAttempt>{};
+        std::vector<RepairAttempt> tried;
+        bool repaired = false;
+        for (const RepairAttempt& a : attempts) {
+            if (tries_left-- <= 0)
+                break;
+            DesignTrial next = try_design(card, a.plans, keep, cancel);
+            tried.push_back(a);
+            if (!next.implicated[i]) {
+                log.repaired(plans, i, a, trial.why);
+                plans = a.plans;
+                trial = std::move(next);
+                repaired = true;
                 break;
             }
-        if (refused)
-            continue;
-        std::vector<MechanismParts> present;
-        for (const auto& p : built.parts)
-            if (!p.name.empty())
-                present.push_back(p);
-        const auto conflicts = placement_conflicts(present);
-        if (!conflicts.empty()) {
-            for (size_t i = plans.size(); i-- > 0;)
-                if (keep[i] && (plans[i].name == conflicts.front().second ||
-                                plans[i].name == conflicts.front().first)) {
-                    drop(i, "it sweeps into " +
-                                (plans[i].name == conflicts.front().second
-                                     ? conflicts.front().first
-                                     : conflicts.front().second) +
-                                " along their hinge when the card closes (§4.2.2)");
-                    break;
-                }
-            continue;
         }
-        if (present.empty())
-            break;
-        report = check_validity(built.scaffold, vo);
-        if (report.valid())
-            break;
-        // The mechanism the findings point at, most nested first; the last one otherwise.
-        int culprit = -1;
-        std::string why;
-        for (const Diagnostic& d : report.diagnostics) {
-            if (d.severity != Severity::error)
-                continue;
-            for (int id : d.patches) {
-                const int o = owner_of(built, id);
-                if (o > culprit) {
-                    culprit = o;
-                    why = d.message;
-                }
-            }
-            if (why.empty())
-                why = d.message;
-        }
-        if (culprit < 0)
-            for (size_t i = plans.size(); i-- > 0;)
-                if (keep[i]) {
-                    culprit = int(i);
-                    break;
-                }
-        drop(size_t(culprit), "the validity check failed: " + why);
+        if (repaired)
+            continue;
+        keep[i] = false;
+        log.dropped(plans[i], i, drop_reason(trial, tried, attempts.empty() && tries_left <= 0));
+        trial = try_design(card, plans, keep, cancel);
     }
-    out.scaffold = built.scaffold;
-    out.pairs = built.pairs;
+    RepairOutcome out;
+    out.scaffold = trial.built.scaffold;
+    out.pairs = trial.built.pairs;
     out.kept.assign(plans.size(), false);
     bool any = false;
     for (size_t i = 0; i < plans.size(); ++i) {
-        out.kept[i] = keep[i] && !built.parts[i].name.empty();
+        out.kept[i] = keep[i] && !trial.built.parts[i].name.empty();
         any |= out.kept[i];
+        if (!log.last[i].action.empty())
+            out.repairs.push_back(log.last[i]);
     }
-    out.report = report;
-    out.valid = any && report.valid();
+    out.warnings = log.warnings;
+    out.report = trial.report;
+    out.valid = any && trial.report.valid();
+    out.plans = std::move(plans);
     return out;
 }
 

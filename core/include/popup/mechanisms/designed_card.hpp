@@ -20,7 +20,9 @@ struct FittedMechanism : DesignedMechanism {
 /// A mechanism the pipeline left out or changed, and why.
 struct FitRepair {
     std::string mechanism;
-    std::string action; ///< "dropped", "trimmed", "remapped", "replaced" (by the bulk box)
+    /// "shrunk", "trimmed", "re-hosted", "dropped" (the validity repair, docs/DESIGN.md),
+    /// "remapped", "replaced" (by the bulk box), "profile dropped", "layer kept"/"layer dropped"
+    std::string action;
     std::string reason;
 };
 
