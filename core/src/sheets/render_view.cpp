@@ -1,0 +1,289 @@
+// A small orthographic z-buffer rasteriser: the preview of `popup fit` (the model beside the
+// pop-up), fast enough for a scanned model's tens of thousands of triangles.
+#include "popup/sheets/render_view.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include <Eigen/Geometry>
+
+namespace popup {
+
+namespace {
+
+/// A point on the screen: x right and y down in pixels, depth towards the eye in mm.
+struct ScreenPoint {
+    double x, y, depth;
+};
+
+/// The camera's projection and the frame being drawn.
+class Canvas {
+public:
+    explicit Canvas(const ViewCamera& camera)
+        : camera_(camera), scale_(camera.supersample), width_(camera.width * scale_),
+          height_(camera.height * scale_), mm_per_pixel_(camera.mm_per_pixel / scale_),
+          depth_(size_t(width_) * height_, -std::numeric_limits<float>::infinity()),
+          rgba_(depth_.size(), rgba(camera.background, 0))
+    {
+        eye_ = camera.towards_eye.normalized();
+        up_ = (camera.up - camera.up.dot(eye_) * eye_).normalized();
+        right_ = up_.cross(eye_);
+        light_ = camera.light.normalized();
+    }
+
+    ScreenPoint project(const Vec3& p) const
+    {
+        const Vec3 d = p - camera_.centre;
+        return {0.5 * width_ + d.dot(right_) / mm_per_pixel_,
+                0.5 * height_ - d.dot(up_) / mm_per_pixel_, d.dot(eye_)};
+    }
+
+    /// colour × (ambient + (1 − ambient) |n · light|), n the unit normal (two-sided).
+    Vec3 shaded(const Vec3& colour, const Vec3& normal) const
+    {
+        const double n = normal.norm();
+        const double lit = n > 0 ? std::abs(normal.dot(light_)) / n : 0.5;
+        return colour * (camera_.ambient + (1.0 - camera_.ambient) * lit);
+    }
+
+    /// Even-odd fill of the loops (screen points) on the plane through them, in `colour`.
+    void fill(const std::vector<std::vector<ScreenPoint>>& loops, const Vec3& shade)
+    {
+        const Pixel colour = rgba(shade, 255);
+        Vec3 normal = Vec3::Zero(), anchor = Vec3::Zero();
+        double lo = INFINITY, hi = -INFINITY;
+        int count = 0;
+        for (const auto& loop : loops)
+            for (size_t i = 0; i < loop.size(); ++i) {
+                const ScreenPoint &a = loop[i], &b = loop[(i + 1) % loop.size()];
+                normal += Vec3((a.y - b.y) * (a.depth + b.depth), (a.depth - b.depth) * (a.x + b.x),
+                               (a.x - b.x) * (a.y + b.y));
+                anchor += Vec3(a.x, a.y, a.depth);
+                lo = std::min(lo, a.y);
+                hi = std::max(hi, a.y);
+                ++count;
+            }
+        // Seen edge on (or degenerate): nothing to fill, the outline still shows it.
+        if (count < 3 || !(std::abs(normal.z()) > 1e-9 * normal.norm()))
+            return;
+        anchor /= count;
+        const double dx = -normal.x() / normal.z(), dy = -normal.y() / normal.z();
+        const int first = std::max(0, int(std::ceil(lo - 0.5)));
+        const int last = std::min(height_ - 1, int(std::floor(hi - 0.5)));
+        std::vector<double> crossings;
+        for (int row = first; row <= last; ++row) {
+            const double y = row + 0.5;
+            crossings.clear();
+            for (const auto& loop : loops)
+                for (size_t i = 0; i < loop.size(); ++i) {
+                    const ScreenPoint &a = loop[i], &b = loop[(i + 1) % loop.size()];
+                    if ((a.y <= y) != (b.y <= y))
+                        crossings.push_back(a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y));
+                }
+            std::sort(crossings.begin(), crossings.end());
+            for (size_t k = 0; k + 1 < crossings.size(); k += 2) {
+                const int from = std::max(0, int(std::ceil(crossings[k] - 0.5)));
+                const int to = std::min(width_, int(std::ceil(crossings[k + 1] - 0.5)));
+                for (int column = from; column < to; ++column) {
+                    const double depth =
+                        anchor.z() + dx * (column + 0.5 - anchor.x()) + dy * (y - anchor.y());
+                    put(column, row, depth, colour);
+                }
+            }
+        }
+    }
+
+    /// A line `edge_px` wide over the surfaces it lies on, hidden behind nearer ones.
+    void line(const ScreenPoint& a, const ScreenPoint& b)
+    {
+        const double length = std::hypot(b.x - a.x, b.y - a.y);
+        const int steps = std::max(1, int(std::ceil(2.0 * length)));
+        const double half = 0.5 * camera_.edge_px * scale_;
+        // A surface seen at a slant changes depth by up to a few mm_per_pixel across a pixel.
+        const double tolerance = 3.0 * mm_per_pixel_ * std::max(1.0, camera_.edge_px * scale_);
+        const Pixel edge = rgba(camera_.edge_colour, 255);
+        for (int s = 0; s <= steps; ++s) {
+            const double t = double(s) / steps;
+            const double x = a.x + t * (b.x - a.x), y = a.y + t * (b.y - a.y);
+            const double depth = a.depth + t * (b.depth - a.depth);
+            const int c0 = std::max(0, int(std::ceil(x - half - 0.5)));
+            const int c1 = std::min(width_ - 1, int(std::floor(x + half - 0.5)));
+            const int r0 = std::max(0, int(std::ceil(y - half - 0.5)));
+            const int r1 = std::min(height_ - 1, int(std::floor(y + half - 0.5)));
+            for (int r = r0; r <= r1; ++r)
+                for (int c = c0; c <= c1; ++c) {
+                    const size_t i = size_t(r) * width_ + c;
+                    if (depth + tolerance >= depth_[i])
+                        rgba_[i] = edge;
+                }
+        }
+    }
+
+    /// The frame averaged over supersample x supersample blocks (alpha too: edges blend).
+    RgbaImage image() const
+    {
+        RgbaImage out;
+        out.width = camera_.width;
+        out.height = camera_.height;
+        out.pixels.resize(size_t(4) * out.width * out.height);
+        const int n = scale_ * scale_;
+        for (int row = 0; row < out.height; ++row)
+            for (int column = 0; column < out.width; ++column) {
+                int sum[4] = {0, 0, 0, 0};
+                for (int dr = 0; dr < scale_; ++dr)
+                    for (int dc = 0; dc < scale_; ++dc) {
+                        const Pixel& p =
+                            rgba_[size_t(row * scale_ + dr) * width_ + column * scale_ + dc];
+                        for (int k = 0; k < 4; ++k)
+                            sum[k] += p[k];
+                    }
+                std::uint8_t* to = out.at(column, row);
+                for (int k = 0; k < 4; ++k)
+                    to[k] = std::uint8_t((sum[k] + n / 2) / n);
+            }
+        return out;
+    }
+
+private:
+    using Pixel = std::array<std::uint8_t, 4>;
+
+    static Pixel rgba(const Vec3& colour, std::uint8_t alpha)
+    {
+        auto channel = [](double v) {
+            return std::uint8_t(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
+        };
+        return {channel(colour.x()), channel(colour.y()), channel(colour.z()), alpha};
+    }
+
+    void put(int column, int row, double depth, const Pixel& colour)
+    {
+        const size_t i = size_t(row) * width_ + column;
+        if (float(depth) > depth_[i]) {
+            depth_[i] = float(depth);
+            rgba_[i] = colour;
+        }
+    }
+
+    const ViewCamera& camera_;
+    int scale_, width_, height_;
+    double mm_per_pixel_;
+    Vec3 eye_, up_, right_, light_;
+    std::vector<float> depth_;
+    std::vector<Pixel> rgba_;
+};
+
+Diagnostics check_camera(const ViewCamera& c)
+{
+    Diagnostics out;
+    auto bad = [&](const std::string& name, const std::string& what) {
+        out.push_back(Diagnostic::error(DiagnosticCode::bad_option,
+                                        "render view: " + name + " " + what,
+                                        about_parameter(name)));
+    };
+    const Vec3 eye = c.towards_eye.allFinite() ? c.towards_eye.normalized() : Vec3::Zero();
+    if (!c.towards_eye.allFinite() || !(c.towards_eye.norm() > 0))
+        bad("towards_eye", "must be finite and non-zero");
+    if (!c.up.allFinite() || !((c.up - c.up.dot(eye) * eye).norm() > 1e-9 * c.up.norm()))
+        bad("up", "must be finite, non-zero and not along towards_eye");
+    if (!c.centre.allFinite())
+        bad("centre", "must be finite");
+    if (!(c.mm_per_pixel > 0) || !std::isfinite(c.mm_per_pixel))
+        bad("mm_per_pixel", "= " + std::to_string(c.mm_per_pixel) + ", must be finite and > 0");
+    if (c.width < 1 || c.width > 8192 || c.height < 1 || c.height > 8192)
+        bad("size", "= " + std::to_string(c.width) + " x " + std::to_string(c.height) +
+                        " pixels, each must be in 1..8192");
+    if (c.supersample < 1 || c.supersample > 4)
+        bad("supersample", "= " + std::to_string(c.supersample) + ", must be in 1..4");
+    if (!c.light.allFinite() || !(c.light.norm() > 0))
+        bad("light", "must be finite and non-zero");
+    if (!(c.ambient >= 0.0 && c.ambient <= 1.0))
+        bad("ambient", "= " + std::to_string(c.ambient) + ", must be in [0, 1]");
+    if (!(c.edge_px >= 0.0 && c.edge_px <= 16.0))
+        bad("edge_px", "= " + std::to_string(c.edge_px) + ", must be in [0, 16]");
+    if (!c.background.allFinite() || !c.edge_colour.allFinite())
+        bad("background", "and edge_colour must be finite");
+    return out;
+}
+
+Diagnostics check_scene(const std::vector<ViewMesh>& meshes,
+                        const std::vector<ViewPolygon>& polygons)
+{
+    Diagnostics out;
+    auto bad = [&](const std::string& name, const std::string& what) {
+        out.push_back(Diagnostic::error(DiagnosticCode::bad_option,
+                                        "render view: " + name + " " + what,
+                                        about_parameter(name)));
+    };
+    for (size_t m = 0; m < meshes.size(); ++m) {
+        const std::string name = "meshes[" + std::to_string(m) + "]";
+        const int n = int(meshes[m].vertices.size());
+        if (!std::all_of(meshes[m].vertices.begin(), meshes[m].vertices.end(),
+                         [](const Vec3& v) { return v.allFinite(); }))
+            bad(name, "has a non-finite vertex, vertices must be finite");
+        for (const auto& t : meshes[m].triangles)
+            if (std::any_of(t.begin(), t.end(), [&](int k) { return k < 0 || k >= n; })) {
+                bad(name, "has a triangle index outside 0.." + std::to_string(n - 1));
+                break;
+            }
+    }
+    for (size_t p = 0; p < polygons.size(); ++p)
+        for (const auto& loop : polygons[p].loops)
+            if (!std::all_of(loop.begin(), loop.end(), [](const Vec3& v) { return v.allFinite(); }))
+                bad("polygons[" + std::to_string(p) + "]",
+                    "has a non-finite point, points must be finite");
+    return out;
+}
+
+} // namespace
+
+Result<RgbaImage> render_view(const std::vector<ViewMesh>& meshes,
+                              const std::vector<ViewPolygon>& polygons, const ViewCamera& camera)
+{
+    Result<RgbaImage> r;
+    r.diagnostics = check_camera(camera);
+    const Diagnostics scene = check_scene(meshes, polygons);
+    r.diagnostics.insert(r.diagnostics.end(), scene.begin(), scene.end());
+    if (has_errors(r.diagnostics)) {
+        r.ok = false;
+        return r;
+    }
+    Canvas canvas(camera);
+    std::vector<std::vector<ScreenPoint>> loops(1, std::vector<ScreenPoint>(3));
+    for (const ViewMesh& mesh : meshes) {
+        std::vector<ScreenPoint> screen;
+        screen.reserve(mesh.vertices.size());
+        for (const Vec3& v : mesh.vertices)
+            screen.push_back(canvas.project(v));
+        for (const auto& t : mesh.triangles) {
+            const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+            for (int k = 0; k < 3; ++k)
+                loops[0][k] = screen[t[k]];
+            canvas.fill(loops, canvas.shaded(mesh.colour, (b - a).cross(c - a)));
+        }
+    }
+    std::vector<std::vector<std::vector<ScreenPoint>>> projected;
+    for (const ViewPolygon& polygon : polygons) {
+        Vec3 normal = Vec3::Zero(); // Newell's: any planar polygon
+        auto& screen = projected.emplace_back();
+        for (const auto& loop : polygon.loops) {
+            auto& out = screen.emplace_back();
+            for (size_t i = 0; i < loop.size(); ++i) {
+                normal += loop[i].cross(loop[(i + 1) % loop.size()]);
+                out.push_back(canvas.project(loop[i]));
+            }
+        }
+        canvas.fill(screen, canvas.shaded(polygon.colour, normal));
+    }
+    // Outlines last, so a later surface does not cover an earlier one's edge lying on it.
+    for (size_t p = 0; p < polygons.size(); ++p)
+        if (polygons[p].outlined && camera.edge_px > 0)
+            for (const auto& loop : projected[p])
+                for (size_t i = 0; i < loop.size(); ++i)
+                    canvas.line(loop[i], loop[(i + 1) % loop.size()]);
+    r.value = canvas.image();
+    return r;
+}
+
+} // namespace popup
