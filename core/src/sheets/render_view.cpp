@@ -13,45 +13,91 @@ namespace popup {
 
 namespace {
 
-/// A point on the screen: x right and y down in pixels, depth towards the eye in mm.
+constexpr int kBandRows = 32; ///< output rows drawn at a time
+
+/// A point on the screen: x right and y down in (supersampled) pixels, depth towards the eye in
+/// mm.
 struct ScreenPoint {
     double x, y, depth;
 };
 
-/// The camera's projection and the frame being drawn.
-class Canvas {
-public:
-    explicit Canvas(const ViewCamera& camera)
-        : camera_(camera), scale_(camera.supersample), width_(camera.width * scale_),
-          height_(camera.height * scale_), mm_per_pixel_(camera.mm_per_pixel / scale_),
-          depth_(size_t(width_) * height_, -std::numeric_limits<float>::infinity()),
-          rgba_(depth_.size(), rgba(camera.background, 0))
+using Pixel = std::array<std::uint8_t, 4>;
+using ScreenLoops = std::vector<std::vector<ScreenPoint>>;
+
+Pixel rgba(const Vec3& colour, std::uint8_t alpha)
+{
+    auto channel = [](double v) {
+        return std::uint8_t(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
+    };
+    return {channel(colour.x()), channel(colour.y()), channel(colour.z()), alpha};
+}
+
+/// The camera's projection and shading.
+struct Projection {
+    explicit Projection(const ViewCamera& camera)
+        : camera(camera), scale(camera.supersample), width(camera.width * scale),
+          height(camera.height * scale), mm_per_pixel(camera.mm_per_pixel / scale)
     {
-        eye_ = camera.towards_eye.normalized();
-        up_ = (camera.up - camera.up.dot(eye_) * eye_).normalized();
-        right_ = up_.cross(eye_);
-        light_ = camera.light.normalized();
+        eye = camera.towards_eye.normalized();
+        up = (camera.up - camera.up.dot(eye) * eye).normalized();
+        right = up.cross(eye);
+        light = camera.light.normalized();
     }
 
     ScreenPoint project(const Vec3& p) const
     {
-        const Vec3 d = p - camera_.centre;
-        return {0.5 * width_ + d.dot(right_) / mm_per_pixel_,
-                0.5 * height_ - d.dot(up_) / mm_per_pixel_, d.dot(eye_)};
+        const Vec3 d = p - camera.centre;
+        return {0.5 * width + d.dot(right) / mm_per_pixel, 0.5 * height - d.dot(up) / mm_per_pixel,
+                d.dot(eye)};
     }
 
     /// colour × (ambient + (1 − ambient) |n · light|), n the unit normal (two-sided).
-    Vec3 shaded(const Vec3& colour, const Vec3& normal) const
+    Pixel shaded(const Vec3& colour, const Vec3& normal) const
     {
         const double n = normal.norm();
-        const double lit = n > 0 ? std::abs(normal.dot(light_)) / n : 0.5;
-        return colour * (camera_.ambient + (1.0 - camera_.ambient) * lit);
+        const double lit = n > 0 ? std::abs(normal.dot(light)) / n : 0.5;
+        return rgba(colour * (camera.ambient + (1.0 - camera.ambient) * lit), 255);
     }
 
-    /// Even-odd fill of the loops (screen points) on the plane through them, in `colour`.
-    void fill(const std::vector<std::vector<ScreenPoint>>& loops, const Vec3& shade)
+    const ViewCamera& camera;
+    int scale, width, height; ///< supersampled size
+    double mm_per_pixel;      ///< of a supersampled pixel
+    Vec3 eye, up, right, light;
+};
+
+/// A surface to fill: its loops on the screen, its colour and the rows it spans.
+struct ScreenSurface {
+    ScreenLoops loops;
+    Pixel colour;
+    double top = INFINITY, bottom = -INFINITY;
+    bool outlined = false;
+};
+
+/// A band of the supersampled frame, rows [first, first + rows): drawn band after band so the
+/// buffers stay small (touching fresh memory is what costs most in a large frame).
+class Band {
+public:
+    Band(const Projection& view, int rows)
+        : view_(view), width_(view.width), capacity_(rows), depth_(size_t(width_) * rows),
+          rgba_(depth_.size())
     {
-        const Pixel colour = rgba(shade, 255);
+    }
+
+    void start(int first)
+    {
+        first_ = first;
+        rows_ = std::min(capacity_, view_.height - first);
+        std::fill(depth_.begin(), depth_.end(), -std::numeric_limits<float>::infinity());
+        std::fill(rgba_.begin(), rgba_.end(), rgba(view_.camera.background, 0));
+    }
+    bool overlaps(double top, double bottom) const
+    {
+        return bottom >= first_ - 1.0 && top <= first_ + rows_ + 1.0;
+    }
+
+    /// Even-odd fill of the loops on the plane through them.
+    void fill(const ScreenLoops& loops, const Pixel& colour)
+    {
         Vec3 normal = Vec3::Zero(), anchor = Vec3::Zero();
         double lo = INFINITY, hi = -INFINITY;
         int count = 0;
@@ -70,9 +116,9 @@ public:
             return;
         anchor /= count;
         const double dx = -normal.x() / normal.z(), dy = -normal.y() / normal.z();
-        const int first = std::max(0, int(std::ceil(lo - 0.5)));
-        const int last = std::min(height_ - 1, int(std::floor(hi - 0.5)));
-        std::vector<double> crossings;
+        const int first = std::max(first_, int(std::ceil(lo - 0.5)));
+        const int last = std::min(first_ + rows_ - 1, int(std::floor(hi - 0.5)));
+        std::vector<double>& crossings = crossings_;
         for (int row = first; row <= last; ++row) {
             const double y = row + 0.5;
             crossings.clear();
@@ -98,81 +144,111 @@ public:
     /// A line `edge_px` wide over the surfaces it lies on, hidden behind nearer ones.
     void line(const ScreenPoint& a, const ScreenPoint& b)
     {
+        const double half = 0.5 * view_.camera.edge_px * view_.scale;
+        if (!overlaps(std::min(a.y, b.y) - half, std::max(a.y, b.y) + half))
+            return;
         const double length = std::hypot(b.x - a.x, b.y - a.y);
         const int steps = std::max(1, int(std::ceil(2.0 * length)));
-        const double half = 0.5 * camera_.edge_px * scale_;
         // A surface seen at a slant changes depth by up to a few mm_per_pixel across a pixel.
-        const double tolerance = 3.0 * mm_per_pixel_ * std::max(1.0, camera_.edge_px * scale_);
-        const Pixel edge = rgba(camera_.edge_colour, 255);
+        const double tolerance = 3.0 * view_.mm_per_pixel * std::max(1.0, 2.0 * half);
+        const Pixel edge = rgba(view_.camera.edge_colour, 255);
         for (int s = 0; s <= steps; ++s) {
             const double t = double(s) / steps;
             const double x = a.x + t * (b.x - a.x), y = a.y + t * (b.y - a.y);
             const double depth = a.depth + t * (b.depth - a.depth);
             const int c0 = std::max(0, int(std::ceil(x - half - 0.5)));
             const int c1 = std::min(width_ - 1, int(std::floor(x + half - 0.5)));
-            const int r0 = std::max(0, int(std::ceil(y - half - 0.5)));
-            const int r1 = std::min(height_ - 1, int(std::floor(y + half - 0.5)));
+            const int r0 = std::max(first_, int(std::ceil(y - half - 0.5)));
+            const int r1 = std::min(first_ + rows_ - 1, int(std::floor(y + half - 0.5)));
             for (int r = r0; r <= r1; ++r)
                 for (int c = c0; c <= c1; ++c) {
-                    const size_t i = size_t(r) * width_ + c;
+                    const size_t i = size_t(r - first_) * width_ + c;
                     if (depth + tolerance >= depth_[i])
                         rgba_[i] = edge;
                 }
         }
     }
 
-    /// The frame averaged over supersample x supersample blocks (alpha too: edges blend).
-    RgbaImage image() const
+    /// The band's rows averaged over supersample x supersample blocks into `out` (alpha too:
+    /// edges blend).
+    void resolve(RgbaImage& out) const
     {
-        RgbaImage out;
-        out.width = camera_.width;
-        out.height = camera_.height;
-        out.pixels.resize(size_t(4) * out.width * out.height);
-        const int n = scale_ * scale_;
-        for (int row = 0; row < out.height; ++row)
+        const int k = view_.scale, n = k * k;
+        for (int row = first_ / k; row < (first_ + rows_) / k; ++row)
             for (int column = 0; column < out.width; ++column) {
                 int sum[4] = {0, 0, 0, 0};
-                for (int dr = 0; dr < scale_; ++dr)
-                    for (int dc = 0; dc < scale_; ++dc) {
+                for (int dr = 0; dr < k; ++dr)
+                    for (int dc = 0; dc < k; ++dc) {
                         const Pixel& p =
-                            rgba_[size_t(row * scale_ + dr) * width_ + column * scale_ + dc];
-                        for (int k = 0; k < 4; ++k)
-                            sum[k] += p[k];
+                            rgba_[size_t(row * k + dr - first_) * width_ + column * k + dc];
+                        for (int c = 0; c < 4; ++c)
+                            sum[c] += p[c];
                     }
                 std::uint8_t* to = out.at(column, row);
-                for (int k = 0; k < 4; ++k)
-                    to[k] = std::uint8_t((sum[k] + n / 2) / n);
+                for (int c = 0; c < 4; ++c)
+                    to[c] = std::uint8_t((sum[c] + n / 2) / n);
             }
-        return out;
     }
 
 private:
-    using Pixel = std::array<std::uint8_t, 4>;
-
-    static Pixel rgba(const Vec3& colour, std::uint8_t alpha)
-    {
-        auto channel = [](double v) {
-            return std::uint8_t(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
-        };
-        return {channel(colour.x()), channel(colour.y()), channel(colour.z()), alpha};
-    }
-
     void put(int column, int row, double depth, const Pixel& colour)
     {
-        const size_t i = size_t(row) * width_ + column;
+        const size_t i = size_t(row - first_) * width_ + column;
         if (float(depth) > depth_[i]) {
             depth_[i] = float(depth);
             rgba_[i] = colour;
         }
     }
 
-    const ViewCamera& camera_;
-    int scale_, width_, height_;
-    double mm_per_pixel_;
-    Vec3 eye_, up_, right_, light_;
+    const Projection& view_;
+    int width_, capacity_, first_ = 0, rows_ = 0;
     std::vector<float> depth_;
     std::vector<Pixel> rgba_;
+    std::vector<double> crossings_;
 };
+
+/// Every triangle and polygon on the screen, in drawing order: the meshes, then the polygons.
+std::vector<ScreenSurface> project_scene(const Projection& view,
+                                         const std::vector<ViewMesh>& meshes,
+                                         const std::vector<ViewPolygon>& polygons)
+{
+    std::vector<ScreenSurface> out;
+    auto span = [](ScreenSurface& s) {
+        for (const auto& loop : s.loops)
+            for (const ScreenPoint& p : loop) {
+                s.top = std::min(s.top, p.y);
+                s.bottom = std::max(s.bottom, p.y);
+            }
+    };
+    for (const ViewMesh& mesh : meshes) {
+        std::vector<ScreenPoint> screen;
+        screen.reserve(mesh.vertices.size());
+        for (const Vec3& v : mesh.vertices)
+            screen.push_back(view.project(v));
+        for (const auto& t : mesh.triangles) {
+            const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+            ScreenSurface& s = out.emplace_back();
+            s.loops = {{screen[t[0]], screen[t[1]], screen[t[2]]}};
+            s.colour = view.shaded(mesh.colour, (b - a).cross(c - a));
+            span(s);
+        }
+    }
+    for (const ViewPolygon& polygon : polygons) {
+        Vec3 normal = Vec3::Zero(); // Newell's: any planar polygon
+        ScreenSurface& s = out.emplace_back();
+        for (const auto& loop : polygon.loops) {
+            auto& screen = s.loops.emplace_back();
+            for (size_t i = 0; i < loop.size(); ++i) {
+                normal += loop[i].cross(loop[(i + 1) % loop.size()]);
+                screen.push_back(view.project(loop[i]));
+            }
+        }
+        s.colour = view.shaded(polygon.colour, normal);
+        s.outlined = polygon.outlined && view.camera.edge_px > 0;
+        span(s);
+    }
+    return out;
+}
 
 Diagnostics check_camera(const ViewCamera& c)
 {
@@ -243,46 +319,31 @@ Result<RgbaImage> render_view(const std::vector<ViewMesh>& meshes,
 {
     Result<RgbaImage> r;
     r.diagnostics = check_camera(camera);
-    const Diagnostics scene = check_scene(meshes, polygons);
-    r.diagnostics.insert(r.diagnostics.end(), scene.begin(), scene.end());
+    const Diagnostics problems = check_scene(meshes, polygons);
+    r.diagnostics.insert(r.diagnostics.end(), problems.begin(), problems.end());
     if (has_errors(r.diagnostics)) {
         r.ok = false;
         return r;
     }
-    Canvas canvas(camera);
-    std::vector<std::vector<ScreenPoint>> loops(1, std::vector<ScreenPoint>(3));
-    for (const ViewMesh& mesh : meshes) {
-        std::vector<ScreenPoint> screen;
-        screen.reserve(mesh.vertices.size());
-        for (const Vec3& v : mesh.vertices)
-            screen.push_back(canvas.project(v));
-        for (const auto& t : mesh.triangles) {
-            const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
-            for (int k = 0; k < 3; ++k)
-                loops[0][k] = screen[t[k]];
-            canvas.fill(loops, canvas.shaded(mesh.colour, (b - a).cross(c - a)));
-        }
+    const Projection view(camera);
+    const std::vector<ScreenSurface> scene = project_scene(view, meshes, polygons);
+    r.value.width = camera.width;
+    r.value.height = camera.height;
+    r.value.pixels.resize(size_t(4) * camera.width * camera.height);
+    Band band(view, kBandRows * view.scale);
+    for (int first = 0; first < view.height; first += kBandRows * view.scale) {
+        band.start(first);
+        for (const ScreenSurface& s : scene)
+            if (band.overlaps(s.top, s.bottom))
+                band.fill(s.loops, s.colour);
+        // Outlines last, so a later surface does not cover an earlier one's edge lying on it.
+        for (const ScreenSurface& s : scene)
+            if (s.outlined)
+                for (const auto& loop : s.loops)
+                    for (size_t i = 0; i < loop.size(); ++i)
+                        band.line(loop[i], loop[(i + 1) % loop.size()]);
+        band.resolve(r.value);
     }
-    std::vector<std::vector<std::vector<ScreenPoint>>> projected;
-    for (const ViewPolygon& polygon : polygons) {
-        Vec3 normal = Vec3::Zero(); // Newell's: any planar polygon
-        auto& screen = projected.emplace_back();
-        for (const auto& loop : polygon.loops) {
-            auto& out = screen.emplace_back();
-            for (size_t i = 0; i < loop.size(); ++i) {
-                normal += loop[i].cross(loop[(i + 1) % loop.size()]);
-                out.push_back(canvas.project(loop[i]));
-            }
-        }
-        canvas.fill(screen, canvas.shaded(polygon.colour, normal));
-    }
-    // Outlines last, so a later surface does not cover an earlier one's edge lying on it.
-    for (size_t p = 0; p < polygons.size(); ++p)
-        if (polygons[p].outlined && camera.edge_px > 0)
-            for (const auto& loop : projected[p])
-                for (size_t i = 0; i < loop.size(); ++i)
-                    canvas.line(loop[i], loop[(i + 1) % loop.size()]);
-    r.value = canvas.image();
     return r;
 }
 
