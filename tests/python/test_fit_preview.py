@@ -99,6 +99,24 @@ def test_holes_are_left_empty():
     assert int(np.sum(image[..., 3] == 255)) == 100 * 50 - 50 * 30
 
 
+def test_a_point_far_off_the_screen_is_drawn_up_to_the_edge():
+    # A sliver reaching a million kilometres away: its outline is clipped to the picture, not
+    # stepped along pixel by pixel, and the part on the screen is filled.
+    far = np.array([[0, 0, 0], [1e12, 0, 0], [1e12, 50, 0], [0, 50, 0]], dtype=float)
+    image = popupcore.render_view(
+        [],
+        [([far], (1.0, 1.0, 1.0), True)],
+        towards_eye=(0, 0, 1),
+        up=(0, 1, 0),
+        centre=(50, 25, 0),
+        mm_per_pixel=1.0,
+        width=100,
+        height=50,
+        edge_px=1.0,
+    )
+    assert int(np.sum(image[..., 3] == 255)) == 100 * 50
+
+
 @pytest.mark.parametrize(
     "option, value, message",
     [

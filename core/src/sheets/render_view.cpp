@@ -73,6 +73,46 @@ struct ScreenSurface {
     bool outlined = false;
 };
 
+/// `value` (may be huge or not finite: a point far off the screen) as an int in [lo, hi].
+int clamped(double value, int lo, int hi)
+{
+    if (!(value > lo))
+        return lo;
+    return value < hi ? int(value) : hi;
+}
+
+/// The part of segment a-b inside x in [x0, x1], y in [y0, y1] (Liang-Barsky); false when none.
+bool clip(ScreenPoint& a, ScreenPoint& b, double x0, double x1, double y0, double y1)
+{
+    double t0 = 0.0, t1 = 1.0;
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    const double p[4] = {-dx, dx, -dy, dy};
+    const double q[4] = {a.x - x0, x1 - a.x, a.y - y0, y1 - a.y};
+    for (int i = 0; i < 4; ++i) {
+        if (p[i] == 0.0) {
+            if (q[i] < 0.0)
+                return false;
+            continue;
+        }
+        const double t = q[i] / p[i];
+        if (p[i] < 0.0)
+            t0 = std::max(t0, t);
+        else
+            t1 = std::min(t1, t);
+    }
+    if (!(t0 <= t1))
+        return false;
+    const ScreenPoint from = a;
+    auto at = [&](double t) {
+        return ScreenPoint{from.x + t * dx, from.y + t * dy,
+                           from.depth + t * (b.depth - from.depth)};
+    };
+    const ScreenPoint end = at(t1);
+    a = at(t0);
+    b = end;
+    return true;
+}
+
 /// A band of the supersampled frame, rows [first, first + rows): drawn band after band so the
 /// buffers stay small (touching fresh memory is what costs most in a large frame).
 class Band {
@@ -116,8 +156,8 @@ public:
             return;
         anchor /= count;
         const double dx = -normal.x() / normal.z(), dy = -normal.y() / normal.z();
-        const int first = std::max(first_, int(std::ceil(lo - 0.5)));
-        const int last = std::min(first_ + rows_ - 1, int(std::floor(hi - 0.5)));
+        const int first = clamped(std::ceil(lo - 0.5), first_, first_ + rows_);
+        const int last = clamped(std::floor(hi - 0.5), first_ - 1, first_ + rows_ - 1);
         std::vector<double>& crossings = crossings_;
         for (int row = first; row <= last; ++row) {
             const double y = row + 0.5;
@@ -130,8 +170,8 @@ public:
                 }
             std::sort(crossings.begin(), crossings.end());
             for (size_t k = 0; k + 1 < crossings.size(); k += 2) {
-                const int from = std::max(0, int(std::ceil(crossings[k] - 0.5)));
-                const int to = std::min(width_, int(std::ceil(crossings[k + 1] - 0.5)));
+                const int from = clamped(std::ceil(crossings[k] - 0.5), 0, width_);
+                const int to = clamped(std::ceil(crossings[k + 1] - 0.5), 0, width_);
                 for (int column = from; column < to; ++column) {
                     const double depth =
                         anchor.z() + dx * (column + 0.5 - anchor.x()) + dy * (y - anchor.y());
@@ -142,10 +182,11 @@ public:
     }
 
     /// A line `edge_px` wide over the surfaces it lies on, hidden behind nearer ones.
-    void line(const ScreenPoint& a, const ScreenPoint& b)
+    void line(ScreenPoint a, ScreenPoint b)
     {
         const double half = 0.5 * view_.camera.edge_px * view_.scale;
-        if (!overlaps(std::min(a.y, b.y) - half, std::max(a.y, b.y) + half))
+        // Only the part over the band: a point far off the screen would take endless steps.
+        if (!clip(a, b, -half, width_ + half, first_ - half - 1.0, first_ + rows_ + half + 1.0))
             return;
         const double length = std::hypot(b.x - a.x, b.y - a.y);
         const int steps = std::max(1, int(std::ceil(2.0 * length)));
