@@ -82,6 +82,7 @@ void bind_sheet_drawing(pybind11::module_& m);
 void bind_sheet_set(pybind11::module_& m);
 void bind_model_mesh(pybind11::module_& m);
 void bind_artwork(pybind11::module_& m);
+void bind_render_view(pybind11::module_& m);
 void bind_fitting(pybind11::module_& m);
 void bind_model_input(pybind11::module_& m);
 void bind_profiles(pybind11::module_& m);

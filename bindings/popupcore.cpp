@@ -346,6 +346,7 @@ PYBIND11_MODULE(popupcore, m)
     bind_sheet_drawing(m);
     bind_model_mesh(m);
     bind_artwork(m);
+    bind_render_view(m);
     bind_fitting(m);
     bind_model_input(m);
     bind_profiles(m);

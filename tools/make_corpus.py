@@ -232,6 +232,18 @@ CORPUS = {
         open=True,
         summary="scanned bust, open below, three holes, noise",
     ),
+    "bust_scan_dense": _entry(
+        objects.bust_scan_dense,
+        "ply",
+        "mm",
+        "+z",
+        "organic open-shell holes scan-noise vertex-colours dense-scan",
+        parts=1,
+        components=1,
+        bbox=((NAN, NAN, 0), (NAN, NAN, 320)),
+        open=True,
+        summary="the bust as a modern scanner gives it: 30,529 vertices",
+    ),
     "tree_cards": _entry(
         objects.tree_cards,
         "ply",

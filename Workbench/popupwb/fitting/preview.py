@@ -1,118 +1,154 @@
 """preview.png of `popup fit`: the model and the pop-up side by side, both in the card's frame at
-the design state (the card open flat, 180°), seen from the same camera on the viewer's side (+x).
+the design state (the card open flat, 180°), seen from the same camera on the viewer's side (+x)
+at the same scale.
 
-Drawn with matplotlib's Agg canvas (no display, no FreeCAD GUI start-up; docs/DESIGN.md says why);
-faces are flat-shaded by their normal so the boxes read as solids.
+Drawn by the core's z-buffer rasteriser (popupcore.render_view: every triangle of a scanned model
+in a fraction of a second, hidden surfaces hidden), supersampled and framed with Pillow; faces
+are flat-shaded by their normal so the boxes read as solids. No display, no FreeCAD GUI.
 """
 
 import numpy as np
 
 IMAGE_SIZE_PX = (1600, 800)
-DPI = 100
-MAX_MODEL_TRIANGLES = 40000  # beyond this every k-th triangle is drawn: a preview, not a render
-LIGHT = np.array([0.6, -0.3, 0.75])
-MODEL_COLOUR = np.array([0.55, 0.65, 0.85])
-PAPER_COLOUR = np.array([0.95, 0.88, 0.70])
-CARD_COLOUR = np.array([0.85, 0.85, 0.85])
+SUPERSAMPLE = 2  # drawn this many times finer, then averaged: smooth edges
+TITLE_PX = 34  # the strip above the panels: the title, then each panel's caption
+CAPTION_PX = 26
+MARGIN = 0.06  # free border around the scene, a fraction of the panel
+LIGHT = (0.6, -0.3, 0.75)
+AMBIENT = 0.45
+MODEL_COLOUR = (0.55, 0.65, 0.85)
+PAPER_COLOUR = (0.95, 0.88, 0.70)
+CARD_COLOUR = (0.85, 0.85, 0.85)
+EDGE_COLOUR = (0.2, 0.2, 0.2)
 CAMERA = {"elev": 28.0, "azim": 25.0}  # degrees: from the +x side, a little to the right
+FONT_FILE = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf"
 
 
-def _shaded(polygons, colour):
-    """One RGB per polygon: `colour` lit by LIGHT through the polygon's normal (both sides)."""
-    light = LIGHT / np.linalg.norm(LIGHT)
-    colours = []
-    for polygon in polygons:
-        p = np.asarray(polygon, dtype=float)
-        normal = np.zeros(3)
-        for i in range(len(p)):  # Newell's normal: fine for any planar polygon
-            a, b = p[i], p[(i + 1) % len(p)]
-            normal += np.cross(a, b)
-        length = np.linalg.norm(normal)
-        shade = abs(normal @ light) / length if length > 0 else 0.5
-        colours.append(np.clip(colour * (0.45 + 0.55 * shade), 0.0, 1.0))
-    return colours
+def camera_axes(elev=CAMERA["elev"], azim=CAMERA["azim"]):
+    """(towards_eye, up, right) unit vectors of the camera, as matplotlib's view_init(elev, azim)
+    places it: up is +z seen from the eye."""
+    e, a = np.radians(elev), np.radians(azim)
+    eye = np.array([np.cos(e) * np.cos(a), np.cos(e) * np.sin(a), np.sin(e)])
+    up = np.array([0.0, 0.0, 1.0]) - np.sin(e) * eye
+    up /= np.linalg.norm(up)
+    return eye, up, np.cross(up, eye)
 
 
-def _set_box(axes, lo, hi):
-    centre, half = 0.5 * (lo + hi), 0.5 * float(np.max(hi - lo))
-    axes.set_xlim(centre[0] - half, centre[0] + half)
-    axes.set_ylim(centre[1] - half, centre[1] + half)
-    axes.set_zlim(centre[2] - half, centre[2] + half)
-    axes.set_box_aspect((1, 1, 1))
-    axes.view_init(**CAMERA)
-    axes.set_xlabel("x (mm)")
-    axes.set_ylabel("y (mm)")
-    axes.set_zlabel("z (mm)")
+def fit_view(points, width, height, margin=MARGIN):
+    """(centre, mm_per_pixel) that fit `points` (Nx3, card mm) in width x height pixels with a
+    `margin` border, seen by camera_axes()."""
+    _, up, right = camera_axes()
+    across, along = points @ right, points @ up
+    lo, hi = np.array([across.min(), along.min()]), np.array([across.max(), along.max()])
+    usable = (1.0 - 2.0 * margin) * np.array([width, height], dtype=float)
+    mm_per_pixel = max(float(np.max((hi - lo) / usable)), 1e-9)
+    mid = 0.5 * (lo + hi)
+    return mid[0] * right + mid[1] * up, mm_per_pixel
+
+
+def render_panel(meshes, polygons, centre, mm_per_pixel, width, height):
+    """One panel as an RGB uint8 array (height x width x 3) on white: popupcore.render_view,
+    drawn SUPERSAMPLE times finer and averaged."""
+    from popupwb.core import popupcore
+
+    eye, up, _ = camera_axes()
+    rgba = popupcore.render_view(
+        meshes,
+        polygons,
+        towards_eye=eye,
+        up=up,
+        centre=centre,
+        mm_per_pixel=mm_per_pixel,
+        width=width,
+        height=height,
+        light=LIGHT,
+        ambient=AMBIENT,
+        background=(1.0, 1.0, 1.0),
+        edge_colour=EDGE_COLOUR,
+        edge_px=1.2,
+        supersample=SUPERSAMPLE,
+    )
+    return np.ascontiguousarray(rgba[..., :3])
+
+
+def _loops(patch):
+    """A patch given as one Kx3 outline, or as a list of loops (outline, then holes)."""
+    if isinstance(patch, np.ndarray) and patch.ndim == 2:
+        return [np.asarray(patch, dtype=float).reshape(-1, 3)]
+    return [np.asarray(loop, dtype=float).reshape(-1, 3) for loop in patch]
+
+
+def _scale_bar_mm(mm_per_pixel, width):
+    """A round length (1, 2 or 5 times a power of ten) near a fifth of the panel."""
+    target = 0.2 * width * mm_per_pixel
+    power = 10.0 ** np.floor(np.log10(target))
+    return max(s * power for s in (1, 2, 5) if s * power <= target)
+
+
+def _font(size):
+    from PIL import ImageFont
+
+    try:
+        return ImageFont.truetype(FONT_FILE, size)
+    except OSError:
+        return ImageFont.load_default()
 
 
 def write_preview(path, model_vertices, model_triangles, patches, card_patches=(), title=""):
     """Writes the side-by-side PNG to `path`.
 
     `model_vertices` (Nx3) and `model_triangles` (Mx3) are the model in the card's frame (mm);
-    `patches` the pop-up's patch outlines (each Kx3) at the design state, `card_patches` the
-    indices of the card's own pages among them (drawn grey)."""
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
-    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+    `patches` the pop-up's patches at the design state, each a Kx3 outline or a list of loops
+    (outline, then holes); `card_patches` the indices of the card's own pages among them (drawn
+    grey, under the model on the left too)."""
+    from PIL import Image, ImageDraw
 
     vertices = np.asarray(model_vertices, dtype=float).reshape(-1, 3)
-    triangles = np.asarray(model_triangles, dtype=np.int64).reshape(-1, 3)
-    if len(triangles) > MAX_MODEL_TRIANGLES:
-        triangles = triangles[:: int(np.ceil(len(triangles) / MAX_MODEL_TRIANGLES))]
-    model_polygons = vertices[triangles]
-    patch_polygons = [np.asarray(p, dtype=float).reshape(-1, 3) for p in patches]
-
-    everything = np.vstack([vertices] + patch_polygons)
-    lo, hi = everything.min(axis=0), everything.max(axis=0)
-
-    figure = Figure(figsize=(IMAGE_SIZE_PX[0] / DPI, IMAGE_SIZE_PX[1] / DPI), dpi=DPI)
-    FigureCanvasAgg(figure)
-    if title:
-        figure.suptitle(title)
-
-    # Collections are depth-sorted as wholes: the card's centre is nearer the camera than the
-    # model's, so sorted it would hide the model standing on it. Drawn in order instead: the card
-    # first, the model over it (seen from above, nothing of the card is in front of the model).
-    left = figure.add_subplot(1, 2, 1, projection="3d", computed_zorder=False)
-    left.set_title("model (in the card's frame, on the open card)")
-    pages = [patch_polygons[i] for i in card_patches]
-    if pages:  # the card under the model, as on the right: the two halves compare at a glance
-        left.add_collection3d(
-            Poly3DCollection(
-                pages, facecolors=[CARD_COLOUR] * len(pages), edgecolors=(0.2, 0.2, 0.2)
-            )
-        )
-    left.add_collection3d(
-        Poly3DCollection(
-            list(model_polygons),
-            facecolors=_shaded(model_polygons, MODEL_COLOUR),
-            edgecolors="none",
-        )
-    )
-    _set_box(left, lo, hi)
-
-    right = figure.add_subplot(1, 2, 2, projection="3d")
-    right.set_title("pop-up at the design state (open flat, 180°)")
+    triangles = np.asarray(model_triangles, dtype=np.int32).reshape(-1, 3)
+    loops = [_loops(p) for p in patches]
     card = set(card_patches)
-    colours = _shaded(patch_polygons, PAPER_COLOUR)
-    for i in card:
-        colours[i] = CARD_COLOUR
-    right.add_collection3d(
-        Poly3DCollection(
-            patch_polygons, facecolors=colours, edgecolors=(0.2, 0.2, 0.2), linewidths=0.6
-        )
-    )
-    _set_box(right, lo, hi)
+    everything = np.vstack([vertices] + [loop for patch in loops for loop in patch])
 
-    figure.tight_layout()
-    figure.savefig(path)
+    width, height = IMAGE_SIZE_PX[0] // 2, IMAGE_SIZE_PX[1] - TITLE_PX - CAPTION_PX
+    centre, mm_per_pixel = fit_view(everything, width, height)
+    pages = [(loops[i], CARD_COLOUR, True) for i in sorted(card)]
+    model = [(vertices, triangles, MODEL_COLOUR)]
+    popup = [(p, CARD_COLOUR if i in card else PAPER_COLOUR, True) for i, p in enumerate(loops)]
+    left = render_panel(model, pages, centre, mm_per_pixel, width, height)
+    right = render_panel([], popup, centre, mm_per_pixel, width, height)
+
+    image = Image.new("RGB", IMAGE_SIZE_PX, "white")
+    image.paste(Image.fromarray(left), (0, TITLE_PX + CAPTION_PX))
+    image.paste(Image.fromarray(right), (width, TITLE_PX + CAPTION_PX))
+    draw = ImageDraw.Draw(image)
+    if title:
+        draw.text((IMAGE_SIZE_PX[0] // 2, 6), title, fill="black", font=_font(20), anchor="ma")
+    captions = (
+        "model (in the card's frame, on the open card)",
+        "pop-up at the design state (open flat, 180°)",
+    )
+    for i, caption in enumerate(captions):
+        draw.text(
+            (i * width + width // 2, TITLE_PX), caption, fill="black", font=_font(15), anchor="ma"
+        )
+    bar = _scale_bar_mm(mm_per_pixel, width)
+    for x0 in (20, width + 20):
+        y = IMAGE_SIZE_PX[1] - 20
+        draw.line((x0, y, x0 + bar / mm_per_pixel, y), fill="black", width=3)
+        draw.text((x0, y - 20), f"{bar:g} mm", fill="black", font=_font(14))
+    draw.line((width, TITLE_PX + CAPTION_PX, width, IMAGE_SIZE_PX[1]), fill=(200, 200, 200))
+    image.save(path)
     return path
 
 
 def scaffold_outlines(scaffold):
-    """Outer loops of every patch of a popupcore.Scaffold at its design state, and the indices of
-    the card's pages among them."""
-    outlines = [np.asarray(patch.outer, dtype=float).reshape(-1, 3) for patch in scaffold.patches]
+    """The loops of every patch of a popupcore.Scaffold at its design state (each a list: the
+    outline, then its holes), and the indices of the card's pages among them."""
+    outlines = [
+        [np.asarray(patch.outer, dtype=float).reshape(-1, 3)]
+        + [np.asarray(h, dtype=float).reshape(-1, 3) for h in patch.holes]
+        for patch in scaffold.patches
+    ]
     ids = [patch.id for patch in scaffold.patches]
     card = [ids.index(i) for i in (scaffold.ground, scaffold.backdrop) if i in ids]
     return outlines, card

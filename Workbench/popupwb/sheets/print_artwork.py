@@ -49,7 +49,15 @@ def _side(back):
 
 
 def _checked_rgba(patch_id, image):
-    rgba = numpy.asarray(image.rgba)
+    # PatchArtwork.rgba copies the image out of the core on every read; the SVG and the PDF both
+    # place it, so the copy is kept on the image (a few MB each at 300 dpi).
+    rgba = getattr(image, "_rgba_array", None)
+    if rgba is None:
+        rgba = numpy.asarray(image.rgba)
+        try:
+            image._rgba_array = rgba
+        except AttributeError:  # an image without a __dict__: read again next time
+            pass
     if rgba.dtype != numpy.uint8 or rgba.ndim != 3 or rgba.shape[2] != 4 or 0 in rgba.shape:
         raise ValueError(
             f"artwork for patch {patch_id}: rgba is {rgba.dtype} of shape {rgba.shape}, must be "

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <list>
 #include <random>
 #include <sstream>
@@ -259,26 +260,41 @@ void measure_volume(const ModelMesh& model, const std::vector<Point>& card_point
                 return true;
         return false;
     };
-    long in_model = 0, in_popup = 0, in_either_only = 0;
     std::unique_ptr<CGAL::Side_of_triangle_mesh<Mesh, Kernel>> inside;
     if (m.model_closed) {
         m.model_volume_mm3 = std::abs(CGAL::to_double(PMP::volume(solid)));
         inside = std::make_unique<CGAL::Side_of_triangle_mesh<Mesh, Kernel>>(solid);
     }
-    for (int i = 0; i < n.x(); ++i)
-        for (int j = 0; j < n.y(); ++j)
-            for (int k = 0; k < n.z(); ++k) {
-                const Point p(grid_lo.x() + (i + 0.5) * h, grid_lo.y() + (j + 0.5) * h,
-                              grid_lo.z() + (k + 0.5) * h);
-                // Outside the model's box no ray needs shooting.
-                const bool in_box = p.x() >= lo.x() && p.x() <= hi.x() && p.y() >= lo.y() &&
-                                    p.y() <= hi.y() && p.z() >= lo.z() && p.z() <= hi.z();
-                const bool a = inside && in_box && (*inside)(p) == CGAL::ON_BOUNDED_SIDE;
-                const bool b = in_prisms(p);
-                in_model += a;
-                in_popup += b;
-                in_either_only += a != b;
-            }
+    struct Counts {
+        long in_model = 0, in_popup = 0, in_either_only = 0;
+    };
+    // Slabs of the grid along x; integer counts, so the halves add up to the same numbers.
+    auto count_slab = [&](int i_begin, int i_end) {
+        Counts c;
+        for (int i = i_begin; i < i_end; ++i)
+            for (int j = 0; j < n.y(); ++j)
+                for (int k = 0; k < n.z(); ++k) {
+                    const Point p(grid_lo.x() + (i + 0.5) * h, grid_lo.y() + (j + 0.5) * h,
+                                  grid_lo.z() + (k + 0.5) * h);
+                    // Outside the model's box no ray needs shooting.
+                    const bool in_box = p.x() >= lo.x() && p.x() <= hi.x() && p.y() >= lo.y() &&
+                                        p.y() <= hi.y() && p.z() >= lo.z() && p.z() <= hi.z();
+                    const bool a = inside && in_box && (*inside)(p) == CGAL::ON_BOUNDED_SIDE;
+                    const bool b = in_prisms(p);
+                    c.in_model += a;
+                    c.in_popup += b;
+                    c.in_either_only += a != b;
+                }
+        return c;
+    };
+    if (inside) // its tree built once, before the two halves share it
+        (*inside)(Point(lo.x(), lo.y(), lo.z()));
+    std::future<Counts> first_half = std::async(std::launch::async, count_slab, 0, n.x() / 2);
+    const Counts second = count_slab(n.x() / 2, n.x());
+    const Counts first = first_half.get();
+    const long in_model = first.in_model + second.in_model;
+    const long in_popup = first.in_popup + second.in_popup;
+    const long in_either_only = first.in_either_only + second.in_either_only;
     m.popup_volume_mm3 = double(in_popup) * h * h * h;
     if (m.model_closed && in_model > 0)
         m.volume_difference = double(in_either_only) / double(in_model);
@@ -391,20 +407,35 @@ Result<FitMetrics> fit_metrics(const ModelMesh& model, const Eigen::Matrix4d& mo
     const Mesh shape_mesh = mesh_of(shape_patches);
     Tree model_tree(model_triangles.begin(), model_triangles.end());
     Tree popup_tree(all_patches.begin(), all_patches.end());
+    // Built here, before the lanes below share them (they would build lazily on first use).
+    model_tree.build();
+    popup_tree.build();
     model_tree.accelerate_distance_queries();
     popup_tree.accelerate_distance_queries();
     std::mt19937_64 random(options.seed);
     const std::vector<Point> model_samples =
         sample_surface(model_triangles, options.samples, random);
     const std::vector<Point> shape_samples = sample_surface(shape_patches, options.samples, random);
+    // The four measures are independent: run side by side (two cores), each as it ran alone,
+    // so the numbers are the same as one after the other.
     int covered = 0;
-    m.model_to_popup_mm =
-        sampled_distances(model_samples, popup_tree, options.threshold_mm, &covered);
-    m.model_to_popup_mm.max = PMP::bounded_error_Hausdorff_distance<CGAL::Sequential_tag>(
-        model_mesh, all_mesh, error_bound);
-    m.popup_to_model_mm = sampled_distances(shape_samples, model_tree, options.threshold_mm);
+    auto model_side = std::async(std::launch::async, [&] {
+        return sampled_distances(model_samples, popup_tree, options.threshold_mm, &covered);
+    });
+    auto model_max = std::async(std::launch::async, [&] {
+        return PMP::bounded_error_Hausdorff_distance<CGAL::Sequential_tag>(model_mesh, all_mesh,
+                                                                           error_bound);
+    });
+    auto shape_side = std::async(std::launch::async, [&] {
+        return sampled_distances(shape_samples, model_tree, options.threshold_mm);
+    });
     m.popup_to_model_mm.max = PMP::bounded_error_Hausdorff_distance<CGAL::Sequential_tag>(
         shape_mesh, model_mesh, error_bound);
+    const double popup_max = m.popup_to_model_mm.max;
+    m.model_to_popup_mm = model_side.get();
+    m.model_to_popup_mm.max = model_max.get();
+    m.popup_to_model_mm = shape_side.get();
+    m.popup_to_model_mm.max = popup_max;
     m.model_to_popup = relative(m.model_to_popup_mm, m.diagonal_mm);
     m.popup_to_model = relative(m.popup_to_model_mm, m.diagonal_mm);
     m.coverage = double(covered) / double(model_samples.size());
