@@ -136,13 +136,53 @@ Vec3 snapped_to_faces(const ModelMesh& model, const Vec3& axis)
     return sum.norm() > 0 ? Vec3(sum.normalized()) : axis;
 }
 
+/// How widely a model would stand on its lowest points along `up`: the bounding rectangle (across
+/// `up`) of the vertices in the lowest 3 % of its height, over that of all its vertices. Four
+/// feet under a body come near 1, a body lying on its flank near its thickness over its width.
+double stance(const ModelMesh& model, const Vec3& up)
+{
+    const Vec3 e1 = up.unitOrthogonal(), e2 = up.cross(e1);
+    double lo = 1e300, hi = -1e300;
+    for (const Vec3& v : model.vertices) {
+        lo = std::min(lo, v.dot(up));
+        hi = std::max(hi, v.dot(up));
+    }
+    Eigen::AlignedBox2d all, feet;
+    for (const Vec3& v : model.vertices) {
+        const Vec2 q(v.dot(e1), v.dot(e2));
+        all.extend(q);
+        if (v.dot(up) <= lo + 0.03 * (hi - lo))
+            feet.extend(q);
+    }
+    return all.volume() > 0 ? feet.volume() / all.volume() : 0.0;
+}
+
+/// A model with no flat bottom (an animal, a figure, a scan): the signed NPCA axis it stands on
+/// most widely (stance()), the first NPCA axis's among equals, so that a dog stands on its legs
+/// rather than on its flank.
+Vec3 widest_stance(const ModelMesh& model, const Mat3& axes)
+{
+    Vec3 best = axes.col(0);
+    double widest = -1;
+    for (int k = 0; k < 3; ++k)
+        for (const double sign : {1.0, -1.0}) {
+            const Vec3 up = sign * axes.col(k);
+            const double w = stance(model, up);
+            if (w > widest * 1.05) {
+                widest = w;
+                best = up;
+            }
+        }
+    return best;
+}
+
 /// The up a model stands on (docs/MATH.md, "Which way is up"): the signed NPCA axis whose
 /// bounding-box bottom carries the most flat, downward-facing area (a house's floor, not its
 /// roof; an upright cylinder's cap, not a facet of its side). Axes whose bottoms are within
 /// 10 % of the largest are as good (a truck's floor and its flat side): the larger NPCA
 /// eigenvalue decides among them, the thesis's up (each axis snapped onto the flat faces within
-/// 3° of it first). A model with no flat bottom worth the name
-/// (under 1 % of its area: a blob) keeps the first NPCA axis. The sign: the end with more flat
+/// 3° of it first). A model with no flat bottom worth the name (under 1 % of its area: a blob,
+/// an animal) stands on its widest stance (widest_stance). The sign: the end with more flat
 /// area, the skew deciding a tie.
 Vec3 standing_up(const ModelMesh& model, const Mat3& npca, const std::vector<Vec3>& points,
                  const Vec3& centre)
@@ -161,6 +201,8 @@ Vec3 standing_up(const ModelMesh& model, const Mat3& npca, const std::vector<Vec
         areas[k] = end_areas(model, axes.col(k));
         largest = std::max({largest, areas[k][0], areas[k][1]});
     }
+    if (largest < 0.01 * total)
+        return widest_stance(model, axes);
     int best_axis = -1;
     if (largest >= 0.01 * total)
         for (int k = 0; k < 3 && best_axis < 0; ++k)
