@@ -387,3 +387,25 @@ TEST(ShelfPack, TurnsTallBoxesFlat)
     }
     expect_valid_layout(strips, a4(), nesting.value);
 }
+
+/// Silhouette-like pieces: gears of 40 teeth, each splitting into far more convex parts than the
+/// nesting's limit, so their grown hulls stand in. They still keep the spacing and the margins
+/// (expect_valid_layout measures the exact outlines), and all six go on one A4 sheet: the hull of
+/// a gear of outer radius 30 mm, grown by 1 mm, is within a 62 mm square.
+TEST(NestShapes, WigglyOutlinesNestByTheirHullsWithoutOverlap)
+{
+    std::vector<NestShape> gears;
+    for (int g = 0; g < 6; ++g) {
+        Loop2 outer;
+        for (int k = 0; k < 80; ++k) {
+            const double a = 2 * M_PI * k / 80, r = k % 2 ? 24.0 : 30.0;
+            outer.push_back({r * std::cos(a), r * std::sin(a)});
+        }
+        gears.push_back(shape("gear " + std::to_string(g), outer));
+    }
+    const NestOptions options = a4();
+    const Result<Nesting> nesting = nest_shapes(gears, options);
+    ASSERT_TRUE(nesting.ok);
+    expect_valid_layout(gears, options, nesting.value);
+    EXPECT_EQ(nesting.value.sheet_count, 1);
+}

@@ -18,6 +18,7 @@
 #include <random>
 #include <tuple>
 
+#include "convex_hull.hpp"
 #include "convex_parts.hpp"
 #include "nest_input.hpp"
 #include "no_fit_polygon.hpp"
@@ -35,8 +36,9 @@ using ClipperLib::Paths;
 using nest_detail::Bounds;
 using nest_detail::Outline;
 
-constexpr int kSwapsPerSheet = 12; // orders tried per sheet after the greedy ones
-constexpr double kSafety = 1e-4;   // mm added to half the spacing: Clipper rounds to whole nm
+constexpr int kSwapsPerSheet = 12;          // orders tried per sheet after the greedy ones
+constexpr std::size_t kMaxConvexParts = 16; // see orientations_of
+constexpr double kSafety = 1e-4; // mm added to half the spacing: Clipper rounds to whole nm
 
 /// One allowed quarter turn of a shape, in a frame where the turned outline's bounding box
 /// starts at the origin.
@@ -98,7 +100,13 @@ Path grown_outline(const Path& outline, double spacing)
 std::vector<Orientation> orientations_of(const Outline& outline, const NestOptions& options)
 {
     const Path grown = grown_outline(outline.path, options.spacing);
-    const std::vector<Path> grown_parts = nest_detail::convex_parts(grown);
+    std::vector<Path> grown_parts = nest_detail::convex_parts(grown);
+    // A wiggly outline (a model's silhouette) splits into many convex parts, and two shapes'
+    // no-fit polygon grows with the product of their parts: past kMaxConvexParts the grown
+    // outline's convex hull, which contains it, stands in (the piece nests a little looser and
+    // never overlaps another).
+    if (grown_parts.size() > kMaxConvexParts)
+        grown_parts = {nest_detail::convex_hull(grown)};
     std::vector<Orientation> orientations;
     std::vector<Path> turned_outlines;
     for (int quarter_turns = 0; quarter_turns < (options.rotate ? 4 : 1); ++quarter_turns) {
