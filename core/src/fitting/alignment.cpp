@@ -136,6 +136,8 @@ Vec3 snapped_to_faces(const ModelMesh& model, const Vec3& axis)
     return sum.norm() > 0 ? Vec3(sum.normalized()) : axis;
 }
 
+constexpr double kWideStance = 0.05; ///< a twentieth of the footprint: feet, not a corner
+
 /// How widely a model would stand on its lowest points along `up`: the bounding rectangle (across
 /// `up`) of the vertices in the lowest 3 % of its height, over that of all its vertices. Four
 /// feet under a body come near 1, a body lying on its flank near its thickness over its width.
@@ -159,7 +161,8 @@ double stance(const ModelMesh& model, const Vec3& up)
 
 /// A model with no flat bottom (an animal, a figure, a scan): the signed NPCA axis it stands on
 /// most widely (stance()), the first NPCA axis's among equals, so that a dog stands on its legs
-/// rather than on its flank.
+/// rather than on its flank (turned onto the file's own axis within 15° of it); the first NPCA
+/// axis when no stance reaches kWideStance.
 Vec3 widest_stance(const ModelMesh& model, const Mat3& axes)
 {
     Vec3 best = axes.col(0);
@@ -173,6 +176,14 @@ Vec3 widest_stance(const ModelMesh& model, const Mat3& axes)
                 best = up;
             }
         }
+    // Nothing stands widely (a tree on its trunk, a pole): the thesis's up, the first NPCA axis.
+    if (widest < kWideStance)
+        return axes.col(0);
+    // An animal's NPCA axes lean with its tail and head; files model it upright along one of
+    // their own axes, so an axis of the file within 15° is its up.
+    for (int a = 0; a < 3; ++a)
+        if (std::abs(best[a]) >= std::cos(15.0 * M_PI / 180.0))
+            return best[a] > 0 ? Vec3(Vec3::Unit(a)) : Vec3(-Vec3::Unit(a));
     return best;
 }
 
