@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -136,12 +137,15 @@ Vec3 snapped_to_faces(const ModelMesh& model, const Vec3& axis)
     return sum.norm() > 0 ? Vec3(sum.normalized()) : axis;
 }
 
-constexpr double kWideStance = 0.05; ///< a twentieth of the footprint: feet, not a corner
+constexpr double kWideStance = 0.04; ///< feet, not a corner (widest_stance's measure)
 
-/// How widely a model would stand on its lowest points along `up`: the bounding rectangle (across
-/// `up`) of the vertices in the lowest 3 % of its height, over that of all its vertices. Four
-/// feet under a body come near 1, a body lying on its flank near its thickness over its width.
-double stance(const ModelMesh& model, const Vec3& up)
+/// Where a model would stand along `up`: the bounding rectangle (across `up`) of the vertices in
+/// the lowest 3 % of its height (its feet) and that of all its vertices (its footprint).
+struct Stance {
+    double feet = 0.0, footprint = 0.0;
+};
+
+Stance stance(const ModelMesh& model, const Vec3& up)
 {
     const Vec3 e1 = up.unitOrthogonal(), e2 = up.cross(e1);
     double lo = 1e300, hi = -1e300;
@@ -156,26 +160,37 @@ double stance(const ModelMesh& model, const Vec3& up)
         if (v.dot(up) <= lo + 0.03 * (hi - lo))
             feet.extend(q);
     }
-    return all.volume() > 0 ? feet.volume() / all.volume() : 0.0;
+    return {feet.volume(), all.volume()};
 }
 
 /// A model with no flat bottom (an animal, a figure, a scan): the signed NPCA axis it stands on
-/// most widely (stance()), the first NPCA axis's among equals, so that a dog stands on its legs
-/// rather than on its flank (turned onto the file's own axis within 15° of it); the first NPCA
-/// axis when no stance reaches kWideStance.
+/// most widely (its feet's rectangle over its footprint, times the square root of that footprint
+/// over the largest of the three axes'), the first's among equals, so that
+/// a dog stands on its legs rather than on its flank (turned onto the file's own axis within 15° of
+/// it); the first NPCA axis when no stance reaches kWideStance.
 Vec3 widest_stance(const ModelMesh& model, const Mat3& axes)
 {
+    // Feet over the footprint, weighed by the square root of how large that footprint is among
+    // the three axes': a dog's paws spread wider than its flank lies, and a thin plate on its
+    // edge, whose footprint is a line, stands narrowly however long the line.
+    std::array<Stance, 6> stances;
+    double largest = 0;
+    for (int k = 0; k < 6; ++k) {
+        stances[size_t(k)] = stance(model, (k % 2 ? -1.0 : 1.0) * axes.col(k / 2));
+        largest = std::max(largest, stances[size_t(k)].footprint);
+    }
     Vec3 best = axes.col(0);
     double widest = -1;
-    for (int k = 0; k < 3; ++k)
-        for (const double sign : {1.0, -1.0}) {
-            const Vec3 up = sign * axes.col(k);
-            const double w = stance(model, up);
-            if (w > widest * 1.05) {
-                widest = w;
-                best = up;
-            }
+    for (int k = 0; k < 6; ++k) {
+        const Stance& st = stances[size_t(k)];
+        const double w = st.footprint > 0 && largest > 0
+                             ? st.feet / st.footprint * std::sqrt(st.footprint / largest)
+                             : 0.0;
+        if (w > widest * 1.05) {
+            widest = w;
+            best = (k % 2 ? -1.0 : 1.0) * axes.col(k / 2);
         }
+    }
     // Nothing stands widely (a tree on its trunk, a pole): the thesis's up, the first NPCA axis.
     if (widest < kWideStance)
         return axes.col(0);

@@ -58,7 +58,7 @@ std::optional<SupportingPlate> supporting_plate(const ModelMesh& model, const Ve
     // Flat upward-facing area per level, levels a 400th of the height apart, in the lowest
     // quarter of the height.
     const double bin = height / 400.0;
-    std::map<long, double> area_at;
+    std::map<long, double> area_at, moment_at; // area and area-weighted level per bin
     for (const auto& t : model.triangles) {
         const Vec3 &a = model.vertices[t[0]], &b = model.vertices[t[1]], &c = model.vertices[t[2]];
         const Vec3 n = (b - a).cross(c - a);
@@ -66,8 +66,11 @@ std::optional<SupportingPlate> supporting_plate(const ModelMesh& model, const Ve
         if (!(area > 0) || n.dot(up) < kFlatUp * 2 * area)
             continue;
         const double level = (a + b + c).dot(up) / 3.0;
-        if (level - bottom <= 0.25 * height)
-            area_at[std::lround((level - bottom) / bin)] += area;
+        if (level - bottom <= 0.25 * height) {
+            const long at = std::lround((level - bottom) / bin);
+            area_at[at] += area;
+            moment_at[at] += area * level;
+        }
     }
     if (area_at.empty())
         return std::nullopt;
@@ -75,8 +78,9 @@ std::optional<SupportingPlate> supporting_plate(const ModelMesh& model, const Ve
                                          [](auto& x, auto& y) { return x.second < y.second; });
     SupportingPlate plate;
     plate.up = up;
-    plate.thickness = widest->first * bin;
-    plate.top = bottom + plate.thickness;
+    // The faces' own level, not the bin's: the card's page is the plate's top exactly.
+    plate.top = moment_at[widest->first] / widest->second;
+    plate.thickness = plate.top - bottom;
     plate.top_area = widest->second;
     const auto axes = footprint_axes(model, up);
     const double whole = footprint(model, up, axes, -1e300);

@@ -131,8 +131,8 @@ TEST(SupportingPlate, TerrainSlabUnderAHouse)
         join({box_mesh({-40, -30, -2}, {40, 30, 0}), box_mesh({-20, -15, 0}, {20, 15, 25})});
     const auto plate = supporting_plate(model, {0, 0, 1});
     ASSERT_TRUE(plate.has_value());
-    EXPECT_NEAR(plate->top, 0.0, 27 / 400.0);
-    EXPECT_NEAR(plate->thickness, 2.0, 27 / 400.0);
+    EXPECT_NEAR(plate->top, 0.0, 1e-12);
+    EXPECT_NEAR(plate->thickness, 2.0, 1e-12);
     EXPECT_NEAR(plate->top_area, 80.0 * 60.0, 1e-6); // the slab's whole top face
     const ModelMesh house = above_plate(model, *plate);
     EXPECT_EQ(house.triangles.size(), 10u);
