@@ -125,7 +125,12 @@ TEST(FitOutlines, AWheelArchGivesTheAnalyticArea)
     for (const FittedProfile& p : out.profiles) {
         const Patch& patch = patch_named(out.scaffold, "B1." + p.part);
         EXPECT_NEAR(p.area, patch.area(), 1e-6) << p.part;
-        EXPECT_NEAR(p.area, expected, 1e-3) << p.part;
+        // Outlines drop vertices within 1 µm of their neighbours' line (fit_outlines.cpp): the
+        // area may move by the perimeter times 1 µm.
+        double perimeter = 0;
+        for (size_t k = 0; k < p.outer.size(); ++k)
+            perimeter += (p.outer[(k + 1) % p.outer.size()] - p.outer[k]).norm();
+        EXPECT_NEAR(p.area, expected, 1e-3 + perimeter * 1e-3) << p.part;
         EXPECT_NEAR(p.area_before, kWidth * kHeight, 1e-6);
         EXPECT_GE(p.outer.size(), size_t(n + 4)) << p.part; // the arch's points are kept
         // Reference: the side as generated, W along its foot, c up.
