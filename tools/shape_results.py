@@ -17,7 +17,6 @@ REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PYTHON = "/usr/bin/python3"
 BLOCKY = ("cuboid", "house", "truck", "tent", "l_building", "truck_with_wheels")
 ORGANIC = ("blob", "figure", "defective")
-CORPUS_SECTION = "## The realistic corpus"  # written by tools/corpus_results.py
 # The models stand on z with their front towards -y (tools/make_models.py).
 ALIGNMENTS = {"given axes": ["--up", "0,0,1", "--facing", "0,-1,0"], "NPCA": []}
 
@@ -98,13 +97,14 @@ def main(argv=None):
             f"{back['max']:.4f} | {'–' if volume is None else f'{volume:.3f}'} | "
             f"{m['coverage']:.2f} | {fit_s:.2f} |"
         )
-    # The corpus section (tools/corpus_results.py --doc) stays as it is.
+    # The sections after the table (what it says, written by hand; the corpus section of
+    # tools/corpus_results.py --doc) stay as they are.
     kept = ""
     if os.path.isfile(args.doc):
         with open(args.doc, encoding="utf-8") as f:
             old = f.read()
-        if CORPUS_SECTION in old:
-            kept = "\n" + CORPUS_SECTION + old.split(CORPUS_SECTION, 1)[1]
+        if "\n## " in old:
+            kept = old[old.index("\n## ") :]
     with open(args.doc, "w", encoding="utf-8") as f:
         f.write("\n".join(lines) + "\n" + kept)
     print(f"wrote {args.doc}", file=sys.stderr)
