@@ -229,11 +229,11 @@ Vec3 standing_up(const ModelMesh& model, const Mat3& npca, const std::vector<Vec
     }
     if (largest < 0.01 * total)
         return widest_stance(model, axes);
+    // A flat bottom worth the name (returned above otherwise): the first axis as good as the best.
     int best_axis = -1;
-    if (largest >= 0.01 * total)
-        for (int k = 0; k < 3 && best_axis < 0; ++k)
-            if (std::max(areas[k][0], areas[k][1]) >= 0.9 * largest)
-                best_axis = k;
+    for (int k = 0; k < 3 && best_axis < 0; ++k)
+        if (std::max(areas[k][0], areas[k][1]) >= 0.9 * largest)
+            best_axis = k;
     const int k = best_axis < 0 ? 0 : best_axis;
     const Vec3 axis = axes.col(k);
     const double low = areas[k][0], high = areas[k][1], sum = low + high;
