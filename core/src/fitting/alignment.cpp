@@ -7,6 +7,8 @@
 #include <map>
 #include <sstream>
 
+#include "model_walls.hpp"
+
 namespace popup {
 namespace {
 
@@ -240,55 +242,6 @@ Vec3 standing_up(const ModelMesh& model, const Mat3& npca, const std::vector<Vec
     if (sum > 0 && std::abs(low - high) > 1e-6 * sum)
         return low > high ? axis : Vec3(-axis);
     return orient_by_skew(axis, points, centre);
-}
-
-/// Planes across `x` on which the model has a large flat wall inside its extent (not at either
-/// end): where a box fold's backbone can stand on the model's own wall (docs/MATH.md).
-/// Returns their positions (x · point), largest wall first, at most `count`, each carrying at
-/// least `min_area`.
-std::vector<double> inner_walls(const ModelMesh& model, const Vec3& x, double min_area, int count)
-{
-    double lo = 1e300, hi = -1e300;
-    for (const Vec3& v : model.vertices) {
-        lo = std::min(lo, v.dot(x));
-        hi = std::max(hi, v.dot(x));
-    }
-    const double tolerance = 1e-3 * (hi - lo);
-    std::map<long, std::pair<double, double>> bins; // bin -> (area, area-weighted position)
-    for (const auto& t : model.triangles) {
-        const Vec3 c = (model.vertices[t[1]] - model.vertices[t[0]])
-                           .cross(model.vertices[t[2]] - model.vertices[t[0]]);
-        const double twice = c.norm();
-        if (!(twice > 0) || std::abs(c.dot(x)) < 0.99 * twice)
-            continue;
-        const double at =
-            (model.vertices[t[0]] + model.vertices[t[1]] + model.vertices[t[2]]).dot(x) / 3;
-        if (at < lo + 10 * tolerance || at > hi - 10 * tolerance)
-            continue;
-        auto& bin = bins[std::lround((at - lo) / (2 * tolerance))];
-        bin.first += 0.5 * twice;
-        bin.second += 0.5 * twice * at;
-    }
-    // Neighbouring bins are one wall cut by the binning.
-    std::vector<std::pair<double, double>> walls; // (area, position)
-    for (auto it = bins.begin(); it != bins.end();) {
-        double area = 0, moment = 0;
-        long last = it->first;
-        while (it != bins.end() && it->first <= last + 1) {
-            area += it->second.first;
-            moment += it->second.second;
-            last = it->first;
-            ++it;
-        }
-        if (area >= min_area)
-            walls.push_back({area, moment / area});
-    }
-    std::stable_sort(walls.begin(), walls.end(),
-                     [](const auto& a, const auto& b) { return a.first > b.first; });
-    std::vector<double> out;
-    for (size_t i = 0; i < walls.size() && int(i) < count; ++i)
-        out.push_back(walls[i].second);
-    return out;
 }
 
 /// The alignment for the card axes (x toward the viewer, y along the fold, up) with the central
@@ -542,9 +495,13 @@ std::vector<Alignment> aligned_on(const ModelMesh& model, const SurfaceSamples& 
         std::vector<std::optional<double>> folds{std::nullopt};
         // No mirror plane across x: the fold may stand on one of the model's inner walls
         // across x instead, where a box's backbone is the wall (each a twentieth of its area).
-        if (!mirror_plane(mirrored, samples.spacing))
+        // Or through the middle of one of its blocks, where a box centred on the fold stands.
+        if (!mirror_plane(mirrored, samples.spacing)) {
             for (double at : inner_walls(model, x, 0.05 * total_area, 2))
                 folds.push_back(at);
+            for (double at : block_centres(model, x, y, 0.02 * total_area, 2))
+                folds.push_back(at);
+        }
         for (const auto& fold : folds) {
             Alignment a = placed(model, x, y, up, fold, room);
             a.symmetry_error = mirrored / diagonal;

@@ -48,9 +48,8 @@ Result<FitResult> fit_design(const ModelMesh& given, const FitOptions& options,
     const OccupancyGrid volume(given, kVolumeCells, kVolumeClosing);
     int turned = 0;
     const ModelMesh model = faces_turned_out(given, volume, turned);
-    const SurfaceSamples coarse =
-        outer_surface(volume, sample_surface(model, std::min(options.samples, 4000), options.seed))
-            .samples;
+    const SurfaceSamples coarse = outer_only(outer_surface(
+        volume, sample_surface(model, std::min(options.samples, 4000), options.seed)));
     CardRoom room{options.card, options.margin};
     const Result<std::vector<Alignment>> aligned =
         alignment_candidates(model, coarse, options.up, options.facing, room);

@@ -29,6 +29,20 @@ OuterSurface outer_surface(const OccupancyGrid& volume, const SurfaceSamples& sa
     return out;
 }
 
+SurfaceSamples outer_only(const OuterSurface& surface)
+{
+    if (surface.inner_count == int(surface.samples.points.size()))
+        return surface.samples;
+    SurfaceSamples out;
+    out.spacing = surface.samples.spacing;
+    for (size_t i = 0; i < surface.samples.points.size(); ++i)
+        if (!surface.inner[i]) {
+            out.points.push_back(surface.samples.points[i]);
+            out.normals.push_back(surface.samples.normals[i]);
+        }
+    return out;
+}
+
 namespace {
 
 /// Triangles joined across edges that exactly two of them share, labelled by component; and

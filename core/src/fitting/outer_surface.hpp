@@ -20,6 +20,11 @@ struct OuterSurface {
 /// it is kept as it is (an outer face, or a sheet thinner than the step, open on both sides).
 OuterSurface outer_surface(const OccupancyGrid& volume, const SurfaceSamples& samples);
 
+/// The outer samples alone (all of them when every one is inner), at the same spacing: what the
+/// model looks like from outside. A building's floor slabs, every storey a plane across the whole
+/// footprint, would mirror onto each other under any plane and make a false mirror plane.
+SurfaceSamples outer_only(const OuterSurface& surface);
+
 /// The model with its faces turned to face out (`turned` counts them), so that a part whose
 /// winding the file or the cleaning reversed faces out again and the model's up and flat ends
 /// read true: a closed part (joined across edges two triangles share) turns whole when it bounds

@@ -100,4 +100,28 @@ bool overlaps(const Prism& m, const PrismHost& h, const std::vector<Eigen::Align
     return false;
 }
 
+void stop_at_taken(Prism& m, const PrismHost& h, const std::vector<Eigen::AlignedBox3d>& taken,
+                   double seed_a0, double seed_a1, double eps)
+{
+    Eigen::AlignedBox3d box;
+    for (const Vec3& c : m.corners(h))
+        box.extend(c);
+    for (const auto& t : taken) {
+        const Vec3 lo = box.min().cwiseMax(t.min()), hi = box.max().cwiseMin(t.max());
+        if (!((hi - lo).array() > eps).all())
+            continue;
+        // The taken box's stretch along the hinge, from its corners.
+        double t0 = 1e300, t1 = -1e300;
+        for (int k = 0; k < 8; ++k) {
+            const double a = (t.corner(Eigen::AlignedBox3d::CornerType(k)) - h.origin).dot(h.axis);
+            t0 = std::min(t0, a);
+            t1 = std::max(t1, a);
+        }
+        if (t1 <= seed_a0 + eps)
+            m.a0 = std::max(m.a0, t1);
+        else if (t0 >= seed_a1 - eps)
+            m.a1 = std::min(m.a1, t0);
+    }
+}
+
 } // namespace popup::prism_search

@@ -26,4 +26,12 @@ bool outside_model(const Prism& m, const PrismHost& h, const Eigen::AlignedBox3d
 bool overlaps(const Prism& m, const PrismHost& h, const std::vector<Eigen::AlignedBox3d>& taken,
               double eps);
 
+/// Shortens a prism grown along its hinge back to the accepted ones it reached: each of `taken`
+/// it overlaps wholly before `seed_a0` or wholly after `seed_a1` (the stretch its drawn samples
+/// span) ends it there. Past an accepted box the same top and sides belong to that box's
+/// part (a low block whose front lines up with a taller one's); growing into it would make
+/// the candidate overlap and be lost.
+void stop_at_taken(Prism& m, const PrismHost& h, const std::vector<Eigen::AlignedBox3d>& taken,
+                   double seed_a0, double seed_a1, double eps);
+
 } // namespace popup::prism_search

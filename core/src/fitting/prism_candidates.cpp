@@ -67,7 +67,9 @@ void draw_candidates(const Round& round, const DrawInputs& in, std::mt19937_64& 
     rect.a0 = std::min(l[p1].a, l[p2].a);
     rect.a1 = std::max(l[p1].a, l[p2].a);
     if (fit_host(host, rect, in.eps, in.min_part)) {
+        const double seed_a0 = rect.a0, seed_a1 = rect.a1;
         in.search.extend_along(rect, round.sub[h], round.gap, host);
+        stop_at_taken(rect, host, in.taken, seed_a0, seed_a1, in.eps);
         if (fit_host(host, rect, in.eps, in.min_part)) {
             const double sc = in.search.score(rect, round.sub[h], round.grd[h], host.flat,
                                               round.scale, found.best_rect.score);
@@ -94,7 +96,9 @@ void draw_candidates(const Round& round, const DrawInputs& in, std::mt19937_64& 
     tri.a1 = std::max({l[p1].a, l[p2].a, l[p3].a, l[p4].a});
     if (!fit_host(host, tri, in.eps, in.min_part))
         return;
+    const double seed_a0 = tri.a0, seed_a1 = tri.a1;
     in.search.extend_along(tri, round.sub[h], round.gap, host);
+    stop_at_taken(tri, host, in.taken, seed_a0, seed_a1, in.eps);
     if (!fit_host(host, tri, in.eps, in.min_part))
         return;
     const double sc =
