@@ -82,3 +82,19 @@ def test_three_blocks_get_a_mechanism_each(tmp_path):
     assert len(report["mechanisms"]) >= 3
     # The bulk box measured 0.0316 of the diagonal (docs/SHAPE_RESULTS.md, before).
     assert report["metrics"]["hausdorff"]["model_to_popup"]["mean"] <= 0.016
+
+
+def test_a_bust_is_shoulders_and_a_head(tmp_path):
+    """A scanned bust (corpus_objects, no flat face a prism rests on) falls back on its bulk: two
+    boxes, the head's on the shoulders' top, closer to the model than the one box of its bulk
+    (0.0257 of the diagonal, docs/SHAPE_RESULTS.md before)."""
+    model = make_corpus.write_corpus_model("bust_scan", str(tmp_path / "bust.ply"))
+    out = tmp_path / "fit"
+    proc = run_design("fit", model, out)
+    report = read_report(out)
+    assert proc.returncode == 0, proc.stderr
+    assert report["sheets_ok"] is True
+    kinds = [(m["type"], m["host"]) for m in report["mechanisms"]]
+    assert kinds == [("box_fold", "central fold"), ("box_fold", "B1.top")]
+    assert any("two box folds" in r["reason"] for r in report["repairs"])
+    assert report["metrics"]["hausdorff"]["model_to_popup"]["mean"] <= 0.0235

@@ -13,6 +13,7 @@ design_steps.py.
 
 import math
 import os
+import shutil
 
 from popupwb import option_fields
 from popupwb.cli import design_steps as steps
@@ -153,11 +154,37 @@ def run(args):
     report = _report(common, result, design, stages, files)
     valid = design["validity"]["valid"] and result.pops_up
     status = steps.sheets_of_valid_design(args, paper, report, valid, files, stages, say)
+    if _outlines_broke_the_sheets(status, valid, result, files):
+        # The round trip found an outlined piece off the design (docs/DESIGN.md, "When outlined
+        # sheets do not verify"): the same mechanisms without outlines, said in the report.
+        say("the outlined design's sheets did not verify: the same design without outlines")
+        shutil.rmtree(files.pop("sheets"), ignore_errors=True)
+        options.outlines = False
+        result = fit_run.fit(model, options)
+        stages.add(result.timings.stages)
+        design = _write_design(args, result, model, options, stages, files, say)
+        report = _report(common, result, design, stages, files)
+        report["repairs"].append(_OUTLINES_DROPPED)
+        valid = design["validity"]["valid"] and result.pops_up
+        status = steps.sheets_of_valid_design(args, paper, report, valid, files, stages, say)
     status = steps.finish(args, report, status, files, stages, say, _print_summary)
     if not result.mechanisms:
         print(f"no mechanism could be fitted to {args.model}")
         return EXIT_INVALID
     return status
+
+
+_OUTLINES_DROPPED = {
+    "mechanism": "outlines",
+    "action": "dropped",
+    "reason": "the cutting sheets of the outlined design did not verify (the round trip found a "
+    "piece off the design): the same mechanisms without the model's outlines",
+}
+
+
+def _outlines_broke_the_sheets(status, valid, result, files):
+    """A valid design with outlines whose written sheets did not verify."""
+    return status != steps.EXIT_VALID and valid and "sheets" in files and bool(result.profiles)
 
 
 def _write_design(args, result, model, options, stages, files, say):

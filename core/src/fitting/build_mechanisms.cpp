@@ -6,10 +6,34 @@
 #include <string>
 #include <utility>
 
+#include "bulk_stack.hpp"
 #include "design_distance.hpp"
 #include "popup/fitting/bulk_prism.hpp"
+#include "popup/fitting/prism_ransac.hpp"
 
 namespace popup {
+namespace {
+
+/// The bulk's stack replaces the one box when it lies a tenth closer to the samples or more.
+constexpr double kStackGain = 0.9;
+
+/// A fit of the bulk's boxes alone: the first on the card's hinge, the next (if any) on its top.
+RansacResult bulk_design(const PrismHost& card, const std::vector<Prism>& boxes,
+                         const SurfaceSamples& samples, long draws)
+{
+    RansacResult fit;
+    fit.hosts = {card};
+    fit.prisms = boxes;
+    if (boxes.size() > 1)
+        offer_box_pairs(boxes.front(), 0, fit.hosts);
+    fit.owner.assign(samples.points.size(), -1);
+    fit.on_base.assign(samples.points.size(), false);
+    fit.on_principal.assign(samples.points.size(), false);
+    fit.draws = draws;
+    return fit;
+}
+
+} // namespace
 
 BuiltMechanisms build_mechanisms(RansacResult fit, const SurfaceSamples& samples,
                                  const FitOptions& options, const CancelFlag* cancel,
@@ -67,18 +91,29 @@ BuiltMechanisms build_mechanisms(RansacResult fit, const SurfaceSamples& samples
         // The first design's repairs were of mechanisms that are gone: only the reason stays.
         r.repairs.resize(repairs_before);
         r.diagnostics.resize(warnings_before);
-        RansacResult replaced;
-        replaced.hosts = {fit.hosts.front()};
-        replaced.prisms = {bulk.prism};
-        replaced.owner.assign(samples.points.size(), -1);
-        replaced.on_base.assign(samples.points.size(), false);
-        replaced.on_principal.assign(samples.points.size(), false);
-        replaced.draws = fit.draws;
         const size_t found = fit.prisms.size();
-        fit = std::move(replaced);
+        const long draws = fit.draws;
         r.repairs.push_back({"primitives", "replaced",
                              std::to_string(found) + " fitted; " + why +
                                  ": the model's bulk is one box fold instead"});
+        // Two boxes, one on the other's top, when they lie a tenth closer to the model than
+        // one (docs/MATH.md, "The model's bulk") and make a valid design; else the one box.
+        const std::optional<BulkStack> stack =
+            bulk_stack(samples, fit.hosts.front(), options.min_part_mm, bulk);
+        if (stack && stack->mean_distance < kStackGain * bulk.mean_distance) {
+            fit = bulk_design(fit.hosts.front(), {stack->lower, stack->upper}, samples, draws);
+            outcome = plan_and_build(fit);
+            if (outcome.valid &&
+                std::all_of(outcome.kept.begin(), outcome.kept.end(), [](bool k) { return k; })) {
+                r.repairs[repairs_before].reason =
+                    std::to_string(found) + " fitted; " + why +
+                    ": the model's bulk is two box folds instead, one on the other's top";
+                return {std::move(fit), std::move(plans), std::move(outcome)};
+            }
+            r.repairs.resize(repairs_before + 1);
+            r.diagnostics.resize(warnings_before);
+        }
+        fit = bulk_design(fit.hosts.front(), {bulk.prism}, samples, draws);
         outcome = plan_and_build(fit);
     }
     return {std::move(fit), std::move(plans), std::move(outcome)};

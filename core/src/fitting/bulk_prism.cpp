@@ -3,49 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "bulk_geometry.hpp"
+
 namespace popup {
-namespace {
-
-struct Point {
-    double a, s, t; ///< along the hinge, across, up (the host's coordinates)
-};
-
-struct Box {
-    double a0, a1, d, h;
-};
-
-/// Distance from p to the surface of the box [a0, a1] x [-d, d] x [0, h] or to the page t = 0.
-double distance(const Box& b, const Point& p)
-{
-    const double page = std::abs(p.t);
-    const double da = std::max({b.a0 - p.a, 0.0, p.a - b.a1});
-    const double ds = std::max(std::abs(p.s) - b.d, 0.0);
-    const double dt = std::max({-p.t, 0.0, p.t - b.h});
-    double to_box;
-    if (da > 0 || ds > 0 || dt > 0)
-        to_box = std::sqrt(da * da + ds * ds + dt * dt);
-    else
-        to_box = std::min({p.a - b.a0, b.a1 - p.a, b.d - std::abs(p.s), b.h - p.t});
-    return std::min(to_box, page);
-}
-
-double mean_distance(const Box& b, const std::vector<Point>& points)
-{
-    double sum = 0;
-    for (const Point& p : points)
-        sum += distance(b, p);
-    return points.empty() ? 0.0 : sum / double(points.size());
-}
-
-/// `count` + 1 evenly spaced quantiles of v (sorted on return), the minimum and maximum included.
-std::vector<double> quantiles(std::vector<double> v, int count)
-{
-    std::sort(v.begin(), v.end());
-    std::vector<double> q;
-    for (int i = 0; i <= count; ++i)
-        q.push_back(v[size_t(std::llround(double(i) / count * double(v.size() - 1)))]);
-    return q;
-}
+namespace bulk {
 
 std::vector<Point> points_on(const SurfaceSamples& samples, const PrismHost& card, size_t at_most)
 {
@@ -56,6 +17,36 @@ std::vector<Point> points_on(const SurfaceSamples& samples, const PrismHost& car
         out.push_back({q.dot(card.axis), q.dot(card.across), q.dot(card.up)});
     }
     return out;
+}
+
+std::vector<double> quantiles(std::vector<double> v, int count)
+{
+    std::sort(v.begin(), v.end());
+    std::vector<double> q;
+    for (int i = 0; i <= count; ++i)
+        q.push_back(v[size_t(std::llround(double(i) / count * double(v.size() - 1)))]);
+    return q;
+}
+
+} // namespace bulk
+
+namespace {
+
+using bulk::Box;
+using bulk::Point;
+
+/// Distance from p to the surface of the box or to the page t = 0.
+double distance(const Box& b, const Point& p)
+{
+    return std::min(bulk::to_surface(b, p), std::abs(p.t));
+}
+
+double mean_distance(const Box& b, const std::vector<Point>& points)
+{
+    double sum = 0;
+    for (const Point& p : points)
+        sum += distance(b, p);
+    return points.empty() ? 0.0 : sum / double(points.size());
 }
 
 /// The box within the card and at least min_part in every dimension.
@@ -83,7 +74,7 @@ BulkBox bulk_box(const SurfaceSamples& samples, const PrismHost& card, double mi
     Prism& m = out.prism;
     m.kind = Prism::Kind::rectangular;
     m.host = 0;
-    const std::vector<Point> points = points_on(samples, card, 3000);
+    const std::vector<Point> points = bulk::points_on(samples, card, 3000);
     if (points.empty())
         return out;
     std::vector<double> along, across, up;
@@ -93,8 +84,9 @@ BulkBox bulk_box(const SurfaceSamples& samples, const PrismHost& card, double mi
         up.push_back(std::max(p.t, 0.0));
     }
     constexpr int kSteps = 40;
-    const std::vector<double> qa = quantiles(along, kSteps), qs = quantiles(across, kSteps),
-                              qt = quantiles(up, kSteps);
+    const std::vector<double> qa = bulk::quantiles(along, kSteps),
+                              qs = bulk::quantiles(across, kSteps),
+                              qt = bulk::quantiles(up, kSteps);
     // Start from the middle half of the samples along and the median across and up.
     Box best = feasible({qa[kSteps / 4], qa[3 * kSteps / 4], qs[kSteps / 2], qt[kSteps / 2]}, card,
                         min_part);

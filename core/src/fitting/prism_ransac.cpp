@@ -14,44 +14,6 @@ namespace {
 
 using namespace prism_search;
 
-/// The pairs a box offers (mirrors build_parallel_box: top over its middle, a side and the page
-/// beyond it on each side).
-void offer_box_pairs(const Prism& m, int index, std::vector<PrismHost>& hosts)
-{
-    const PrismHost h = hosts[m.host];
-    const std::string name = "P" + std::to_string(index + 1);
-    const Vec3 start = h.origin + m.a0 * h.axis;
-    const double d = m.s1;
-    PrismHost top;
-    top.name = name + ".top";
-    top.parent = index;
-    top.part = "top";
-    top.origin = start + m.height * h.up;
-    top.axis = h.axis;
-    top.across = h.across;
-    top.up = h.up;
-    top.length = m.a1 - m.a0;
-    top.across_min = -d;
-    top.across_max = d;
-    hosts.push_back(top);
-    for (int side = 0; side < 2; ++side) {
-        PrismHost p;
-        p.parent = index;
-        p.part = side == 0 ? "side_ground" : "side_backdrop";
-        p.name = name + "." + p.part;
-        p.flat = false;
-        p.axis = h.axis;
-        p.across = side == 0 ? h.across : Vec3(-h.across);
-        p.up = h.up;
-        p.origin = start + d * p.across;
-        p.length = m.a1 - m.a0;
-        p.across_max = side == 0 ? h.across_max - d : -h.across_min - d;
-        p.up_max = m.height;
-        if (p.across_max > 0)
-            hosts.push_back(p);
-    }
-}
-
 /// Samples on a host's plane facing it (the model's base on the card, a box standing on
 /// another's top) are the paper itself: no prism needs to explain them.
 void mark_base(const PrismHost& h, const std::vector<Local>& locals, double eps,
@@ -149,6 +111,42 @@ void accept_prism(Prism m, const std::vector<int>& remaining, const Search& sear
 }
 
 } // namespace
+
+void offer_box_pairs(const Prism& m, int index, std::vector<PrismHost>& hosts)
+{
+    const PrismHost h = hosts[m.host];
+    const std::string name = "P" + std::to_string(index + 1);
+    const Vec3 start = h.origin + m.a0 * h.axis;
+    const double d = m.s1;
+    PrismHost top;
+    top.name = name + ".top";
+    top.parent = index;
+    top.part = "top";
+    top.origin = start + m.height * h.up;
+    top.axis = h.axis;
+    top.across = h.across;
+    top.up = h.up;
+    top.length = m.a1 - m.a0;
+    top.across_min = -d;
+    top.across_max = d;
+    hosts.push_back(top);
+    for (int side = 0; side < 2; ++side) {
+        PrismHost p;
+        p.parent = index;
+        p.part = side == 0 ? "side_ground" : "side_backdrop";
+        p.name = name + "." + p.part;
+        p.flat = false;
+        p.axis = h.axis;
+        p.across = side == 0 ? h.across : Vec3(-h.across);
+        p.up = h.up;
+        p.origin = start + d * p.across;
+        p.length = m.a1 - m.a0;
+        p.across_max = side == 0 ? h.across_max - d : -h.across_min - d;
+        p.up_max = m.height;
+        if (p.across_max > 0)
+            hosts.push_back(p);
+    }
+}
 
 double draw_probability(double n, double N, int k, int hosts, int levels)
 {

@@ -14,6 +14,10 @@ namespace popup {
 RansacResult fit_prisms(const SurfaceSamples& samples, const PrismHost& card,
                         const RansacOptions& options);
 
+/// Appends the hosts a rectangular prism `m` (the `index`-th) on a flat host offers: its top
+/// (over its middle, first) and each side with the page beyond it (mirrors build_parallel_box).
+void offer_box_pairs(const Prism& m, int index, std::vector<PrismHost>& hosts);
+
 /// The probability that one localised minimal sample of k points draws a given shape of n of
 /// the N remaining samples when the search runs over `hosts` hosts and `levels` cell sizes:
 /// n / (4 · N · hosts · levels · 2^(k−1)) (a quarter of the samples inside a shape generate it).

@@ -1,0 +1,149 @@
+#include "bulk_stack.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "bulk_geometry.hpp"
+
+namespace popup {
+namespace {
+
+using bulk::Box;
+using bulk::Point;
+
+constexpr int kSteps = 40; ///< quantiles per coordinate, as bulk_box's
+
+/// The two boxes: the lower on the page, the upper from the lower's top up.
+struct Stack {
+    Box lower, upper;
+};
+
+double mean_distance(const Stack& k, const std::vector<Point>& points)
+{
+    Box upper = k.upper;
+    upper.t0 = k.lower.h;
+    double sum = 0;
+    for (const Point& p : points)
+        sum += std::min({bulk::to_surface(k.lower, p), bulk::to_surface(upper, p), std::abs(p.t)});
+    return points.empty() ? 0.0 : sum / double(points.size());
+}
+
+/// Within the card, every dimension at least min_part, the upper box on the lower's top.
+bool feasible(const Stack& k, const PrismHost& card, double min_part)
+{
+    const Box &lo = k.lower, &up = k.upper;
+    const double reach = std::min(card.across_max, -card.across_min);
+    return lo.a0 >= 0 && lo.a1 <= card.length && lo.a1 - lo.a0 >= min_part && lo.d <= reach &&
+           lo.h >= min_part && up.d >= min_part && up.d <= lo.d && up.a0 >= lo.a0 &&
+           up.a1 <= lo.a1 && up.a1 - up.a0 >= min_part && up.h - lo.h >= min_part;
+}
+
+double& parameter(Stack& k, int dim)
+{
+    Box& b = dim < 4 ? k.lower : k.upper;
+    const int d = dim % 4;
+    return d == 0 ? b.a0 : d == 1 ? b.a1 : d == 2 ? b.d : b.h;
+}
+
+/// Coordinate descent from `start` (each parameter in turn takes the candidate that lowers the
+/// mean most, until a round changes nothing); its cost in `cost`.
+Stack descend(Stack best, const std::vector<Point>& points,
+              const std::array<std::vector<double>, 3>& all,
+              const std::array<std::vector<double>, 3>& above, const PrismHost& card,
+              double min_part, double& best_cost)
+{
+    best_cost = mean_distance(best, points);
+    for (int round = 0; round < 12; ++round) {
+        bool moved = false;
+        for (int dim = 0; dim < 8; ++dim) {
+            const int coordinate = std::min(dim % 4, 2); // a0 and a1 both along
+            for (const auto* candidates : {&all[coordinate], &above[coordinate]})
+                for (double v : *candidates) {
+                    Stack k = best;
+                    parameter(k, dim) = v;
+                    if (!feasible(k, card, min_part))
+                        continue;
+                    const double cost = mean_distance(k, points);
+                    if (cost < best_cost - 1e-12) {
+                        best = k;
+                        best_cost = cost;
+                        moved = true;
+                    }
+                }
+        }
+        if (!moved)
+            break;
+    }
+    return best;
+}
+
+std::array<std::vector<double>, 3> quantiles_of(const std::vector<Point>& points, double above)
+{
+    std::vector<double> a, s, t;
+    for (const Point& p : points)
+        if (p.t > above) {
+            a.push_back(p.a);
+            s.push_back(std::abs(p.s));
+            t.push_back(std::max(p.t, 0.0));
+        }
+    if (a.empty())
+        return {};
+    return {bulk::quantiles(a, kSteps), bulk::quantiles(s, kSteps), bulk::quantiles(t, kSteps)};
+}
+
+} // namespace
+
+std::optional<BulkStack> bulk_stack(const SurfaceSamples& samples, const PrismHost& card,
+                                    double min_part, const BulkBox& single)
+{
+    const std::vector<Point> points = bulk::points_on(samples, card, 1500);
+    const Prism& m = single.prism;
+    const std::array<std::vector<double>, 3> all = quantiles_of(points, -1e300);
+    if (all[0].empty())
+        return std::nullopt;
+    // Starts: the lower box the single one cut at each of several heights of the samples, the
+    // upper box over the middle of the samples above the cut, up to their 90th percentile.
+    std::optional<Stack> best;
+    double best_cost = 1e300;
+    for (int cut :
+         {kSteps * 4 / 10, kSteps / 2, kSteps * 6 / 10, kSteps * 7 / 10, kSteps * 8 / 10}) {
+        const double h = all[2][size_t(cut)];
+        const std::array<std::vector<double>, 3> above = quantiles_of(points, h);
+        if (above[0].empty())
+            continue;
+        Stack start{{m.a0, m.a1, m.s1, h}, {}};
+        start.upper = {std::max(above[0][kSteps / 10], m.a0),
+                       std::min(above[0][9 * kSteps / 10], m.a1),
+                       std::min(std::max(above[1][kSteps / 2], min_part), m.s1),
+                       std::max(above[2][9 * kSteps / 10], h + min_part)};
+        if (!feasible(start, card, min_part))
+            continue;
+        double cost = 0;
+        const Stack k = descend(start, points, all, above, card, min_part, cost);
+        if (cost < best_cost) {
+            best = k;
+            best_cost = cost;
+        }
+    }
+    if (!best)
+        return std::nullopt;
+    BulkStack out;
+    out.lower = single.prism;
+    out.lower.a0 = best->lower.a0;
+    out.lower.a1 = best->lower.a1;
+    out.lower.s0 = -best->lower.d;
+    out.lower.s1 = best->lower.d;
+    out.lower.height = best->lower.h;
+    out.upper.kind = Prism::Kind::rectangular;
+    out.upper.host = 1;
+    out.upper.a0 = best->upper.a0 - best->lower.a0;
+    out.upper.a1 = best->upper.a1 - best->lower.a0;
+    out.upper.s0 = -best->upper.d;
+    out.upper.s1 = best->upper.d;
+    out.upper.height = best->upper.h - best->lower.h;
+    out.mean_distance = best_cost;
+    return out;
+}
+
+} // namespace popup

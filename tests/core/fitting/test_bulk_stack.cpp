@@ -1,0 +1,52 @@
+// The model's bulk as two boxes, one on the other's top (bulk_stack): a bust's shoulders and
+// head, recovered from samples of two such boxes.
+#include <gtest/gtest.h>
+
+#include "fitting/bulk_stack.hpp"
+#include "fitting/synthetic_models.hpp"
+
+using namespace popup;
+using namespace popup::testing;
+
+namespace {
+
+PrismHost card_hinge()
+{
+    PrismHost card;
+    card.name = "central fold";
+    card.length = 210;
+    card.across_min = -148;
+    card.across_max = 148;
+    return card;
+}
+
+} // namespace
+
+TEST(BulkStack, RecoversShouldersAndAHead)
+{
+    // Card frame: y along the fold (a), x across (s), z up (t). Shoulders 80 long, 40 deep and
+    // 20 high; a head 30 long, 24 deep and 40 high on them, 40 from their start.
+    const ModelMesh bust =
+        join({box_mesh({-20, 50, 0}, {20, 130, 20}), box_mesh({-12, 90, 20}, {12, 120, 60})});
+    const SurfaceSamples samples = sample_surface(bust, 12000, 1);
+    const BulkBox single = bulk_box(samples, card_hinge(), 11.1);
+    const std::optional<BulkStack> stack = bulk_stack(samples, card_hinge(), 11.1, single);
+    ASSERT_TRUE(stack.has_value());
+    // The shoulders' faces each hold more samples than a quantile step of all samples, so the
+    // descent lands on them exactly (as BulkBox.RecoversABoxStandingOnTheFold); the head's
+    // sides are candidates only as far as a quantile of the samples above a cut meets them.
+    EXPECT_NEAR(stack->lower.a0, 50, 1e-9);
+    EXPECT_NEAR(stack->lower.a1, 130, 1e-9);
+    EXPECT_NEAR(stack->lower.s1, 20, 1e-9);
+    EXPECT_NEAR(stack->lower.height, 20, 1e-9);
+    // The head on the shoulders' top: along from the shoulders' start (90 − 50, 120 − 50).
+    EXPECT_EQ(stack->upper.host, 1);
+    EXPECT_NEAR(stack->upper.a0, 40, 1e-9);
+    EXPECT_NEAR(stack->upper.a1, 70, 1e-9);
+    EXPECT_NEAR(stack->upper.s0, -12, 0.5);
+    EXPECT_NEAR(stack->upper.s1, 12, 0.5);
+    EXPECT_NEAR(stack->upper.height, 40, 1e-9);
+    // Within the head's half-millimetre on its sides, against several for the one box.
+    EXPECT_LT(stack->mean_distance, 0.1);
+    EXPECT_GT(single.mean_distance, 1.0);
+}
