@@ -96,8 +96,8 @@ BuiltMechanisms build_mechanisms(RansacResult fit, const SurfaceSamples& samples
         r.repairs.push_back({"primitives", "replaced",
                              std::to_string(found) + " fitted; " + why +
                                  ": the model's bulk is one box fold instead"});
-        // Two boxes, one on the other's top, when they lie a tenth closer to the model than
-        // one (docs/MATH.md, "The model's bulk") and make a valid design; else the one box.
+        // A box and a box or a tent on its top, when they lie a tenth closer to the model than
+        // one box (docs/MATH.md, "The model's bulk") and make a valid design; else the one box.
         const std::optional<BulkStack> stack =
             bulk_stack(samples, fit.hosts.front(), options.min_part_mm, bulk);
         if (stack && stack->mean_distance < kStackGain * bulk.mean_distance) {
@@ -105,9 +105,11 @@ BuiltMechanisms build_mechanisms(RansacResult fit, const SurfaceSamples& samples
             outcome = plan_and_build(fit);
             if (outcome.valid &&
                 std::all_of(outcome.kept.begin(), outcome.kept.end(), [](bool k) { return k; })) {
+                const bool roof = stack->upper.kind == Prism::Kind::triangular;
                 r.repairs[repairs_before].reason =
-                    std::to_string(found) + " fitted; " + why +
-                    ": the model's bulk is two box folds instead, one on the other's top";
+                    std::to_string(found) + " fitted; " + why + ": the model's bulk is " +
+                    (roof ? "a box fold and a tent on its top" : "two box folds") +
+                    " instead, one on the other's top";
                 return {std::move(fit), std::move(plans), std::move(outcome)};
             }
             r.repairs.resize(repairs_before + 1);

@@ -14,18 +14,37 @@ using bulk::Point;
 
 constexpr int kSteps = 40; ///< quantiles per coordinate, as bulk_box's
 
-/// The two boxes: the lower on the page, the upper from the lower's top up.
+/// The lower box on the page and the upper part from its top up: a box, or a tent (a roof)
+/// whose feet are at ±d and whose ridge runs over the hinge at h.
 struct Stack {
     Box lower, upper;
+    bool tent = false;
 };
+
+double to_segment(double s, double t, double s0, double t0, double s1, double t1)
+{
+    const double es = s1 - s0, et = t1 - t0;
+    const double u = std::clamp(((s - s0) * es + (t - t0) * et) / (es * es + et * et), 0.0, 1.0);
+    return std::hypot(s - s0 - u * es, t - t0 - u * et);
+}
+
+/// Distance from p to the tent's two slopes from (±d, base) to (0, h), along a from a0 to a1.
+double to_tent(const Box& b, double base, const Point& p)
+{
+    const double da = std::max({b.a0 - p.a, 0.0, p.a - b.a1});
+    const double section = to_segment(std::abs(p.s), p.t, b.d, base, 0.0, b.h);
+    return std::hypot(da, section);
+}
 
 double mean_distance(const Stack& k, const std::vector<Point>& points)
 {
     Box upper = k.upper;
     upper.t0 = k.lower.h;
     double sum = 0;
-    for (const Point& p : points)
-        sum += std::min({bulk::to_surface(k.lower, p), bulk::to_surface(upper, p), std::abs(p.t)});
+    for (const Point& p : points) {
+        const double up = k.tent ? to_tent(upper, k.lower.h, p) : bulk::to_surface(upper, p);
+        sum += std::min({bulk::to_surface(k.lower, p), up, std::abs(p.t)});
+    }
     return points.empty() ? 0.0 : sum / double(points.size());
 }
 
@@ -34,8 +53,10 @@ bool feasible(const Stack& k, const PrismHost& card, double min_part)
 {
     const Box &lo = k.lower, &up = k.upper;
     const double reach = std::min(card.across_max, -card.across_min);
+    // A tent's feet lie strictly inside its host's pages (prism_candidates' 0.5 %).
+    const double widest = k.tent ? 0.995 * lo.d : lo.d;
     return lo.a0 >= 0 && lo.a1 <= card.length && lo.a1 - lo.a0 >= min_part && lo.d <= reach &&
-           lo.h >= min_part && up.d >= min_part && up.d <= lo.d && up.a0 >= lo.a0 &&
+           lo.h >= min_part && up.d >= min_part && up.d <= widest && up.a0 >= lo.a0 &&
            up.a1 <= lo.a1 && up.a1 - up.a0 >= min_part && up.h - lo.h >= min_part;
 }
 
@@ -106,26 +127,30 @@ std::optional<BulkStack> bulk_stack(const SurfaceSamples& samples, const PrismHo
     // upper box over the middle of the samples above the cut, up to their 90th percentile.
     std::optional<Stack> best;
     double best_cost = 1e300;
-    for (int cut :
-         {kSteps * 4 / 10, kSteps / 2, kSteps * 6 / 10, kSteps * 7 / 10, kSteps * 8 / 10}) {
-        const double h = all[2][size_t(cut)];
-        const std::array<std::vector<double>, 3> above = quantiles_of(points, h);
-        if (above[0].empty())
-            continue;
-        Stack start{{m.a0, m.a1, m.s1, h}, {}};
-        start.upper = {std::max(above[0][kSteps / 10], m.a0),
-                       std::min(above[0][9 * kSteps / 10], m.a1),
-                       std::min(std::max(above[1][kSteps / 2], min_part), m.s1),
-                       std::max(above[2][9 * kSteps / 10], h + min_part)};
-        if (!feasible(start, card, min_part))
-            continue;
-        double cost = 0;
-        const Stack k = descend(start, points, all, above, card, min_part, cost);
-        if (cost < best_cost) {
-            best = k;
-            best_cost = cost;
+    for (bool tent : {false, true})
+        for (int cut :
+             {kSteps * 4 / 10, kSteps / 2, kSteps * 6 / 10, kSteps * 7 / 10, kSteps * 8 / 10}) {
+            const double h = all[2][size_t(cut)];
+            const std::array<std::vector<double>, 3> above = quantiles_of(points, h);
+            if (above[0].empty())
+                continue;
+            Stack start{{m.a0, m.a1, m.s1, h}, {}, tent};
+            start.upper = {std::max(above[0][kSteps / 10], m.a0),
+                           std::min(above[0][9 * kSteps / 10], m.a1),
+                           std::min(std::max(above[1][kSteps / 2], min_part), m.s1),
+                           std::max(above[2][9 * kSteps / 10], h + min_part)};
+            if (tent) // a roof's feet at the top's edges, its ridge at the highest samples
+                start.upper = {start.upper.a0, start.upper.a1, 0.995 * m.s1,
+                               std::max(above[2][kSteps], h + min_part)};
+            if (!feasible(start, card, min_part))
+                continue;
+            double cost = 0;
+            const Stack k = descend(start, points, all, above, card, min_part, cost);
+            if (cost < best_cost) {
+                best = k;
+                best_cost = cost;
+            }
         }
-    }
     if (!best)
         return std::nullopt;
     BulkStack out;
@@ -135,7 +160,8 @@ std::optional<BulkStack> bulk_stack(const SurfaceSamples& samples, const PrismHo
     out.lower.s0 = -best->lower.d;
     out.lower.s1 = best->lower.d;
     out.lower.height = best->lower.h;
-    out.upper.kind = Prism::Kind::rectangular;
+    out.upper.kind = best->tent ? Prism::Kind::triangular : Prism::Kind::rectangular;
+    out.upper.apex_s = 0;
     out.upper.host = 1;
     out.upper.a0 = best->upper.a0 - best->lower.a0;
     out.upper.a1 = best->upper.a1 - best->lower.a0;

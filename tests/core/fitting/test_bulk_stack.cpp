@@ -50,3 +50,31 @@ TEST(BulkStack, RecoversShouldersAndAHead)
     EXPECT_LT(stack->mean_distance, 0.1);
     EXPECT_GT(single.mean_distance, 1.0);
 }
+
+TEST(BulkStack, AHouseGetsATentRoof)
+{
+    // Walls 80 long, 40 deep and 25 high; a gable roof over them, its ridge 15 above the eaves.
+    const ModelMesh house =
+        join({box_mesh({-20, 50, 0}, {20, 130, 25}),
+              extrude_section({Vec2(-20, 25), Vec2(20, 25), Vec2(0, 40)}, 50, 130)});
+    const SurfaceSamples samples = sample_surface(house, 12000, 1);
+    const BulkBox single = bulk_box(samples, card_hinge(), 11.1);
+    const std::optional<BulkStack> stack = bulk_stack(samples, card_hinge(), 11.1, single);
+    ASSERT_TRUE(stack.has_value());
+    EXPECT_NEAR(stack->lower.height, 25, 1e-9);
+    EXPECT_NEAR(stack->lower.s1, 20, 1e-9);
+    // A tent on the walls' top: its feet just inside the eaves (half a percent, as a fitted
+    // tent's), its ridge over the hinge, about as long as the walls (a tent has no gable ends of
+    // paper, so samples on the gables pull its ends in by a few millimetres).
+    EXPECT_EQ(stack->upper.kind, Prism::Kind::triangular);
+    EXPECT_EQ(stack->upper.host, 1);
+    EXPECT_NEAR(stack->upper.a0, 0, 5.0);
+    EXPECT_NEAR(stack->upper.a1, 80, 5.0);
+    EXPECT_NEAR(stack->upper.s1, 20, 0.5);
+    EXPECT_LE(stack->upper.s1, 0.995 * 20 + 1e-12);
+    EXPECT_DOUBLE_EQ(stack->upper.s0, -stack->upper.s1);
+    EXPECT_DOUBLE_EQ(stack->upper.apex_s, 0);
+    EXPECT_NEAR(stack->upper.height, 15, 0.5);
+    EXPECT_LT(stack->mean_distance, 0.2);
+    EXPECT_LT(stack->mean_distance, 0.9 * single.mean_distance);
+}
