@@ -178,25 +178,6 @@ def save_design(doc, out, files):
 # --- sheets, report, exit code --------------------------------------------------------------
 
 
-def preload_sheet_writers():
-    """Starts importing the sheets' writers (reportlab, svgwrite, PIL: a few tenths of a second)
-    in a thread, to run on the other core while the core reads, cleans and fits the model with
-    the GIL released. The sheets import them as before: at once when done here, else waiting for
-    this import; one that fails here fails there again, with its own message."""
-    import threading
-
-    def load():
-        try:
-            import popupwb.sheets.export  # noqa: F401
-            import popupwb.sheets.print_artwork  # noqa: F401
-        except Exception:  # said where the sheets import it
-            pass
-
-    thread = threading.Thread(target=load, name="PopUp sheet writers import", daemon=False)
-    thread.start()
-    return thread
-
-
 def write_sheets(args, paper, report, files, stages, say):
     """`popup sheet DIR/design.FCStd --out DIR/sheets --paper PAPER`, through cmd_sheet itself.
     Sheets that cannot be laid out (a piece larger than the paper) are the sheets' error, not

@@ -105,7 +105,6 @@ def run(args):
     steps.check_out_and_input(args, args.model)
 
     stages = fit_run.Stages(say)
-    steps.preload_sheet_writers()
     with stages.stage("load", f"reading {args.model}"):
         with stdout_to_stderr():
             if is_document(args.model):
