@@ -14,6 +14,9 @@ namespace {
 
 constexpr int faces_tried = 3; // the largest drawn faces propose motions
 constexpr int refinements = 4;
+// Pairs times corners from which the pairs are refined on two threads: below it (most pieces,
+// a few dozen pairs of a handful of corners) starting a thread costs more than it saves.
+constexpr std::size_t kParallelCorners = 20000;
 
 Motion2 turn_onto(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d)
 {
@@ -200,7 +203,8 @@ std::vector<Registration> register_piece(const std::vector<Loop2>& patches,
         }
     }
 
-    // Each pair's motion, refined on its own: two pairs at a time (two cores), taken in order.
+    // Each pair's motion, refined on its own: two pairs at a time (two cores) when there are
+    // many, taken in order.
     std::vector<std::pair<double, Registration>> refined(pairs.size());
     std::atomic<std::size_t> next_pair{0};
     auto refine_next = [&] {
@@ -224,7 +228,13 @@ std::vector<Registration> register_piece(const std::vector<Loop2>& patches,
             refined[i] = {score_of(f), {m, f.outline, f.worst}};
         }
     };
-    if (pairs.size() > 1) {
+    std::size_t corners = 0;
+    for (const Region& r : design) {
+        corners += r.outer.size();
+        for (const Loop2& h : r.holes)
+            corners += h.size();
+    }
+    if (pairs.size() * corners >= kParallelCorners) {
         std::future<void> other = std::async(std::launch::async, refine_next);
         refine_next();
         other.get();
