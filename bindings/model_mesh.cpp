@@ -86,6 +86,9 @@ void bind_model_mesh(py::module_& m)
         .def_readwrite("texture_height", &ModelMesh::texture_height)
         .def_readwrite("base_colour", &ModelMesh::base_colour)
         .def_readwrite("source", &ModelMesh::source, "file or object name, for messages")
+        .def(
+            "copy", [](const ModelMesh& mesh) { return ModelMesh(mesh); },
+            "An independent copy of the mesh (not of its Python attributes, such as .warnings)")
         .def("area", &ModelMesh::area)
         .def("diagonal", &ModelMesh::diagonal, "bounding-box diagonal (model units)")
         .def("__repr__", [](const ModelMesh& mesh) {

@@ -52,13 +52,12 @@ class Stages:
 
 def read_model(path):
     """(popupcore.ModelMesh, what was read) of a model file or an .FCStd's meshes and shapes."""
-    from popupwb.core import popupcore
-    from popupwb.model import model_source
+    from popupwb.model import model_file, model_source
 
     if path.lower().endswith(".fcstd"):
         model, labels = model_source.model_of_document(path)
         return model, f"{', '.join(labels)} of {os.path.basename(path)}"
-    model = popupcore.load_model(path)
+    model = model_file.load_model(path)  # kept for the sheets' artwork, which reads it again
     return model, os.path.basename(path)
 
 

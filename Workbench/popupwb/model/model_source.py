@@ -169,6 +169,7 @@ def card_model(card):
     for a card made by hand. The model file itself when it is still there (its texture and vertex
     colours are what artwork prints), else the mesh kept in the document (its shape only)."""
     from popupwb.core import popupcore
+    from popupwb.model import model_file
 
     source = getattr(card, "SourceModel", None)
     if source is None or not is_mesh_object(source):
@@ -177,7 +178,7 @@ def card_model(card):
     path = getattr(card, "SourceFile", "")
     if path and os.path.isfile(path) and not path.lower().endswith(".fcstd"):
         try:
-            return in_card_frame(popupcore.load_model(path), matrix)
+            return in_card_frame(model_file.load_model(path), matrix)
         except (ValueError, RuntimeError, OSError, AttributeError):
             pass  # changed or unreadable since: the kept mesh still has the shape
     points, facets = source.Mesh.Topology  # placed where the card is placed

@@ -14,11 +14,13 @@ for the two JSON files. No FreeCAD needed.
 import json
 import os
 import re
+from concurrent.futures import ThreadPoolExecutor
 
 from .dxf_checks import check_dxf
 from .dxf_writer import write_dxf
 from .instructions_pdf import write_instructions
 from .pdf_writer import write_pdf
+from .print_artwork import place_artwork
 from .sheet_options import core_options
 from .svg_writer import write_svg
 
@@ -98,23 +100,27 @@ def export_sheets(
     DXF stays a cut file."""
     os.makedirs(out_dir, exist_ok=True)
     remove_stale_sheet_files(out_dir)
-    paths = {
-        "dxf": write_dxf(sheet_set, os.path.join(out_dir, "sheets.dxf"), style, not_valid),
-        "svg": write_svg(
-            sheet_set, os.path.join(out_dir, "sheets.svg"), style, not_valid, artwork=artwork
-        ),
-        "pdf": write_pdf(
+    dxf = write_dxf(sheet_set, os.path.join(out_dir, "sheets.dxf"), style, not_valid)
+    place_artwork(sheet_set, artwork)  # each image read out of the core once, before the threads
+    # The PDF and the SVG compress their images outside the GIL: the PDF is written in a thread
+    # beside the SVG (each file as written alone).
+    with ThreadPoolExecutor(max_workers=1) as pool:
+        pdf = pool.submit(
+            write_pdf,
             sheet_set,
             os.path.join(out_dir, "sheets.pdf"),
             style,
             registration_marks,
             not_valid=not_valid,
             artwork=artwork,
-        ),
-        "instructions": write_instructions(
-            sheet_set, os.path.join(out_dir, "instructions.pdf"), style, not_valid=not_valid
-        ),
-    }
+        )
+        svg = write_svg(
+            sheet_set, os.path.join(out_dir, "sheets.svg"), style, not_valid, artwork=artwork
+        )
+        paths = {"dxf": dxf, "svg": svg, "pdf": pdf.result()}
+    paths["instructions"] = write_instructions(
+        sheet_set, os.path.join(out_dir, "instructions.pdf"), style, not_valid=not_valid
+    )
     document = sheet_set_document(sheet_set)
     paths["sheet_set"] = os.path.join(out_dir, "sheets.json")
     with open(paths["sheet_set"], "w") as f:

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
+#include <future>
 #include <iomanip>
 #include <limits>
 #include <optional>
@@ -391,8 +393,18 @@ Result<std::vector<PatchArtwork>> render_artworks(const ModelMesh& mesh,
         r.ok = false;
         return r;
     }
-    for (const Patch& patch : patches) {
-        Result<PatchArtwork> one = render_one(mesh, look.value, patch, options);
+    // Each patch's image is its own: two are rendered at a time (two cores), then taken in
+    // order, the first failure the answer as when they were rendered one after the other.
+    std::vector<Result<PatchArtwork>> rendered(patches.size());
+    std::atomic<std::size_t> next{0};
+    auto render_next = [&] {
+        for (std::size_t i; (i = next++) < patches.size();)
+            rendered[i] = render_one(mesh, look.value, patches[i], options);
+    };
+    std::future<void> other = std::async(std::launch::async, render_next);
+    render_next();
+    other.get();
+    for (Result<PatchArtwork>& one : rendered) {
         if (!one.ok) {
             r.fail_with(one.diagnostics);
             return r;

@@ -1,7 +1,9 @@
 #include "register_piece.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <future>
 
 #include "../../geometry/polygon_2d.hpp"
 #include "../clipper_ops.hpp"
@@ -12,6 +14,9 @@ namespace {
 
 constexpr int faces_tried = 3; // the largest drawn faces propose motions
 constexpr int refinements = 4;
+// Pairs times corners from which the pairs are refined on two threads: below it (most pieces,
+// a few dozen pairs of a handful of corners) starting a thread costs more than it saves.
+constexpr std::size_t kParallelCorners = 20000;
 
 Motion2 turn_onto(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d)
 {
@@ -198,32 +203,55 @@ std::vector<Registration> register_piece(const std::vector<Loop2>& patches,
         }
     }
 
+    // Each pair's motion, refined on its own: two pairs at a time (two cores) when there are
+    // many, taken in order.
+    std::vector<std::pair<double, Registration>> refined(pairs.size());
+    std::atomic<std::size_t> next_pair{0};
+    auto refine_next = [&] {
+        for (std::size_t i; (i = next_pair++) < pairs.size();) {
+            const auto& [e, d] = pairs[i];
+            Motion2 m = turn_onto(e.a, e.b, d.a, d.b);
+            Fit f = measure(m, design, folds, joints, drawn);
+            for (int k = 0; k < refinements && !f.from.empty(); ++k) {
+                // Pairs are in the design frame: fit the design onto its own nearest points,
+                // then compose with the motion that found them.
+                const Motion2 step = fit(f.from, f.onto);
+                Motion2 next;
+                next.rotation = m.rotation * step.rotation;
+                next.translation = m.rotation * step.translation + m.translation;
+                Fit g = measure(next, design, folds, joints, drawn);
+                if (score_of(g) > score_of(f))
+                    break;
+                m = next;
+                f = std::move(g);
+            }
+            refined[i] = {score_of(f), {m, f.outline, f.worst}};
+        }
+    };
+    std::size_t corners = 0;
+    for (const Region& r : design) {
+        corners += r.outer.size();
+        for (const Loop2& h : r.holes)
+            corners += h.size();
+    }
+    if (pairs.size() * corners >= kParallelCorners) {
+        std::future<void> other = std::async(std::launch::async, refine_next);
+        refine_next();
+        other.get();
+    } else {
+        refine_next();
+    }
     // Every distinct motion with its score; a symmetric piece fits equally well more than one way.
     std::vector<std::pair<double, Registration>> found;
-    for (const auto& [e, d] : pairs) {
-        Motion2 m = turn_onto(e.a, e.b, d.a, d.b);
-        Fit f = measure(m, design, folds, joints, drawn);
-        for (int k = 0; k < refinements && !f.from.empty(); ++k) {
-            // Pairs are in the design frame: fit the design onto its own nearest points,
-            // then compose with the motion that found them.
-            const Motion2 step = fit(f.from, f.onto);
-            Motion2 next;
-            next.rotation = m.rotation * step.rotation;
-            next.translation = m.rotation * step.translation + m.translation;
-            Fit g = measure(next, design, folds, joints, drawn);
-            if (score_of(g) > score_of(f))
-                break;
-            m = next;
-            f = std::move(g);
-        }
-        const double score = score_of(f);
+    for (const auto& [score, registration] : refined) {
+        const Motion2& m = registration.motion;
         const bool known = std::any_of(found.begin(), found.end(), [&](const auto& x) {
             const Motion2& o = x.second.motion;
             return (o.rotation - m.rotation).norm() < 1e-6 &&
                    (o.translation - m.translation).norm() < 1e-4;
         });
         if (!known)
-            found.push_back({score, {m, f.outline, f.worst}});
+            found.push_back({score, registration});
     }
     std::sort(found.begin(), found.end(),
               [](const auto& x, const auto& y) { return x.first < y.first; });
