@@ -68,14 +68,19 @@ Vec2 nearest_on(const Vec2& a, const Vec2& b, const Vec2& x)
 }
 
 /// The nearest pair of points between segment [a, b] (first) and the boundary of `shape`
-/// (second). Between two segments that do not cross, the nearest pair has an end of one of them.
+/// (second); of pairs as near within a micrometre, the one nearest the segment's middle (a
+/// bridge over a uniform gap stands in the middle). Between two segments that do not cross, the
+/// nearest pair has an end of one of them.
 std::pair<Vec2, Vec2> nearest_pair(const Vec2& a, const Vec2& b, const ClipperLib::Paths& shape)
 {
     std::pair<Vec2, Vec2> best{a, a};
     double best_d = 1e300;
+    const Vec2 middle = 0.5 * (a + b);
     auto consider = [&](const Vec2& on_fold, const Vec2& on_shape) {
-        const double d = (on_fold - on_shape).squaredNorm();
-        if (d < best_d) {
+        const double d = (on_fold - on_shape).norm();
+        const bool as_near = std::abs(d - best_d) <= 1e-3;
+        if ((d < best_d && !as_near) ||
+            (as_near && (on_fold - middle).norm() < (best.first - middle).norm())) {
             best_d = d;
             best = {on_fold, on_shape};
         }
@@ -86,6 +91,7 @@ std::pair<Vec2, Vec2> nearest_pair(const Vec2& a, const Vec2& b, const ClipperLi
             consider(nearest_on(a, b, p), p);
             consider(a, nearest_on(p, q, a));
             consider(b, nearest_on(p, q, b));
+            consider(middle, nearest_on(p, q, middle));
         }
     return best;
 }
