@@ -1,7 +1,10 @@
 #include "popup/fitting/fit_outlines.hpp"
 
 #include "../geometry/clipper_paths.hpp"
+#include "../geometry/polygon_2d.hpp"
+#include "../geometry/snap_onto_lines.hpp"
 #include "../model/millimetres.hpp"
+#include "fold_bridges.hpp"
 #include "glued_joints.hpp"
 #include "outline_support.hpp"
 #include "projected_faces.hpp"
@@ -105,6 +108,11 @@ bool lies_flat(const Scaffold& s, const FittedMechanism& m)
 constexpr double kSmallestCut = 1.5;
 constexpr double kCleanDistance =
     1e-3; ///< mm: outline vertices this near their neighbours' line go
+/// Paper narrower than twice this (mm) goes from an outline: no cutter makes it.
+constexpr double kFinestPaper = 0.25;
+/// Narrowest bridge (mm) that holds a part on a fold its silhouette leaves: twice the sheets'
+/// smallest feature, so the cut on either side of it can be made.
+constexpr double kBridgeWidth = 4 * kSmallestCut;
 
 /// `patch`'s paper (its outline minus its holes) in `frame`.
 ClipperLib::Paths paper_of(const Patch& patch, const ProfileFrame& frame)
@@ -144,6 +152,47 @@ ClipperLib::Paths region_of(const Profile& profile)
     return shape;
 }
 
+/// `paths` grown by `r` mm (shrunk when negative), corners mitred.
+ClipperLib::Paths grown(const ClipperLib::Paths& paths, double r)
+{
+    ClipperLib::Paths out;
+    ClipperLib::ClipperOffset o(4.0);
+    o.AddPaths(paths, ClipperLib::jtMiter, ClipperLib::etClosedPolygon);
+    o.Execute(out, r * clipper_scale);
+    return out;
+}
+
+/// `left` (Clipper paths, within the patch's `paper`) without its notches and spikes narrower than
+/// 2·kFinestPaper, as a tree: a scanned model's silhouette leaves some a tenth of a millimetre
+/// across. The kerf takes them, and the sheets' check then finds the design's corner at their tip
+/// off the cut piece. A closing then an opening, each kept within what it started from.
+ClipperLib::PolyTree without_hairs(const ClipperLib::Paths& left, const ClipperLib::Paths& paper)
+{
+    using namespace ClipperLib;
+    // Around the patch counts as paper: the next patch across a fold is, and a notch that meets
+    // the fold at a sharp angle is as thin there as one within the patch.
+    Paths around;
+    Clipper c;
+    c.AddPaths(grown(paper, 4 * kFinestPaper), ptSubject, true);
+    c.AddPaths(paper, ptClip, true);
+    c.Execute(ctDifference, around, pftNonZero, pftNonZero);
+    c.Clear();
+    c.AddPaths(left, ptSubject, true);
+    c.AddPaths(around, ptClip, true);
+    c.Execute(ctUnion, around, pftNonZero, pftNonZero);
+    c.Clear();
+    Paths closed;
+    c.AddPaths(grown(grown(around, kFinestPaper), -kFinestPaper), ptSubject, true);
+    c.AddPaths(paper, ptClip, true);
+    c.Execute(ctIntersection, closed, pftNonZero, pftNonZero);
+    c.Clear();
+    PolyTree out;
+    c.AddPaths(grown(grown(closed, -kFinestPaper), kFinestPaper), ptSubject, true);
+    c.AddPaths(closed, ptClip, true);
+    c.Execute(ctIntersection, out, pftNonZero, pftNonZero);
+    return out;
+}
+
 /// `paper` minus the parts of the region `shape` cuts away that are wider than 2·kSmallestCut
 /// (a morphological opening of the cut-away region, exact on Clipper's grid): slivers between
 /// a fitted part and a model a little smaller, and thin notches, stay paper. Its largest piece
@@ -177,7 +226,7 @@ std::optional<Profile> significant_cut(const ClipperLib::Paths& paper,
     // Growing back with mitred corners can reach past the region where an edge shorter than r
     // vanished in the shrink (a strip's end next to a slanted silhouette): what is cut stays
     // within what the shape leaves, so the shape is always kept.
-    PolyTree kept;
+    Paths left;
     {
         Clipper c;
         c.AddPaths(opened, ptSubject, true);
@@ -186,8 +235,9 @@ std::optional<Profile> significant_cut(const ClipperLib::Paths& paper,
         c.Clear();
         c.AddPaths(paper, ptSubject, true);
         c.AddPaths(opened, ptClip, true);
-        c.Execute(ctDifference, kept, pftNonZero, pftNonZero);
+        c.Execute(ctDifference, left, pftNonZero, pftNonZero);
     }
+    const PolyTree kept = without_hairs(left, paper);
     const PolyNode* best = nullptr;
     double best_area = 0;
     for (const PolyNode* n : kept.Childs) {
@@ -215,30 +265,105 @@ std::optional<Profile> significant_cut(const ClipperLib::Paths& paper,
     return out;
 }
 
-/// The outline part `patch` of `s` takes from `silhouette` (in `frame`): its significant cut,
-/// and where glued joints are kept (`crease` > 0) that cut again with the strips of paper its
-/// glued joints need united into it (glued_joints::joint_strips, the default sheets' tab
-/// depth deep). Empty when nothing is left to cut.
+/// `cut` with the paper `kept` united into it, cut again (significant_cut); `cut` when `kept`
+/// is empty.
+std::optional<Profile> with_kept(const ClipperLib::Paths& paper, const Profile& cut,
+                                 const ClipperLib::Paths& kept)
+{
+    using namespace ClipperLib;
+    if (kept.empty())
+        return cut;
+    Paths shape;
+    Clipper c;
+    c.AddPaths(region_of(cut), ptSubject, true);
+    c.AddPaths(kept, ptClip, true);
+    c.Execute(ctUnion, shape, pftNonZero, pftNonZero);
+    return significant_cut(paper, shape, cut.name);
+}
+
+/// `loop` with each edge whose two ends lie within `reach` of one of `lines` put onto that line
+/// (a vertex on two such lines, at their crossing). Lone vertices near a line stay: put on it,
+/// they would touch the next patch at a point, outside any fold.
+void edges_onto_lines(Loop2& loop, const std::vector<std::array<Vec2, 2>>& lines, double reach)
+{
+    const size_t n = loop.size();
+    std::vector<std::vector<const std::array<Vec2, 2>*>> on(n);
+    for (size_t i = 0; i < n; ++i) {
+        const size_t j = (i + 1) % n;
+        for (const auto& l : lines)
+            if ((l[1] - l[0]).norm() > 0 && distance_to_segment(loop[i], l[0], l[1]) <= reach &&
+                distance_to_segment(loop[j], l[0], l[1]) <= reach) {
+                on[i].push_back(&l);
+                on[j].push_back(&l);
+            }
+    }
+    for (size_t i = 0; i < n; ++i) {
+        if (on[i].empty())
+            continue;
+        SnapTargets targets;
+        for (const auto* l : on[i])
+            targets.lines.push_back(*l);
+        Loop2 one{loop[i]};
+        snap_onto_lines(one, targets, reach);
+        loop[i] = one.front();
+    }
+    loop.erase(std::unique(loop.begin(), loop.end()), loop.end());
+    while (loop.size() > 1 && loop.front() == loop.back())
+        loop.pop_back();
+}
+
+/// `cut` with each edge within 2·kCleanDistance of the patch's edges, folds and slits put
+/// exactly onto them: the cleaning in significant_cut can leave a stretch along a fold slanted a
+/// micrometre off it, farther than apply_profile's tolerance, which then finds no paper along
+/// the fold and refuses the outline.
+Profile onto_patch_lines(Profile cut, const Scaffold& s, int patch, const ProfileFrame& frame)
+{
+    std::vector<std::array<Vec2, 2>> lines;
+    const Patch& p = *s.find_patch(patch);
+    auto add_loop = [&](const Loop3& loop) {
+        for (size_t i = 0; i < loop.size(); ++i)
+            lines.push_back({frame.to_frame(loop[i]), frame.to_frame(loop[(i + 1) % loop.size()])});
+    };
+    add_loop(p.outer);
+    for (const Loop3& h : p.holes)
+        add_loop(h);
+    for (const Hinge& h : s.hinges)
+        if (h.patch_a == patch || h.patch_b == patch)
+            lines.push_back({frame.to_frame(h.from), frame.to_frame(h.to)});
+    for (const Slit& sl : s.slits)
+        if (sl.patch_cut == patch)
+            lines.push_back({frame.to_frame(sl.from), frame.to_frame(sl.to)});
+    edges_onto_lines(cut.outer, lines, 2 * kCleanDistance);
+    for (Loop2& h : cut.holes)
+        edges_onto_lines(h, lines, 2 * kCleanDistance);
+    return cut;
+}
+
+/// The outline part `patch` of `s` takes from `silhouette` (in `frame`): its significant cut;
+/// where glued joints are kept (`crease` > 0) that cut again with the strips of paper its glued
+/// joints need united into it (glued_joints::joint_strips, the default sheets' tab depth deep);
+/// then, for each fold, joint or slit the cut meets along less than the sheets' smallest feature
+/// (2·kSmallestCut), a bridge of paper from it to the
+/// outline (fold_bridges::bridges, `crease` wide, at least kBridgeWidth), so the part stays on
+/// it instead of losing its outline. Empty when nothing is left to cut.
 std::optional<Profile> part_outline(const Scaffold& s, int patch, const ProfileFrame& frame,
                                     const Profile& silhouette, double crease)
 {
-    using namespace ClipperLib;
-    const Paths paper = paper_of(*s.find_patch(patch), frame);
-    const std::optional<Profile> cut =
-        significant_cut(paper, region_of(silhouette), silhouette.name);
-    if (!cut || !(crease > 0))
-        return cut;
-    const Paths shape = region_of(*cut);
-    const Paths strips =
-        glued_joints::joint_strips(s, patch, frame, shape, crease, SheetOptions{}.tab_width);
-    if (strips.empty())
-        return cut;
-    Paths kept;
-    Clipper c;
-    c.AddPaths(shape, ptSubject, true);
-    c.AddPaths(strips, ptClip, true);
-    c.Execute(ctUnion, kept, pftNonZero, pftNonZero);
-    return significant_cut(paper, kept, silhouette.name);
+    const ClipperLib::Paths paper = paper_of(*s.find_patch(patch), frame);
+    std::optional<Profile> cut = significant_cut(paper, region_of(silhouette), silhouette.name);
+    const double tab_depth = SheetOptions{}.tab_width;
+    if (cut && crease > 0)
+        cut = with_kept(
+            paper, *cut,
+            glued_joints::joint_strips(s, patch, frame, region_of(*cut), crease, tab_depth));
+    if (cut)
+        cut = with_kept(paper, *cut,
+                        fold_bridges::bridges(s, patch, frame, paper, region_of(*cut),
+                                              std::max(crease, kBridgeWidth), tab_depth,
+                                              2 * kSmallestCut));
+    if (cut)
+        cut = onto_patch_lines(*cut, s, patch, frame);
+    return cut;
 }
 
 /// Length of each fold and joint of `patch`, by the other patch's name, when the patch carries

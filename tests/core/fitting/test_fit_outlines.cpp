@@ -3,6 +3,7 @@
 // extruded polygon, whose area is a closed form (a rectangle with polygonal quarter circles).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "popup/fitting/fit_design.hpp"
@@ -160,27 +161,47 @@ TEST(FitOutlines, SliversAreNotCut)
     EXPECT_TRUE(out.dropped.empty());
 }
 
-TEST(FitOutlines, AnOutlineThatLosesAFoldIsDroppedAndReported)
+TEST(FitOutlines, AnOutlineThatLeavesAFoldKeepsABridgeToIt)
 {
-    // The model 10 mm lower than the box: L and R would lose the fold to the top, so their
-    // profiles go; the end panels are cut to the model's height (30 × 30 mm each); the top
-    // sees the whole model and keeps its rectangle. The design stays valid.
+    // The model 10 mm lower than the box: its silhouette leaves L's and R's fold to the top
+    // entirely. Each side keeps the model's outline and a bridge of paper from the middle of that
+    // fold down to it, as wide as the shortest crease a glue tab fits on (c, fit_outlines'
+    // default): W·low + c·10. The end panels are cut to the model's height (30 × 30 mm each); the
+    // top sees the whole model and keeps its rectangle. Nothing is dropped; the design is valid.
     const double low = kHeight - 10;
+    const double c = shortest_tabbed_crease(SheetOptions{});
+    ASSERT_GT(c, 6.0); // the bridge's floor (fit_outlines' kBridgeWidth)
+    ASSERT_LT(c, kWidth);
     std::vector<Vec2> s{{0, 0}, {kWidth, 0}, {kWidth, low}, {0, low}};
     Design d = box_design();
     const OutlineOutcome out = fit_outlines(placed_section(s, d.host), d.scaffold, d.mechanisms);
-    ASSERT_EQ(out.dropped.size(), 2u);
-    EXPECT_EQ(out.dropped[0].mechanism, "B1");
-    EXPECT_EQ(out.dropped[0].action, "profile dropped");
-    EXPECT_EQ(out.dropped[0].reason.rfind("L: ", 0), 0u) << out.dropped[0].reason;
-    EXPECT_EQ(out.dropped[1].reason.rfind("R: ", 0), 0u) << out.dropped[1].reason;
-    EXPECT_NE(out.dropped[0].reason.find("fold"), std::string::npos) << out.dropped[0].reason;
-    ASSERT_EQ(out.profiles.size(), 4u);
+    EXPECT_TRUE(out.dropped.empty()) << out.dropped.front().reason;
+    ASSERT_EQ(out.profiles.size(), 6u);
     for (const FittedProfile& p : out.profiles) {
-        EXPECT_TRUE(p.part == "FL" || p.part == "FR" || p.part == "BL" || p.part == "BR");
-        EXPECT_NEAR(p.area, kDepth * low, 1e-3) << p.part;
+        if (p.part == "L" || p.part == "R") {
+            EXPECT_NEAR(p.area, kWidth * low + c * 10, 1e-3) << p.part;
+            // The bridge stands in the middle of the fold: its two top corners, c apart.
+            std::vector<double> on_fold;
+            double top = -1e300, left = 1e300, right = -1e300;
+            for (const Vec2& q : p.outer) {
+                top = std::max(top, q.y());
+                left = std::min(left, q.x());
+                right = std::max(right, q.x());
+            }
+            for (const Vec2& q : p.outer)
+                if (std::abs(q.y() - top) < 1e-6)
+                    on_fold.push_back(q.x());
+            ASSERT_EQ(on_fold.size(), 2u) << p.part;
+            std::sort(on_fold.begin(), on_fold.end());
+            EXPECT_NEAR(on_fold[1] - on_fold[0], c, 1e-6) << p.part;
+            EXPECT_NEAR(right - left, kWidth, 1e-6) << p.part;
+            EXPECT_NEAR(on_fold[0] + on_fold[1], left + right, 1e-6) << p.part;
+        } else {
+            EXPECT_TRUE(p.part == "FL" || p.part == "FR" || p.part == "BL" || p.part == "BR");
+            EXPECT_NEAR(p.area, kDepth * low, 1e-3) << p.part;
+        }
     }
-    EXPECT_NEAR(patch_named(out.scaffold, "B1.L").area(), kWidth * kHeight, 1e-9);
+    EXPECT_NEAR(patch_named(out.scaffold, "B1.TG").area(), kWidth * kDepth, 1e-9);
     EXPECT_TRUE(check_validity(out.scaffold).valid());
 }
 
