@@ -12,7 +12,8 @@ namespace {
 using bulk::Box;
 using bulk::Point;
 
-constexpr int kSteps = 40; ///< quantiles per coordinate, as bulk_box's
+constexpr int kSteps = 40;        ///< quantiles per coordinate, as bulk_box's
+constexpr double kTentGain = 0.9; ///< a tent on top instead of a box when a tenth closer
 
 /// The lower box on the page and the upper part from its top up: a box, or a tent (a roof)
 /// whose feet are at ±d and whose ridge runs over the hinge at h.
@@ -125,9 +126,13 @@ std::optional<BulkStack> bulk_stack(const SurfaceSamples& samples, const PrismHo
         return std::nullopt;
     // Starts: the lower box the single one cut at each of several heights of the samples, the
     // upper box over the middle of the samples above the cut, up to their 90th percentile.
+    // A box on top unless a tent lies a tenth closer: a roof is a clear win, while a tent over
+    // a spider's legs only rounds off a box whose sides would have shown them in outline.
     std::optional<Stack> best;
     double best_cost = 1e300;
-    for (bool tent : {false, true})
+    for (bool tent : {false, true}) {
+        std::optional<Stack> best_of_kind;
+        double kind_cost = 1e300;
         for (int cut :
              {kSteps * 4 / 10, kSteps / 2, kSteps * 6 / 10, kSteps * 7 / 10, kSteps * 8 / 10}) {
             const double h = all[2][size_t(cut)];
@@ -146,11 +151,16 @@ std::optional<BulkStack> bulk_stack(const SurfaceSamples& samples, const PrismHo
                 continue;
             double cost = 0;
             const Stack k = descend(start, points, all, above, card, min_part, cost);
-            if (cost < best_cost) {
-                best = k;
-                best_cost = cost;
+            if (cost < kind_cost) {
+                best_of_kind = k;
+                kind_cost = cost;
             }
         }
+        if (best_of_kind && kind_cost < (tent ? kTentGain : 1.0) * best_cost) {
+            best = best_of_kind;
+            best_cost = kind_cost;
+        }
+    }
     if (!best)
         return std::nullopt;
     BulkStack out;
