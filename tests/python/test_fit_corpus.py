@@ -84,18 +84,27 @@ def test_three_blocks_get_a_mechanism_each(tmp_path):
     assert report["metrics"]["hausdorff"]["model_to_popup"]["mean"] <= 0.016
 
 
-def test_a_bust_is_shoulders_and_a_head(tmp_path):
-    """A scanned bust (corpus_objects, no flat face a prism rests on) falls back on its bulk: two
-    boxes, the head's on the shoulders' top, closer to the model than the one box of its bulk
-    (0.0257 of the diagonal, docs/SHAPE_RESULTS.md before)."""
-    model = make_corpus.write_corpus_model("bust_scan", str(tmp_path / "bust.ply"))
-    out = tmp_path / "fit"
+def _fitted(folder, name, extension):
+    """`popup fit` of the corpus model `name`: its report, after exit 0 with verified sheets."""
+    model = make_corpus.write_corpus_model(name, str(folder / f"{name}.{extension}"))
+    out = folder / "fit"
     proc = run_design("fit", model, out)
     report = read_report(out)
     assert proc.returncode == 0, proc.stderr
     assert report["sheets_ok"] is True
-    kinds = [(m["type"], m["host"]) for m in report["mechanisms"]]
-    assert kinds == [("box_fold", "central fold"), ("box_fold", "B1.top")]
+    return report
+
+
+def _kinds(report):
+    return [(m["type"], m["host"]) for m in report["mechanisms"]]
+
+
+def test_a_bust_is_shoulders_and_a_head(tmp_path):
+    """A scanned bust (corpus_objects, no flat face a prism rests on) falls back on its bulk: two
+    boxes, the head's on the shoulders' top, closer to the model than the one box of its bulk
+    (0.0257 of the diagonal, docs/SHAPE_RESULTS.md before)."""
+    report = _fitted(tmp_path, "bust_scan", "ply")
+    assert _kinds(report) == [("box_fold", "central fold"), ("box_fold", "B1.top")]
     assert any("two box folds" in r["reason"] for r in report["repairs"])
     assert report["metrics"]["hausdorff"]["model_to_popup"]["mean"] <= 0.0235
 
@@ -105,12 +114,6 @@ def test_a_game_house_of_open_sheets_gets_its_roof(tmp_path):
     one sheet overhanging the walls, no solid anywhere. Its roof's planes meet the walls' top
     beyond the walls, so no fitted tent stands on the box; its bulk is the walls' box and a tent
     roof on its top, as the issue asks of a gable house (mean <= 0.0128)."""
-    model = make_corpus.write_corpus_model("open_roof_game", str(tmp_path / "cottage.obj"))
-    out = tmp_path / "fit"
-    proc = run_design("fit", model, out)
-    report = read_report(out)
-    assert proc.returncode == 0, proc.stderr
-    assert report["sheets_ok"] is True
-    kinds = [(m["type"], m["host"]) for m in report["mechanisms"]]
-    assert kinds == [("box_fold", "central fold"), ("tent_fold", "B1.top")]
+    report = _fitted(tmp_path, "open_roof_game", "obj")
+    assert _kinds(report) == [("box_fold", "central fold"), ("tent_fold", "B1.top")]
     assert report["metrics"]["hausdorff"]["model_to_popup"]["mean"] <= 0.0128

@@ -1,24 +1,11 @@
 #include <gtest/gtest.h>
 
+#include "fitting/card_hinge.hpp"
 #include "fitting/synthetic_models.hpp"
 #include "popup/fitting/bulk_prism.hpp"
 
 using namespace popup;
 using namespace popup::testing;
-
-namespace {
-
-PrismHost card_hinge()
-{
-    PrismHost card;
-    card.name = "central fold";
-    card.length = 210;
-    card.across_min = -148;
-    card.across_max = 148;
-    return card;
-}
-
-} // namespace
 
 /// The samples of a box standing on the card, centred on its fold, all lie on that box: its
 /// bulk is the box itself (every face holds more samples than one quantile step, so the

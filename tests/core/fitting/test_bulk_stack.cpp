@@ -1,26 +1,13 @@
-// The model's bulk as two boxes, one on the other's top (bulk_stack): a bust's shoulders and
-// head, recovered from samples of two such boxes.
+// The model's bulk as two parts, one on the other's top (bulk_stack): a bust's shoulders and
+// head, a house's walls and roof, recovered from samples of such parts.
 #include <gtest/gtest.h>
 
 #include "fitting/bulk_stack.hpp"
+#include "fitting/card_hinge.hpp"
 #include "fitting/synthetic_models.hpp"
 
 using namespace popup;
 using namespace popup::testing;
-
-namespace {
-
-PrismHost card_hinge()
-{
-    PrismHost card;
-    card.name = "central fold";
-    card.length = 210;
-    card.across_min = -148;
-    card.across_max = 148;
-    return card;
-}
-
-} // namespace
 
 TEST(BulkStack, RecoversShouldersAndAHead)
 {
