@@ -1,6 +1,8 @@
 #include "primitive_search.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <future>
 #include <utility>
 
 namespace popup {
@@ -39,18 +41,29 @@ PrimitiveSearch search_primitives(const ModelMesh& model, const SurfaceSamples& 
         t.explained = t.fit.owner.empty() ? 0.0 : double(n) / double(t.fit.owner.size());
         return t;
     };
+    // Each alignment's search is its own (same seed, its own samples): two run at a time on the
+    // two cores a maker has, each as alone, then compared in order as before.
+    std::vector<PrimitiveSearch> tried(alignments.size());
+    std::atomic<size_t> next{0};
+    auto search_next = [&] {
+        for (size_t k = next++; k < alignments.size(); k = next++)
+            tried[k] = attempt(alignments[k]);
+    };
+    if (alignments.size() > 1) {
+        std::future<void> other = std::async(std::launch::async, search_next);
+        search_next();
+        other.get();
+    } else {
+        search_next();
+    }
     // The alignment whose primitives' paper faces (not their open ends) explain the most
     // samples; the first (the mirror plane)
     // unless another explains a hundredth more (docs/MATH.md, "Which way is up").
     size_t chosen = 0;
-    PrimitiveSearch best = attempt(alignments.front());
-    for (size_t k = 1; k < alignments.size(); ++k) {
-        PrimitiveSearch t = attempt(alignments[k]);
-        if (t.explained > best.explained + 0.01) {
-            best = std::move(t);
+    for (size_t k = 1; k < tried.size(); ++k)
+        if (tried[k].explained > tried[chosen].explained + 0.01)
             chosen = k;
-        }
-    }
+    PrimitiveSearch best = std::move(tried[chosen]);
     best.alignment = chosen;
     return best;
 }
