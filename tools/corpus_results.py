@@ -41,8 +41,6 @@ BLOCKY = (
     "print_bed_bracket",
     "chair_x_up",
 )
-# The principal patches of a mechanism (those that carry the model's outline, §5.1.3).
-PRINCIPAL_PARTS = ("F", "T", "FG", "FB", "L", "R", "C")
 
 
 def model_file(corpus, name):
