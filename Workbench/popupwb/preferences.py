@@ -246,8 +246,6 @@ def _sheet_options(values, fail):
 
 
 def _style(values, fail):
-    from ezdxf.lldxf.validator import is_valid_layer_name
-
     from popupwb.sheets.layer_style import SheetStyle, nearest_aci
 
     style = SheetStyle()
@@ -259,7 +257,8 @@ def _style(values, fail):
         name = values.get(name_key, base.name)
         if not name.strip():
             fail(name_key, "must not be empty")
-        if not is_valid_layer_name(name):
+        # ezdxf (a third of a second to import) only for a name the maker chose.
+        if name != base.name and not _valid_layer_name(name):
             fail(name_key, "a DXF layer name cannot hold any of < > / \\ \" : ; ? * | = '")
         rgb = tuple(values.get(colour_key, base.rgb))
         aci = base.aci if rgb == tuple(base.rgb) else nearest_aci(rgb)
@@ -274,3 +273,9 @@ def _style(values, fail):
             fail(key, f"the {seen[name]} layer has this name too; layer names must differ")
         seen[name] = layer
     return dataclasses.replace(style, **layers)
+
+
+def _valid_layer_name(name):
+    from ezdxf.lldxf.validator import is_valid_layer_name
+
+    return is_valid_layer_name(name)

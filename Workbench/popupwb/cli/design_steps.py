@@ -177,6 +177,32 @@ def save_design(doc, out, files):
 
 # --- sheets, report, exit code --------------------------------------------------------------
 
+# What the sheet writers import (half a second): third-party only, so the thread that imports
+# them meanwhile never waits on a module of PopUp the main thread is importing.
+SHEET_LIBRARIES = (
+    "ezdxf",
+    "reportlab.platypus",
+    "reportlab.pdfgen.canvas",
+    "svgwrite",
+    "PIL.Image",
+)
+
+
+def import_sheet_libraries_meanwhile():
+    """Imports SHEET_LIBRARIES on a thread, to be called before a long core call that releases
+    the GIL (the fit, the motion design): the sheets stage then finds them loaded."""
+    import importlib
+    import threading
+
+    def load():
+        for name in SHEET_LIBRARIES:
+            try:
+                importlib.import_module(name)
+            except ImportError:
+                pass  # the sheets stage says so, where it needs the library
+
+    threading.Thread(target=load, name="sheet-libraries").start()
+
 
 def write_sheets(args, paper, report, files, stages, say):
     """`popup sheet DIR/design.FCStd --out DIR/sheets --paper PAPER`, through cmd_sheet itself.

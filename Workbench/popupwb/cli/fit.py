@@ -21,6 +21,7 @@ from popupwb.cli.common import EXIT_INVALID, InputError, import_core, import_fre
 from popupwb.cli.common import stdout_to_stderr
 from popupwb.cli.design_steps import DESIGN_FILE, REPORT_FILE, SHEETS_DIR
 from popupwb.cli.designs import is_document
+from popupwb.fitting.fit_report import plain
 
 PREVIEW_FILE = "preview.png"
 
@@ -138,6 +139,7 @@ def run(args):
         options=fit_run.options_dict(options),
     )
     say(f"fitting (seed {options.seed}, at most {options.max_mechanisms} mechanisms)")
+    steps.import_sheet_libraries_meanwhile()
     try:
         result = fit_run.fit(model, options)
     except popupcore.DesignError as e:
@@ -159,6 +161,7 @@ def run(args):
         # sheets do not verify"): the same mechanisms without outlines, said in the report.
         say("the outlined design's sheets did not verify: the same design without outlines")
         shutil.rmtree(files.pop("sheets"), ignore_errors=True)
+        design["measured"]()  # the outlined design's measure ends before the refit starts
         options.outlines = False
         result = fit_run.fit(model, options)
         stages.add(result.timings.stages)
@@ -167,6 +170,7 @@ def run(args):
         report["repairs"].append(_OUTLINES_DROPPED)
         valid = design["validity"]["valid"] and result.pops_up
         status = steps.sheets_of_valid_design(args, paper, report, valid, files, stages, say)
+    report["metrics"] = plain(design["measured"]())
     status = steps.finish(args, report, status, files, stages, say, _print_summary)
     if not result.mechanisms:
         print(f"no mechanism could be fitted to {args.model}")
@@ -211,12 +215,16 @@ def _write_design(args, result, model, options, stages, files, say):
                 + "; ".join(problems + list(built.errors.values()))
             )
         scaffold = built.scaffold
-        metrics = None  # a card without mechanisms has no pop-up to measure
+        measured = lambda: None  # a card without mechanisms has no pop-up to measure
         # On a plate (a terrain slab, a print bed) the pop-up is what stands on it.
         shown = fit_run.standing_model(model, result)
         if result.mechanisms:
-            with stages.stage("metrics", "measuring the pop-up against the model"):
-                metrics = fit_run.measure(shown, result, scaffold, options)
+            # On its own thread: the preview and the sheets are drawn meanwhile.
+            measured = stages.background(
+                "metrics",
+                "measuring the pop-up against the model",
+                lambda: fit_run.measure(shown, result, scaffold, options),
+            )
         with stages.stage("preview", "drawing the preview"):
             outlines, card_patches = scaffold_outlines(scaffold)
             files["preview"] = write_preview(
@@ -230,7 +238,7 @@ def _write_design(args, result, model, options, stages, files, say):
         say(f"wrote {files['preview']}")
         return {
             "validity": checked,
-            "metrics": metrics,
+            "measured": measured,
             "patches": len(scaffold.patches),
         }
 
@@ -248,7 +256,7 @@ def _report(common, result, design, stages, files):
         **common,
         result=result,
         validity=design["validity"],
-        metrics=design["metrics"],
+        metrics=None,  # set by _add_metrics once the measure is done
         patches=design["patches"],
         stages=stages.timings,
         total_s=stages.total(),

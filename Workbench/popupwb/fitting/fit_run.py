@@ -7,6 +7,7 @@ Each stage is one function; Stages records (stage, seconds) and says what it sta
 (popupcore.DesignError is one) naming the file and what is wrong.
 """
 
+import concurrent.futures
 import contextlib
 import math
 import os
@@ -41,6 +42,33 @@ class Stages:
             yield
         finally:
             self.timings.append((name, time.perf_counter() - start))
+
+    def background(self, name, text, work):
+        """work() started on its own thread now, timed as `name` from its start to its end;
+        returns a function that waits for its result (or raises what it raised). For a core
+        call that releases the GIL (fit_metrics), so what follows overlaps it."""
+        self.say(text)
+        start = time.perf_counter()
+        timed = []
+
+        def timed_work():
+            try:
+                return work()
+            finally:
+                timed.append((name, time.perf_counter() - start))
+
+        pool = concurrent.futures.ThreadPoolExecutor(max_workers=1)
+        future = pool.submit(timed_work)
+        pool.shutdown(wait=False)
+
+        def result():
+            try:
+                return future.result()
+            finally:
+                self.timings.extend(timed)
+                timed.clear()
+
+        return result
 
     def add(self, timings):
         """Adds stages timed elsewhere (FitResult.timings: [(stage, seconds)])."""

@@ -138,7 +138,7 @@ def add_source_model(doc, model, model_to_card, placement=None, name="SourceMode
     triangles = np.asarray(model.triangles).reshape(-1, 3)
     if np.linalg.det(np.asarray(model_to_card, dtype=float)[:3, :3]) < 0:
         triangles = triangles[:, ::-1]  # a mirroring matrix turns the faces inside out: undo it
-    facets = [tuple(int(i) for i in t) for t in triangles]
+    facets = list(map(tuple, triangles.tolist()))  # Mesh takes tuples of ints, not arrays
     obj = doc.addObject("Mesh::Feature", name)
     obj.Mesh = Mesh.Mesh((points, facets))
     if placement is not None:

@@ -191,5 +191,8 @@ def pil_image(rgba):
 def png_data_uri(rgba):
     """The image as a data: URI of a PNG, for an SVG <image>."""
     buffer = io.BytesIO()
-    pil_image(rgba).save(buffer, format="PNG")
+    # zlib level 4 rather than PIL's 6: the same pixels, 0-9 % larger, 2.4-3.5 times faster
+    # (the SVG's images were a third of `popup fit`'s sheets stage on a scanned model); levels
+    # below 4 use zlib's fast matcher and quadruple flat-coloured artwork.
+    pil_image(rgba).save(buffer, format="PNG", compress_level=4)
     return "data:image/png;base64," + base64.b64encode(buffer.getvalue()).decode("ascii")
