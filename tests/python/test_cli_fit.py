@@ -96,7 +96,11 @@ def test_the_report_has_every_key_with_its_type(cuboid_fit):
     timings = report["timings_s"]
     assert "total" in timings and len(timings) >= 3
     assert all(seconds >= 0 for seconds in timings.values())
-    assert sum(v for k, v in timings.items() if k != "total") <= timings["total"] + 1e-6
+    # The metrics are measured on a thread beside the preview and the sheets: the other stages
+    # run one after the other.
+    sequential = [v for k, v in timings.items() if k not in ("total", "metrics")]
+    assert sum(sequential) <= timings["total"] + 1e-6
+    assert 0 < timings["metrics"] <= timings["total"]
     for mechanism in report["mechanisms"]:
         assert set(mechanism) >= {"type", "host", "parameters"}
         assert all(isinstance(v, float) for v in mechanism["parameters"].values())
