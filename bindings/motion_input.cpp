@@ -112,7 +112,11 @@ void bind_chains_and_targets(py::module_& m)
         .def(py::init<>())
         .def_readwrite("prune_fraction", &ChainOptions::prune_fraction,
                        "τp: a leaf chain weighing less than this fraction of the mean bone "
-                       "weight (vertices; bone length without a mesh) is pruned into its parent");
+                       "weight (vertices; bone length without a mesh) is pruned into its parent")
+        .def_readwrite("min_chain_size", &ChainOptions::min_chain_size,
+                       "a leaf chain reaching less than this fraction of the character's size "
+                       "is part of the chain it hangs from (fingers, face bones), unless such "
+                       "chains are all that moves; 0 keeps them");
     py::class_<LinkageChain>(m, "LinkageChain",
                              "A single chain of the bone tree: bones root to tip (indices)")
         .def_readonly("name", &LinkageChain::name)
@@ -121,6 +125,7 @@ void bind_chains_and_targets(py::module_& m)
         .def_readonly("vertices", &LinkageChain::vertices)
         .def_readonly("weight", &LinkageChain::weight)
         .def_readonly("pruned", &LinkageChain::pruned)
+        .def_readonly("reach", &LinkageChain::reach)
         .def("__repr__", [](const LinkageChain& c) {
             return "<LinkageChain " + c.name + ": " + std::to_string(c.bones.size()) +
                    " bones, weight " + std::to_string(c.weight) + ">";

@@ -180,6 +180,7 @@ def test_chains_of_a_trajectory_tree_prune_by_bone_length(tmp_path):
     ]
     options = popupcore.ChainOptions()
     options.prune_fraction = 0.0
+    options.min_chain_size = 0.0  # the short-chain rule would fold the finger and hand too
     kept = popupcore.linkage_chains(animation, options)
     assert [(c.name, c.parent_chain) for c in kept] == [("arm", -1), ("hand", 0), ("finger", 0)]
     assert [c.weight for c in kept] == pytest.approx([10 / 15.1, 5 / 15.1, 0.1 / 15.1])

@@ -51,6 +51,14 @@ const std::vector<MotionField>& own_fields()
                  .at_most(1)
                  .in("chains"),
              [](const MotionOptions& o) { return o.chains.prune_fraction; }},
+            {Field::number("min_chain_size",
+                           "a leaf chain reaching less than this fraction of the character's "
+                           "size is part of the chain it hangs from (fingers, face bones), "
+                           "unless such chains are all that moves; 0 keeps them")
+                 .at_least(0)
+                 .at_most(1)
+                 .in("chains"),
+             [](const MotionOptions& o) { return o.chains.min_chain_size; }},
         };
         return with_struct_defaults(table);
     }();

@@ -52,8 +52,11 @@ TEST(MotionChains, SplitsAtBranchesAndKeepsVertexCounts)
 {
     Animation a = still(body, body_offsets());
     skin_with(a, {10, 10, 10, 5, 20, 10, 10, 10, 10, 1}); // 96 vertices
-    // τp = 0.09: threshold 0.09 × 96 / 10 = 0.864 < 1: nothing is pruned.
-    const auto chains = linkage_chains(a, {});
+    // τp = 0.09: threshold 0.09 × 96 / 10 = 0.864 < 1: nothing is pruned (the thesis's rule
+    // alone: the finger reaches 0.22 of a character 10 long, under min_chain_size).
+    ChainOptions thesis;
+    thesis.min_chain_size = 0.0;
+    const auto chains = linkage_chains(a, thesis);
     ASSERT_EQ(chains.size(), 5u);
     EXPECT_EQ(chains[0].name, "chest");
     EXPECT_EQ(chains[0].bones, (std::vector<int>{0, 1, 2}));
@@ -110,10 +113,88 @@ TEST(MotionChains, ALoneRemainingChildContinuesItsParentsChain)
     // Without pruning: three chains weighted by length: root+arm 5, hand+tip 10, nub 0.1.
     ChainOptions keep;
     keep.prune_fraction = 0.0;
+    keep.min_chain_size = 0.0;
     const auto three = linkage_chains(a, keep);
     ASSERT_EQ(three.size(), 3u);
     EXPECT_EQ(three[0].name, "arm");
     EXPECT_NEAR(three[0].weight, 5.0 / 15.1, 1e-12);
     EXPECT_NEAR(three[1].weight, 10.0 / 15.1, 1e-12);
     EXPECT_NEAR(three[2].weight, 0.1 / 15.1, 1e-12);
+}
+
+namespace {
+
+// root -> spine -> chest -> {neck -> head -> {jaw -> jaw_end, eyelid, head_end},
+//                            larm -> lhand -> {finger1 -> finger2 -> finger_end, thumb ->
+//                            thumb_end}}
+// root -> leg -> shin -> foot. Units cm: 218 tall (foot at -95, head_end at 123).
+const std::vector<Bone> person = {
+    {"root", -1},      {"spine", 0},    {"chest", 1},    {"neck", 2},        {"head", 3},
+    {"jaw", 4},        {"jaw_end", 5},  {"eyelid", 4},   {"head_end", 4},    {"larm", 2},
+    {"lhand", 9},      {"finger1", 10}, {"finger2", 11}, {"finger_end", 12}, {"thumb", 10},
+    {"thumb_end", 14}, {"leg", 0},      {"shin", 16},    {"foot", 17}};
+
+const std::vector<Vec3> person_offsets = {
+    Vec3(0, 0, 0),  Vec3(0, 50, 0),  Vec3(0, 30, 0),  Vec3(0, 15, 0), Vec3(0, 10, 0),
+    Vec3(0, -3, 4), Vec3(0, -5, 5),  Vec3(3, 7, 8),   Vec3(0, 18, 0), Vec3(20, 0, 0),
+    Vec3(50, 0, 0), Vec3(9, 0, 0),   Vec3(4, 0, 0),   Vec3(3, 0, 0),  Vec3(3, 0, 3),
+    Vec3(3, 0, 0),  Vec3(10, -5, 0), Vec3(0, -45, 0), Vec3(0, -45, 0)};
+
+/// The person over 11 frames, each bone of `turning` rotating about z from 0 to `degrees`.
+Animation person_moving(const std::vector<int>& turning, double degrees)
+{
+    Animation a = still(person, person_offsets);
+    const auto rest = a.local[0];
+    a.local.clear();
+    a.frame_times_s.clear();
+    for (int f = 0; f <= 10; ++f) {
+        auto pose = rest;
+        for (int b : turning)
+            pose[b].rotate(Eigen::AngleAxisd(degrees * M_PI / 180.0 * f / 10.0, Vec3::UnitZ()));
+        a.local.push_back(pose);
+        a.frame_times_s.push_back(f / 30.0);
+    }
+    return a;
+}
+
+std::vector<std::string> names_of(const std::vector<LinkageChain>& chains)
+{
+    std::vector<std::string> out;
+    for (const LinkageChain& c : chains)
+        out.push_back(c.name);
+    return out;
+}
+
+} // namespace
+
+TEST(MotionChains, FingersAndFaceBonesArePartOfTheLimbAndHeadTheyHangFrom)
+{
+    // min_chain_size 0.15 x 218 = 32.7 cm: the thumb (4.24+3), eyelid (11.4), jaw (5+7.07),
+    // finger (9+4+3 = 16) and the head's end (18) go, shortest first; the neck and head (15+10)
+    // then reach 43 with their end and stay. The root branches: a chain of its own.
+    const auto chains = linkage_chains(person_moving({}, 0.0), {});
+    ASSERT_EQ(names_of(chains),
+              (std::vector<std::string>{"root", "chest", "head", "lhand", "foot"}));
+    EXPECT_EQ(chains[2].bones, (std::vector<int>{3, 4}));
+    EXPECT_EQ(chains[2].pruned, (std::vector<std::string>{"eyelid", "jaw_end", "head_end"}));
+    EXPECT_NEAR(chains[2].reach, 43.0, 1e-9);
+    EXPECT_EQ(chains[3].pruned, (std::vector<std::string>{"thumb_end", "finger_end"}));
+    EXPECT_NEAR(chains[3].reach, 70.0 + 16.0, 1e-9); // the arm and its longest finger
+    // The thesis's τp alone (1.6 cm here) keeps all ten chains.
+    ChainOptions thesis;
+    thesis.min_chain_size = 0.0;
+    EXPECT_EQ(linkage_chains(person_moving({}, 0.0), thesis).size(), 10u);
+}
+
+TEST(MotionChains, FingersStayChainsWhenTheyAreAllThatMoves)
+{
+    // The finger and thumb curl 60°: their tips move 7 and 3 cm against the hand (over a tenth
+    // of their reach, 16 and 7.2) and nothing else moves: they are chains again; the still face
+    // bones are not.
+    const auto fingers = linkage_chains(person_moving({11, 14}, 60.0), {});
+    EXPECT_EQ(names_of(fingers), (std::vector<std::string>{"root", "chest", "head", "lhand",
+                                                           "finger_end", "thumb_end", "foot"}));
+    // The arm swinging too: the fingers are part of the arm again.
+    const auto arm = linkage_chains(person_moving({9, 11, 14}, 60.0), {});
+    EXPECT_EQ(names_of(arm), (std::vector<std::string>{"root", "chest", "head", "lhand", "foot"}));
 }
