@@ -59,6 +59,12 @@ def add_parser(sub):
         option_fields.add_flag(animate, flag, core.get(name), metavars[flag], low)
     for name in ("view", "up"):
         option_fields.add_vector_flag(animate, f"--{name}", core.get(name), "MotionOptions")
+    animate.add_argument(
+        "--keep-travel",
+        action="store_true",
+        help="keep a walking character's travel along the ground; by default it is kept in "
+        "place (as at the last frame), so its limbs' paths are what the card can show",
+    )
     steps.add_paper_flag(animate)
     animate.set_defaults(run=run)
     return animate
@@ -100,6 +106,7 @@ def _options(args, motion_run):
             up=up,
             scale=args.scale,
             card_size=card_size,
+            keep_travel=args.keep_travel or None,
             flags=steps.flags_given(args, {name: name for name in (*FLAGS.values(), "view", "up")}),
         )
     return options, paper

@@ -57,6 +57,7 @@ def _targets_entry(targets):
         "first_frame": int(targets.first_frame),
         "last_frame": int(targets.last_frame),
         "diagonal_mm": float(targets.diagonal_mm),
+        "travel_removed_mm": float(getattr(targets, "travel_removed_mm", 0.0)),
         "animation_to_card": np.asarray(targets.animation_to_card, dtype=float),
         "chains": [
             {
@@ -65,6 +66,7 @@ def _targets_entry(targets):
                 "parent_chain": int(c.parent_chain),
                 "weight": float(c.weight),
                 "pruned": list(c.pruned),
+                "reach": float(getattr(c, "reach", 0.0)),
             }
             for c in targets.chains
         ],

@@ -46,6 +46,7 @@ def motion_options(
     prune_fraction=None,
     motion_weight=None,
     depth_weight=None,
+    keep_travel=None,
     flags=None,
 ):
     """A popupcore.MotionOptions; None keeps the core's default. ValueError naming the option
@@ -59,6 +60,7 @@ def motion_options(
     values.update(
         prune_fraction=prune_fraction, motion_weight=motion_weight, depth_weight=depth_weight
     )
+    values.update(keep_travel=keep_travel)
     option_fields.set_options(options, option_fields.fields("MotionOptions"), values)
     return option_fields.raise_if_bad(options, flags)
 

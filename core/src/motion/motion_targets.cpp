@@ -65,6 +65,43 @@ bool check_view(const Animation& animation, const MotionView& view, const ViewRe
     return true;
 }
 
+/// Poses with the root's travel along the ground taken out (docs/MATH.md, "A walk stays on the
+/// card"): at each frame the whole skeleton moves back by its first root's travel across `up`
+/// since the last frame, so the last frame, whose posed mesh the card prints, is the file's own.
+struct InPlace {
+    const Animation& animation;
+    bool on = false;
+    Mat3 across = Mat3::Identity(); ///< projection onto the ground (across up)
+    Vec3 at_last = Vec3::Zero();    ///< the first root at the last frame
+
+    InPlace(const Animation& a, const Vec3& up, int last, bool remove) : animation(a), on(remove)
+    {
+        const Vec3 u = up.normalized();
+        across -= u * u.transpose();
+        at_last = forward_kinematics(a, double(last))[0].translation();
+    }
+    Vec3 travel(const Eigen::Isometry3d& root) const
+    {
+        return on ? Vec3(across * (root.translation() - at_last)) : Vec3::Zero();
+    }
+    std::vector<Eigen::Isometry3d> pose(double frame) const
+    {
+        std::vector<Eigen::Isometry3d> global = forward_kinematics(animation, frame);
+        const Vec3 back = travel(global[0]);
+        for (Eigen::Isometry3d& g : global)
+            g.pretranslate(-back);
+        return global;
+    }
+    ModelMesh mesh(double frame) const
+    {
+        ModelMesh posed = posed_mesh(animation, frame);
+        const Vec3 back = travel(forward_kinematics(animation, frame)[0]);
+        for (Vec3& v : posed.vertices)
+            v -= back;
+        return posed;
+    }
+};
+
 } // namespace
 
 Result<MotionTargets> motion_targets(const Animation& animation, const MotionView& view,
@@ -86,17 +123,25 @@ Result<MotionTargets> motion_targets(const Animation& animation, const MotionVie
     targets.first_frame = first;
     targets.last_frame = last;
     targets.chains = linkage_chains(animation, chain_options);
+    // A lone chain's travel is its motion (a hand on a line); a character's is a walk.
+    const InPlace in_place(animation, view.up, last,
+                           !view.keep_travel && targets.chains.size() >= 2);
 
     // The character's extent over the range, in the card's axes (before scale and placement):
     // every bone at every frame, and the skinned mesh at up to 32 frames.
     Eigen::AlignedBox3d box;
-    for (int f = first; f <= last; ++f)
-        for (const Eigen::Isometry3d& g : forward_kinematics(animation, f))
-            box.extend(axes * g.translation());
+    double travel = 0.0;
+    for (int f = first; f <= last; ++f) {
+        const std::vector<Eigen::Isometry3d> pose = forward_kinematics(animation, f);
+        const Vec3 back = in_place.travel(pose[0]);
+        travel = std::max(travel, back.norm());
+        for (const Eigen::Isometry3d& g : pose)
+            box.extend(axes * (g.translation() - back));
+    }
     if (!animation.mesh.vertices.empty()) {
         const int stride = std::max(1, (last - first) / skinned_frames_for_extent);
         for (int f = first;; f = std::min(f + stride, last)) {
-            for (const Vec3& v : posed_mesh(animation, f).vertices)
+            for (const Vec3& v : in_place.mesh(f).vertices)
                 box.extend(axes * v);
             if (f == last)
                 break;
@@ -126,6 +171,7 @@ Result<MotionTargets> motion_targets(const Animation& animation, const MotionVie
     to_card.topRightCorner<3, 1>() = Vec3(centre.x(), centre.y(), 0.0) - scale * box_centre;
     targets.animation_to_card = to_card;
     targets.diagonal_mm = scale * extent.head<2>().norm();
+    targets.travel_removed_mm = scale * travel;
 
     auto card = [&](const Vec3& p) -> Vec3 {
         return to_card.topLeftCorner<3, 3>() * p + to_card.topRightCorner<3, 1>();
@@ -134,9 +180,9 @@ Result<MotionTargets> motion_targets(const Animation& animation, const MotionVie
 
     // Depth D (eq. 6.7) at the last frame: each chain's mean card z (its vertices, or its
     // bones without a mesh), normalised over the character's depth range.
-    const std::vector<Eigen::Isometry3d> final_pose = forward_kinematics(animation, last);
+    const std::vector<Eigen::Isometry3d> final_pose = in_place.pose(last);
     const ModelMesh final_mesh =
-        animation.mesh.vertices.empty() ? ModelMesh{} : posed_mesh(animation, last);
+        animation.mesh.vertices.empty() ? ModelMesh{} : in_place.mesh(last);
     double z_lo = std::numeric_limits<double>::infinity(), z_hi = -z_lo;
     std::vector<double> mean_z;
     for (const LinkageChain& chain : targets.chains) {
@@ -180,12 +226,11 @@ Result<MotionTargets> motion_targets(const Animation& animation, const MotionVie
         ChainPath path;
         path.s = adaptive_samples(
             [&](double s) -> Vec2 {
-                return card(forward_kinematics(animation, frame_at(s))[tip].translation())
-                    .head<2>();
+                return card(in_place.pose(frame_at(s))[tip].translation()).head<2>();
             },
             view.angle_tolerance, still, 16, view.min_intervals);
         for (double s : path.s) {
-            const std::vector<Eigen::Isometry3d> pose = forward_kinematics(animation, frame_at(s));
+            const std::vector<Eigen::Isometry3d> pose = in_place.pose(frame_at(s));
             path.effector.push_back(card(pose[tip].translation()).head<2>());
             path.root.push_back(card(pose[base].translation()).head<2>());
         }

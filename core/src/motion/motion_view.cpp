@@ -60,6 +60,10 @@ const std::vector<ViewField>& view_fields()
                  .at_least(1)
                  .at_most(1000),
              [](const MotionView& v) { return std::optional<double>(v.min_intervals); }},
+            {Field::on_off("keep_travel",
+                           "keep a character's travel along the ground (a walk) instead of "
+                           "keeping it in place"),
+             [](const MotionView& v) { return std::optional<double>(v.keep_travel); }},
         };
         return with_struct_defaults(table);
     }();

@@ -211,3 +211,58 @@ TEST(MotionTargets, BadOptionsAreNamed)
     v.angle_tolerance = 0.0;
     EXPECT_EQ(option_of(v), "angle_tolerance");
 }
+
+namespace {
+
+/// A walker: hips travelling 10 along x (the ground, up = y) over the 21 frames, an arm tip at
+/// (1, 1, 0) and a foot at (0, -1, 0) from them, neither moving against the hips.
+Animation walker(bool lone = false)
+{
+    Animation a;
+    a.source = "walker";
+    a.bones = {{"hips", -1}};
+    if (!lone)
+        a.bones.insert(a.bones.end(), {{"arm", 0}, {"foot", 0}});
+    for (int f = 0; f < frames; ++f) {
+        a.frame_times_s.push_back(f / 24.0);
+        std::vector<Eigen::Isometry3d> pose = {rigid(Vec3(0.5 * f, 0, 0))};
+        if (!lone)
+            pose.insert(pose.end(), {rigid(Vec3(1, 1, 0)), rigid(Vec3(0, -1, 0))});
+        a.local.push_back(pose);
+    }
+    a.bind_inverse.assign(a.bones.size(), Eigen::Isometry3d::Identity());
+    return a;
+}
+
+} // namespace
+
+TEST(MotionTargets, AWalkStaysOnTheCardAsItsLastFrame)
+{
+    // In place, every frame is the last: x in [10, 11], y in [-1, 1]; scale min(236.8 / 1,
+    // 168 / 2) = 84; the foot at 84 · ((10, -1) − (10.5, 0)) + (0, 105) = (−42, 21) throughout.
+    const auto r = motion_targets(walker(), MotionView{});
+    ASSERT_TRUE(r.ok) << r.diagnostics[0].message;
+    EXPECT_NEAR(r.value.animation_to_card(0, 0), 84.0, 1e-9);
+    EXPECT_NEAR(r.value.travel_removed_mm, 840.0, 1e-9);
+    ASSERT_EQ(r.value.chains.size(), 3u);
+    for (const Vec2& p : r.value.paths[2].effector)
+        EXPECT_LT((p - Vec2(-42.0, 21.0)).norm(), 1e-9);
+
+    // Kept: x in [0, 11], scale 236.8 / 11; the foot crosses 10 of it.
+    MotionView keep;
+    keep.keep_travel = true;
+    const auto kept = motion_targets(walker(), keep);
+    ASSERT_TRUE(kept.ok);
+    const double scale = 236.8 / 11.0;
+    EXPECT_NEAR(kept.value.animation_to_card(0, 0), scale, 1e-9);
+    EXPECT_EQ(kept.value.travel_removed_mm, 0.0);
+    const auto& foot = kept.value.paths[2].effector;
+    EXPECT_NEAR(foot.back().x() - foot.front().x(), 10.0 * scale, 1e-9);
+
+    // A lone chain's travel is its motion: kept.
+    const auto lone = motion_targets(walker(true), MotionView{});
+    ASSERT_TRUE(lone.ok);
+    EXPECT_EQ(lone.value.travel_removed_mm, 0.0);
+    EXPECT_GT(lone.value.paths[0].effector.back().x() - lone.value.paths[0].effector.front().x(),
+              100.0);
+}

@@ -29,6 +29,9 @@ struct MotionTargets {
     double diagonal_mm = 0.0;     ///< the character's projected bounding-box diagonal on the card
     int first_frame = 0;
     int last_frame = 0;
+    /// How far the root travelled along the ground over the frame range and was taken out (card
+    /// mm; 0 when kept: MotionView::keep_travel, or a single chain).
+    double travel_removed_mm = 0.0;
 };
 
 /// Forward kinematics over the frame range, projection on the card, adaptive sampling. Errors

@@ -30,6 +30,11 @@ struct MotionView {
     /// The adaptive sampling starts from this many equal intervals of s, so a straight path keeps
     /// samples along it and eq 6.6 sees its pace (adaptive_samples.hpp).
     int min_intervals = 8;
+    /// false: a character (two chains or more) that travels along the ground (a walk) is kept in
+    /// place, its root's travel across `up` taken out of every frame relative to the last, so
+    /// its limbs' paths are what the card can show (docs/MATH.md, "A walk stays on the card").
+    /// A single chain's travel is its motion and is always kept.
+    bool keep_travel = false;
 };
 
 /// MotionView's fields in declaration order (card_width and card_depth for its card): name, doc,
