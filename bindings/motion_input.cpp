@@ -185,7 +185,8 @@ void bind_chains_and_targets(py::module_& m)
         .def_readwrite("last_frame", &MotionView::last_frame)
         .def_readwrite("angle_tolerance", &MotionView::angle_tolerance)
         .def_readwrite("min_intervals", &MotionView::min_intervals)
-        .def_readwrite("keep_travel", &MotionView::keep_travel);
+        .def_readwrite("keep_travel", &MotionView::keep_travel)
+        .def_readwrite("auto_frames", &MotionView::auto_frames);
 
     py::class_<ChainPath>(m, "ChainPath",
                           "A chain's target motion on the card: s in [0, 1] (θ = 180°·s), "
@@ -201,7 +202,14 @@ void bind_chains_and_targets(py::module_& m)
         .def_readonly("diagonal_mm", &MotionTargets::diagonal_mm)
         .def_readonly("first_frame", &MotionTargets::first_frame)
         .def_readonly("last_frame", &MotionTargets::last_frame)
-        .def_readonly("travel_removed_mm", &MotionTargets::travel_removed_mm);
+        .def_readonly("travel_removed_mm", &MotionTargets::travel_removed_mm)
+        .def_property_readonly("window", [](const MotionTargets& t) {
+            py::dict d;
+            d["chosen"] = t.window.chosen;
+            d["score"] = t.window.score;
+            d["whole_score"] = t.window.whole_score;
+            return d;
+        });
     m.def(
         "motion_targets",
         [](const Animation& a, const MotionView& view, const ChainOptions& chains) {

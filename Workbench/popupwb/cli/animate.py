@@ -107,6 +107,10 @@ def _options(args, motion_run):
             scale=args.scale,
             card_size=card_size,
             keep_travel=args.keep_travel or None,
+            # Frames the maker names are shown as named (the core chooses only the whole take's).
+            auto_frames=False
+            if args.first_frame is not None or args.last_frame is not None
+            else None,
             flags=steps.flags_given(args, {name: name for name in (*FLAGS.values(), "view", "up")}),
         )
     return options, paper

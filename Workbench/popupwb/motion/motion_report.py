@@ -58,6 +58,7 @@ def _targets_entry(targets):
         "last_frame": int(targets.last_frame),
         "diagonal_mm": float(targets.diagonal_mm),
         "travel_removed_mm": float(getattr(targets, "travel_removed_mm", 0.0)),
+        "window": dict(getattr(targets, "window", None) or {}),
         "animation_to_card": np.asarray(targets.animation_to_card, dtype=float),
         "chains": [
             {

@@ -47,6 +47,7 @@ def motion_options(
     motion_weight=None,
     depth_weight=None,
     keep_travel=None,
+    auto_frames=None,
     flags=None,
 ):
     """A popupcore.MotionOptions; None keeps the core's default. ValueError naming the option
@@ -60,7 +61,7 @@ def motion_options(
     values.update(
         prune_fraction=prune_fraction, motion_weight=motion_weight, depth_weight=depth_weight
     )
-    values.update(keep_travel=keep_travel)
+    values.update(keep_travel=keep_travel, auto_frames=auto_frames)
     option_fields.set_options(options, option_fields.fields("MotionOptions"), values)
     return option_fields.raise_if_bad(options, flags)
 

@@ -111,8 +111,6 @@ Result<MotionTargets> motion_targets(const Animation& animation, const MotionVie
     if (!check_view(animation, view, ViewRefusal{result}))
         return result;
     const int frames = animation.frames();
-    const int first = view.first_frame;
-    const int last = view.last_frame < 0 ? frames - 1 : view.last_frame;
     auto refuse = [&](const std::string& option, const std::string& why) {
         ViewRefusal{result}(option, why);
         return result;
@@ -120,9 +118,15 @@ Result<MotionTargets> motion_targets(const Animation& animation, const MotionVie
 
     const Mat3 axes = card_axes(view.view, view.up);
     MotionTargets& targets = result.value;
+    targets.chains = linkage_chains(animation, chain_options);
+    if (view.auto_frames && view.first_frame == 0 && view.last_frame < 0)
+        targets.window = best_frame_window(animation, targets.chains, axes.topRows<2>());
+    const int first = targets.window.chosen ? targets.window.first : view.first_frame;
+    const int last = targets.window.chosen ? targets.window.last
+                     : view.last_frame < 0 ? frames - 1
+                                           : view.last_frame;
     targets.first_frame = first;
     targets.last_frame = last;
-    targets.chains = linkage_chains(animation, chain_options);
     // A lone chain's travel is its motion (a hand on a line); a character's is a walk.
     const InPlace in_place(animation, view.up, last,
                            !view.keep_travel && targets.chains.size() >= 2);

@@ -45,7 +45,10 @@ const std::vector<ViewField>& view_fields()
                  .above(0)
                  .at_most(2000),
              [](const MotionView& v) { return std::optional<double>(v.card.depth); }},
-            {Field::count("first_frame", "the frame shown when the card is closed").at_least(0),
+            {Field::count("first_frame", "the frame shown when the card is closed (with the "
+                                         "whole take's 0 and -1, the frames a card can follow "
+                                         "best are chosen: auto_frames)")
+                 .at_least(0),
              [](const MotionView& v) { return std::optional<double>(v.first_frame); }},
             {Field::count("last_frame", "the frame shown when the card is open flat; -1: the last")
                  .at_least(-1),
@@ -64,6 +67,10 @@ const std::vector<ViewField>& view_fields()
                            "keep a character's travel along the ground (a walk) instead of "
                            "keeping it in place"),
              [](const MotionView& v) { return std::optional<double>(v.keep_travel); }},
+            {Field::on_off("auto_frames",
+                           "with the whole take's frames (first 0, last -1), show the frames a "
+                           "card can follow best"),
+             [](const MotionView& v) { return std::optional<double>(v.auto_frames); }},
         };
         return with_struct_defaults(table);
     }();

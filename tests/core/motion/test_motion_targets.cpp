@@ -266,3 +266,47 @@ TEST(MotionTargets, AWalkStaysOnTheCardAsItsLastFrame)
     EXPECT_GT(lone.value.paths[0].effector.back().x() - lone.value.paths[0].effector.front().x(),
               100.0);
 }
+
+namespace {
+
+/// A hub with two arms of length 1 (on x and on y), swinging together ±60° about z as
+/// 60° · sin(2π t / 40) over 81 frames: two full swings back and forth.
+Animation swinging()
+{
+    Animation a;
+    a.source = "swinging";
+    a.bones = {{"hub", -1}, {"shoulder", 0}, {"arm", 1}, {"other", 1}};
+    for (int f = 0; f < 81; ++f) {
+        a.frame_times_s.push_back(f / 40.0);
+        const double angle = M_PI / 3.0 * std::sin(2.0 * M_PI * f / 40.0);
+        a.local.push_back({rigid(Vec3::Zero()), rigid(Vec3::Zero(), angle), rigid(Vec3(1, 0, 0)),
+                           rigid(Vec3(0, 1, 0))});
+    }
+    a.bind_inverse.assign(4, Eigen::Isometry3d::Identity());
+    return a;
+}
+
+} // namespace
+
+TEST(MotionTargets, TheFrameWindowIsOneStrokeOfASwing)
+{
+    // The stroke from −60° (frame 30) to +60° (frame 50) is the longest chord with no retreat:
+    // each arm's chord is 2 sin 60° = √3; the whole take's chord is 0 with a retreat of √3.
+    const Animation a = swinging();
+    MotionView view;
+    const auto r = motion_targets(a, view);
+    ASSERT_TRUE(r.ok) << r.diagnostics[0].message;
+    const MotionTargets& t = r.value;
+    EXPECT_TRUE(t.window.chosen);
+    EXPECT_NEAR(std::abs(t.last_frame - t.first_frame), 20, 1);
+    EXPECT_NEAR(std::fmod(double(t.first_frame), 20.0), 10.0, 1.0); // starts at an extreme
+    EXPECT_NEAR(t.window.score, std::sqrt(3.0), 0.02); // the two arms' weights sum to 1
+    EXPECT_LT(t.window.whole_score, 0.0);
+    // Named frames are shown as named.
+    view.auto_frames = false;
+    const auto whole = motion_targets(a, view);
+    ASSERT_TRUE(whole.ok);
+    EXPECT_FALSE(whole.value.window.chosen);
+    EXPECT_EQ(whole.value.first_frame, 0);
+    EXPECT_EQ(whole.value.last_frame, 80);
+}

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "popup/geometry/pose.hpp"
+#include "popup/motion/frame_window.hpp"
 #include "popup/motion/linkage_chains.hpp"
 #include "popup/motion/motion_view.hpp"
 
@@ -32,6 +33,8 @@ struct MotionTargets {
     /// How far the root travelled along the ground over the frame range and was taken out (card
     /// mm; 0 when kept: MotionView::keep_travel, or a single chain).
     double travel_removed_mm = 0.0;
+    /// The frame window chosen (MotionView::auto_frames), or chosen == false: the given frames.
+    FrameWindow window;
 };
 
 /// Forward kinematics over the frame range, projection on the card, adaptive sampling. Errors

@@ -35,6 +35,9 @@ struct MotionView {
     /// its limbs' paths are what the card can show (docs/MATH.md, "A walk stays on the card").
     /// A single chain's travel is its motion and is always kept.
     bool keep_travel = false;
+    /// With first_frame 0 and last_frame -1 (the whole take), show instead the frames a card can
+    /// follow best (best_frame_window; docs/MATH.md, "The frame window").
+    bool auto_frames = true;
 };
 
 /// MotionView's fields in declaration order (card_width and card_depth for its card): name, doc,

@@ -1,0 +1,70 @@
+"""`popup animate` on the capture-like takes of tools/make_captures.py (issue 26): the chains a
+person would name, the walk kept on the card, the frame window, as report.json says them."""
+
+import json
+import os
+import subprocess
+import sys
+
+import pytest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "tools"))
+import make_captures  # noqa: E402
+
+BUILD = os.environ.get("POPUP_BUILD_DIR", os.path.join(HERE, "..", "..", "build"))
+POPUP = os.path.join(BUILD, "bin", "popup")
+FINGER_OR_FACE = ("Hand", "Eye", "Brow", "Lip", "Jaw")
+
+
+def _animate(tmp_path, name, *flags):
+    take = make_captures.write(name, str(tmp_path))
+    with open(take[: -len(".bvh")] + ".json") as f:
+        known = json.load(f)
+    view = ",".join(f"{v:g}" for v in known["view"])
+    out = tmp_path / f"{name}_out"
+    run = subprocess.run(
+        [POPUP, "animate", take, "--out", str(out), f"--view={view}", *flags],
+        capture_output=True,
+        text=True,
+        timeout=240,
+    )
+    assert run.returncode == 0, run.stderr[-2000:]
+    with open(out / "report.json") as f:
+        return json.load(f), known
+
+
+def test_a_walk_has_its_limbs_as_chains_stays_on_the_card_and_shows_one_stroke(tmp_path):
+    report, known = _animate(tmp_path, "walk")
+    names = [c["name"] for c in report["chains"]]
+    # Body, head, two arms (the hand's fingers folded in), two legs: no finger or face chain.
+    assert len(names) == 7
+    assert not [n for n in names if any(word in n for word in FINGER_OR_FACE[1:])]
+    assert sum("Hand" in n for n in names) == 2  # the arms, ending at the wrists
+    targets = report["targets"]
+    # 130 cm/s walked; the travel over the window shown is taken out.
+    assert targets["travel_removed_mm"] > 10.0
+    window = targets["window"]
+    assert window["chosen"] and window["score"] > 1.1 * window["whole_score"]
+    # One stroke of a 1.1 s cycle: between a quarter and a whole cycle of frames at 120 fps.
+    shown = (targets["last_frame"] - targets["first_frame"]) / known["fps"]
+    assert 0.25 <= shown <= 1.1
+    assert report["valid"] and report["sheets_ok"]
+    assert report["weighted_error"] < 0.10
+    animated = [c for c in report["chains"] if c["status"] == "animated"]
+    assert len(animated) >= 2
+
+
+def test_named_frames_are_shown_as_named(tmp_path):
+    report, _ = _animate(tmp_path, "walk", "--first-frame", "0", "--last-frame", "200")
+    assert report["targets"]["window"]["chosen"] is False
+    assert (report["targets"]["first_frame"], report["targets"]["last_frame"]) == (0, 200)
+
+
+def test_fingers_are_chains_when_they_are_all_that_moves(tmp_path):
+    report, known = _animate(tmp_path, "fingers_only")
+    fingers = [c["name"] for c in report["chains"] if "Hand" in c["name"] and "3" in c["name"]]
+    assert len(fingers) == 10  # five a hand, each ending at its tip
+    # The root stands still: what is taken out is the suit's 0.05 cm jitter, under a millimetre.
+    assert report["targets"]["travel_removed_mm"] < 1.0
+    assert known["note"].startswith("only the fingers move")
