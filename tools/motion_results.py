@@ -58,7 +58,7 @@ def cases():
     return out
 
 
-def measure(path, settings, seed, iterations):
+def measure(path, settings, seed, iterations, chain_settings=None):
     import popupcore
 
     options = popupcore.MotionOptions()
@@ -66,6 +66,8 @@ def measure(path, settings, seed, iterations):
     for key, value in settings.items():
         setattr(view, key, value)
     options.view = view
+    for key, value in (chain_settings or {}).items():
+        setattr(options.chains, key, value)
     options.seed = seed
     if iterations:
         options.iterations = iterations
@@ -176,6 +178,68 @@ def markdown(rows, seed, iterations):
     return "\n".join(lines) + "\n"
 
 
+# Issue 26's starting point: the thesis's τp alone, the whole take, the travel kept.
+BEFORE_26 = ({"keep_travel": True, "auto_frames": False}, {"min_chain_size": 0.0})
+
+
+def capture_rows(seed, iterations):
+    """Before and after issue 26 on tools/make_captures.py's takes: (label, before, after)."""
+    import tempfile
+
+    sys.path.insert(0, HERE)
+    import make_captures
+
+    rows = []
+    with tempfile.TemporaryDirectory() as folder:
+        for name in make_captures.TAKES:
+            path = make_captures.write(name, folder)
+            _, known = make_captures.build(name)
+            view = {"view": tuple(known["view"]), "up": tuple(known["up"])}
+            before = measure(path, {**view, **BEFORE_26[0]}, seed, iterations, BEFORE_26[1])
+            after = measure(path, view, seed, iterations)
+            rows.append((name, known, before, after))
+            print(f"{name}: {before[0].weighted_error:.4f} -> {after[0].weighted_error:.4f}")
+    return rows
+
+
+def capture_markdown(rows):
+    def animated(result):
+        return sum(c.status == "animated" for c in result.chains)
+
+    lines = [
+        "",
+        "## Capture-like takes (issue 26)",
+        "",
+        "`tools/make_captures.py`'s takes (docs/CORPUS.md), seen from their JSON's view: before "
+        "(the thesis's τp alone, the whole take, the travel kept) and now (chains a person would "
+        "name, the frame window, the walk kept on the card: docs/MATH.md). Seconds are the core's "
+        "(loading and design_motion), one run each on a shared machine.",
+        "",
+        "| take | frames | chains | frames shown | travel out (mm) | animated | weighted error "
+        "| reach floor | seconds |",
+        "|---|---|---|---|---|---|---|---|---|",
+    ]
+    for name, known, (before, b_s), (after, a_s) in rows:
+        t = after.targets
+        shown = f"{t.first_frame}-{t.last_frame}" + (" (chosen)" if t.window["chosen"] else "")
+        lines.append(
+            f"| {name} | {known['frames']} | {len(before.chains)} → {len(after.chains)} | "
+            f"{shown} | {t.travel_removed_mm:.0f} | {animated(before)} → {animated(after)} | "
+            f"{before.weighted_error:.4f} → {after.weighted_error:.4f} | "
+            f"{after.weighted_floor:.4f} | {b_s:.1f} → {a_s:.1f} |"
+        )
+    lines += [
+        "",
+        "Reading it: the chains are now the ones a person names (a humanoid's body, head, arms "
+        "and legs; the fingers when only they move), and the frames one stroke the card can "
+        "follow. The error is relative to the character's projected box over the frames shown, "
+        "so a window showing less of the figure's sweep (the wave's rising hand) can score a "
+        "higher relative error on the same limb; the limbs' outlines, the reach bound and the "
+        "pictures are issue 26's next items.",
+    ]
+    return "\n".join(lines) + "\n"
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--out", default=os.path.join(SOURCE, "docs", "MOTION_RESULTS.md"))
@@ -192,8 +256,9 @@ def main(argv=None):
             f"{r['mappings']}, {r['seconds']:.2f} s",
             flush=True,
         )
+    captures = capture_rows(args.seed, args.iterations)
     with open(args.out, "w", encoding="utf-8") as f:
-        f.write(markdown(rows, args.seed, args.iterations))
+        f.write(markdown(rows, args.seed, args.iterations) + capture_markdown(captures))
     print("wrote", args.out)
 
 
