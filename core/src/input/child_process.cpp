@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <cstdint>
 #include <cstring>
 #include <sstream>
 
@@ -34,36 +35,65 @@ std::string run_in_child(const std::function<std::string()>& work, double timeou
         } catch (...) {
             _exit(2); // the caller sees no whole answer
         }
-        for (size_t at = 0; at < bytes.size();) {
-            const ssize_t n = write(channel[1], bytes.data() + at, bytes.size() - at);
-            if (n <= 0)
-                _exit(1);
-            at += size_t(n);
-        }
+        // Its length first, so the caller makes room once (a 4,500-frame capture is 48 MB).
+        auto write_all = [&](const char* data, size_t size) {
+            for (size_t at = 0; at < size;) {
+                const ssize_t n = write(channel[1], data + at, size - at);
+                if (n <= 0)
+                    _exit(1);
+                at += size_t(n);
+            }
+        };
+        const std::uint64_t length = bytes.size();
+        write_all(reinterpret_cast<const char*>(&length), sizeof length);
+        write_all(bytes.data(), bytes.size());
         _exit(0);
     }
     close(channel[1]);
-    char buffer[1 << 16];
     const auto deadline =
         std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
     bool timed_out = false;
-    for (;;) {
-        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-            deadline - std::chrono::steady_clock::now());
-        pollfd ready{channel[0], POLLIN, 0};
-        const int polled = poll(&ready, 1, int(std::max<long>(0, left.count())));
-        if (polled < 0 && errno == EINTR)
-            continue;
-        if (polled == 0) {
-            timed_out = true;
-            break;
+    // Up to `room` bytes into `into`: how many (0 at the end or on an error), -1 past the deadline.
+    auto read_some = [&](char* into, size_t room) -> long {
+        for (;;) {
+            const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+                deadline - std::chrono::steady_clock::now());
+            pollfd ready{channel[0], POLLIN, 0};
+            const int polled = poll(&ready, 1, int(std::max<long>(0, left.count())));
+            if (polled < 0 && errno == EINTR)
+                continue;
+            if (polled == 0)
+                return -1;
+            const ssize_t n = read(channel[0], into, room);
+            if (n < 0 && errno == EINTR)
+                continue;
+            return n < 0 ? 0 : long(n);
         }
-        const ssize_t n = read(channel[0], buffer, sizeof buffer);
-        if (n < 0 && errno == EINTR)
-            continue;
+    };
+    // The answer's length first, so that it is read straight into place once.
+    std::uint64_t length = 0;
+    size_t got = 0;
+    while (got < sizeof length) {
+        const long n = read_some(reinterpret_cast<char*>(&length) + got, sizeof length - got);
+        timed_out = n < 0;
         if (n <= 0)
             break;
-        answer.append(buffer, size_t(n));
+        got += size_t(n);
+    }
+    if (got == sizeof length) {
+        // A few GB at most: a length beyond that is not our child's; the answer then grows.
+        answer.resize(length < (std::uint64_t(1) << 32) ? size_t(length) : size_t(1) << 16);
+        size_t at = 0;
+        for (;;) {
+            if (at == answer.size())
+                answer.resize(2 * answer.size() + (1 << 16));
+            const long n = read_some(answer.data() + at, answer.size() - at);
+            timed_out = n < 0;
+            if (n <= 0)
+                break;
+            at += size_t(n);
+        }
+        answer.resize(at);
     }
     close(channel[0]);
     if (timed_out)
