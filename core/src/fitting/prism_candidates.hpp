@@ -32,7 +32,8 @@ struct Round {
     double gap = 0.0;
     /// A draw picks its host among those its first sample stands on: at most this many.
     int hosts_per_sample = 1;
-    /// Per host, the scoring subset and the guard above it, contiguous in its coordinates.
+    /// Per host, the scoring subset and the guard above it in its coordinates, sorted along
+    /// the hinge.
     std::vector<std::vector<Local>> sub, grd;
 };
 

@@ -3,6 +3,8 @@
 // outside), in the host's coordinates. Inline: the search classifies every sample of every draw.
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "popup/fitting/prism_types.hpp"
 
@@ -15,6 +17,22 @@ struct Local {
     double a, s, t;    ///< along the hinge, across, up
     double na, ns, nt; ///< the normal in the same axes
 };
+
+/// Sorts samples along the hinge (by a; ties in any order: every reader counts or sorts).
+inline void sort_along(std::vector<Local>& l)
+{
+    std::sort(l.begin(), l.end(), [](const Local& x, const Local& y) { return x.a < y.a; });
+}
+
+/// The stretch of `l` (sorted along the hinge) with from <= a < to, first and past the last.
+inline std::pair<const Local*, const Local*> stretch(const std::vector<Local>& l, double from,
+                                                     double to)
+{
+    auto by_a = [](const Local& x, double a) { return x.a < a; };
+    const Local* lo = std::lower_bound(l.data(), l.data() + l.size(), from, by_a);
+    const Local* hi = std::lower_bound(lo, l.data() + l.size(), to, by_a);
+    return {lo, hi};
+}
 
 inline Local to_local(const PrismHost& h, const Vec3& p, const Vec3& n)
 {

@@ -72,6 +72,9 @@ Round start_round(std::vector<int> remaining, std::vector<int> starts, const Ran
         for (int i : guard)
             if (above_host(r.hosts[h], locals[h][i], eps))
                 round.grd[h].push_back(locals[h][i]);
+        // Along the hinge: a candidate reads only the samples over its own stretch.
+        sort_along(round.sub[h]);
+        sort_along(round.grd[h]);
     }
     return round;
 }
