@@ -68,10 +68,10 @@ void draw_candidates(const Round& round, const DrawInputs& in, std::mt19937_64& 
     rect.a1 = std::max(l[p1].a, l[p2].a);
     if (fit_host(host, rect, in.eps, in.min_part)) {
         const double seed_a0 = rect.a0, seed_a1 = rect.a1;
-        in.search.extend_along(rect, round.sub[h], round.gap, host);
+        in.search.extend_along(rect, round.box_sub[h], round.gap, host);
         stop_at_taken(rect, host, in.taken, seed_a0, seed_a1, in.eps);
         if (fit_host(host, rect, in.eps, in.min_part)) {
-            const double sc = in.search.score(rect, round.sub[h], round.grd[h], host.flat,
+            const double sc = in.search.score(rect, round.box_sub[h], round.grd[h], host.flat,
                                               round.scale, found.best_rect.score);
             if (sc > found.best_rect.score && !overlaps(rect, host, in.taken, in.eps) &&
                 !outside_model(rect, host, in.model, in.eps))
@@ -97,12 +97,12 @@ void draw_candidates(const Round& round, const DrawInputs& in, std::mt19937_64& 
     if (!fit_host(host, tri, in.eps, in.min_part))
         return;
     const double seed_a0 = tri.a0, seed_a1 = tri.a1;
-    in.search.extend_along(tri, round.sub[h], round.gap, host);
+    in.search.extend_along(tri, round.tent_sub[h], round.gap, host);
     stop_at_taken(tri, host, in.taken, seed_a0, seed_a1, in.eps);
     if (!fit_host(host, tri, in.eps, in.min_part))
         return;
-    const double sc =
-        in.search.score(tri, round.sub[h], round.grd[h], true, round.scale, found.best_tri.score);
+    const double sc = in.search.score(tri, round.tent_sub[h], round.grd[h], true, round.scale,
+                                      found.best_tri.score);
     if (sc > found.best_tri.score && !overlaps(tri, host, in.taken, in.eps) &&
         !outside_model(tri, host, in.model, in.eps))
         found.best_tri = {tri, sc};

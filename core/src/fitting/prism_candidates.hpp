@@ -35,6 +35,10 @@ struct Round {
     /// Per host, the scoring subset and the guard above it in its coordinates, sorted along
     /// the hinge.
     std::vector<std::vector<Local>> sub, grd;
+    /// Per host, the samples of `sub` that may lie on a rectangular or a triangular prism's
+    /// face or stop its growth (may_carry_box, may_carry_slope), sorted along the hinge: all
+    /// a candidate's growth and score read of the subset.
+    std::vector<std::vector<Local>> box_sub, tent_sub;
 };
 
 /// What a draw reads besides the round: the hosts, every sample in each host's coordinates,

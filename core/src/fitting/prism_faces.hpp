@@ -50,6 +50,22 @@ inline bool above_host(const PrismHost& h, const Local& l, double eps)
     return l.s > eps * 0.5 && l.s < h.across_max + eps && l.t < h.up_max + eps;
 }
 
+/// Whether a sample may lie on a face of a rectangular prism (classify) or be a wall across
+/// the hinge (Search::extend_along): its normal within 20° of up, across or along the hinge.
+inline bool may_carry_box(const Local& l)
+{
+    return l.nt > kNormalAgreement || std::abs(l.ns) > kNormalAgreement ||
+           std::abs(l.na) > kNormalAgreement;
+}
+
+/// The same for a triangular prism: on a slope its normal's share across the hinge is at least
+/// 0.94 (a slope's normal is unit in the section plane; 0.85 its square with room for
+/// rounding), on an end or a wall within 20° of the hinge.
+inline bool may_carry_slope(const Local& l)
+{
+    return l.ns * l.ns + l.nt * l.nt > 0.85 || std::abs(l.na) > kNormalAgreement;
+}
+
 /// Which face of a prism a sample lies on (within ε, normal agreeing), or inside it.
 enum class Where { outside, face, inside };
 

@@ -65,6 +65,8 @@ Round start_round(std::vector<int> remaining, std::vector<int> starts, const Ran
     }
     round.sub.resize(H);
     round.grd.resize(H);
+    round.box_sub.resize(H);
+    round.tent_sub.resize(H);
     for (int h = 0; h < H; ++h) {
         for (int i : subset)
             if (above_host(r.hosts[h], locals[h][i], eps))
@@ -75,6 +77,12 @@ Round start_round(std::vector<int> remaining, std::vector<int> starts, const Ran
         // Along the hinge: a candidate reads only the samples over its own stretch.
         sort_along(round.sub[h]);
         sort_along(round.grd[h]);
+        for (const Local& l : round.sub[h]) {
+            if (may_carry_box(l))
+                round.box_sub[h].push_back(l);
+            if (may_carry_slope(l))
+                round.tent_sub[h].push_back(l);
+        }
     }
     return round;
 }
