@@ -41,18 +41,25 @@ Draw draw_sample(const Round& round, const DrawInputs& in, std::mt19937_64& rng,
 {
     Draw d;
     d.p1 = round.starts[pick_point(rng)];
-    std::vector<int> eligible;
-    for (int h = 0; h < int(in.hosts.size()); ++h)
-        if (above_host(in.hosts[h], in.locals[h][d.p1], in.eps))
-            eligible.push_back(h);
+    const int hosts = int(in.hosts.size());
+    auto eligible = [&](int h) { return above_host(in.hosts[h], in.locals[h][d.p1], in.eps); };
+    size_t count = 0;
+    for (int h = 0; h < hosts; ++h)
+        count += eligible(h);
     const int level = pick_level(rng);
     d.p2 = in.cells.pick(d.p1, level, rng);
     d.p3 = in.cells.pick(d.p1, level, rng);
     d.p4 = in.cells.pick(d.p1, level, rng);
-    if (eligible.empty())
+    if (count == 0)
         return d;
-    std::uniform_int_distribution<size_t> pick_host(0, eligible.size() - 1);
-    d.host = eligible[pick_host(rng)];
+    // The host: the chosen one of those eligible, in their order.
+    std::uniform_int_distribution<size_t> pick_host(0, count - 1);
+    size_t chosen = pick_host(rng);
+    for (int h = 0; h < hosts; ++h)
+        if (eligible(h) && chosen-- == 0) {
+            d.host = h;
+            break;
+        }
     return d;
 }
 
