@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <future>
 #include <map>
 #include <sstream>
 
@@ -386,8 +387,14 @@ double best_mirror_angle(const MirrorScores& mirror, size_t coarse_stride, size_
                          double spacing, double& best)
 {
     std::vector<double> scores(180);
-    for (int k = 0; k < 180; ++k)
-        scores[k] = mirror.at(k * M_PI / 180, coarse_stride);
+    auto scan = [&](int from, int to) {
+        for (int k = from; k < to; ++k)
+            scores[k] = mirror.at(k * M_PI / 180, coarse_stride);
+    };
+    // Each angle scores on its own: half of them on the other core.
+    std::future<void> other = std::async(std::launch::async, scan, 90, 180);
+    scan(0, 90);
+    other.get();
     const double lowest = *std::min_element(scores.begin(), scores.end());
     double best_theta = 0, best_extent = 1e300;
     best = 1e300;

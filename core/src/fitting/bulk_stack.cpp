@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
+#include <future>
+#include <vector>
 
 #include "bulk_geometry.hpp"
 
@@ -128,15 +131,18 @@ std::optional<BulkStack> bulk_stack(const SurfaceSamples& samples, const PrismHo
     // upper box over the middle of the samples above the cut, up to their 90th percentile.
     // A box on top unless a tent lies a tenth closer: a roof is a clear win, while a tent over
     // a spider's legs only rounds off a box whose sides would have shown them in outline.
-    std::optional<Stack> best;
-    double best_cost = 1e300;
-    for (bool tent : {false, true}) {
-        std::optional<Stack> best_of_kind;
-        double kind_cost = 1e300;
+    // Each start descends on its own, two at a time on the two cores; compared in order after.
+    struct Start {
+        Stack stack;
+        std::array<std::vector<double>, 3> above;
+        double cost = 1e300;
+    };
+    std::vector<Start> starts;
+    for (bool tent : {false, true})
         for (int cut :
              {kSteps * 4 / 10, kSteps / 2, kSteps * 6 / 10, kSteps * 7 / 10, kSteps * 8 / 10}) {
             const double h = all[2][size_t(cut)];
-            const std::array<std::vector<double>, 3> above = quantiles_of(points, h);
+            std::array<std::vector<double>, 3> above = quantiles_of(points, h);
             if (above[0].empty())
                 continue;
             Stack start{{m.a0, m.a1, m.s1, h}, {}, tent};
@@ -147,15 +153,28 @@ std::optional<BulkStack> bulk_stack(const SurfaceSamples& samples, const PrismHo
             if (tent) // a roof's feet at the top's edges, its ridge at the highest samples
                 start.upper = {start.upper.a0, start.upper.a1, 0.995 * m.s1,
                                std::max(above[2][kSteps], h + min_part)};
-            if (!feasible(start, card, min_part))
-                continue;
-            double cost = 0;
-            const Stack k = descend(start, points, all, above, card, min_part, cost);
-            if (cost < kind_cost) {
-                best_of_kind = k;
-                kind_cost = cost;
-            }
+            if (feasible(start, card, min_part))
+                starts.push_back({start, std::move(above)});
         }
+    std::atomic<size_t> next{0};
+    auto descend_next = [&] {
+        for (size_t k = next++; k < starts.size(); k = next++)
+            starts[k].stack = descend(starts[k].stack, points, all, starts[k].above, card, min_part,
+                                      starts[k].cost);
+    };
+    std::future<void> other = std::async(std::launch::async, descend_next);
+    descend_next();
+    other.get();
+    std::optional<Stack> best;
+    double best_cost = 1e300;
+    for (bool tent : {false, true}) {
+        std::optional<Stack> best_of_kind;
+        double kind_cost = 1e300;
+        for (const Start& k : starts)
+            if (k.stack.tent == tent && k.cost < kind_cost) {
+                best_of_kind = k.stack;
+                kind_cost = k.cost;
+            }
         if (best_of_kind && kind_cost < (tent ? kTentGain : 1.0) * best_cost) {
             best = best_of_kind;
             best_cost = kind_cost;

@@ -49,9 +49,13 @@ double coverage_of(const Scaffold& scaffold, const SurfaceSamples& samples, doub
 {
     const auto [patches, outlines] = framed_outlines(scaffold);
     size_t near = 0;
+    // A sample farther than ε from a patch's plane is farther from the patch: most pairs stop
+    // there (the margin keeps hypot's rounding on the far side of ε).
+    const double off_plane = eps * (1 + 1e-9);
     for (const Vec3& x : samples.points)
         for (size_t k = 0; k < patches.size(); ++k)
-            if (distance_to_patch(patches[k], outlines[k], x) <= eps) {
+            if (std::abs((x - patches[k].origin).dot(patches[k].normal)) <= off_plane &&
+                distance_to_patch(patches[k], outlines[k], x) <= eps) {
                 ++near;
                 break;
             }

@@ -18,12 +18,28 @@ Cells::Cells(const std::vector<Vec3>& points, const std::vector<int>& remaining,
             list.push_back({key(points[i], size), i});
         std::sort(list.begin(), list.end());
         sizes_[level] = size;
+        // Each listed sample's cell as a run of the list: a pick needs no search.
+        auto& runs = runs_[level];
+        runs.assign(points.size(), {0, 0});
+        for (size_t b = 0; b < list.size();) {
+            size_t e = b + 1;
+            while (e < list.size() && list[e].first == list[b].first)
+                ++e;
+            for (size_t k = b; k < e; ++k)
+                runs[size_t(list[k].second)] = {int(b), int(e)};
+            b = e;
+        }
     }
 }
 
 int Cells::pick(int p, int level, std::mt19937_64& rng) const
 {
     const auto& list = levels_[level];
+    const auto [b, e] = runs_[level][size_t(p)];
+    if (e > b) {
+        std::uniform_int_distribution<long> d(0, long(e - b) - 1);
+        return list[size_t(b + d(rng))].second;
+    }
     const std::int64_t k = key(points_[p], sizes_[level]);
     auto lo = std::lower_bound(list.begin(), list.end(), std::make_pair(k, -1));
     auto hi = std::upper_bound(list.begin(), list.end(),

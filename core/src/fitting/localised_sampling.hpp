@@ -28,6 +28,9 @@ private:
     Eigen::AlignedBox3d box_;
     std::array<std::vector<std::pair<std::int64_t, int>>, kLevels> levels_;
     std::array<double, kLevels> sizes_{};
+    /// Per level and sample, its cell's run [first, past the last) of the list; empty for a
+    /// sample not listed.
+    std::array<std::vector<std::pair<int, int>>, kLevels> runs_;
 };
 
 /// At most about `at_most` of `from`, every k-th in order.

@@ -103,16 +103,15 @@ std::vector<std::uint8_t> OccupancyGrid::outside_of(const std::vector<std::uint8
     std::vector<std::uint8_t> outside(walls.size(), 0);
     std::vector<std::int64_t> stack{0}; // a corner: the padding keeps it outside every wall
     outside[0] = 1;
+    // Steps by index only: one from a row's end lands on the next row's start, both in the
+    // padding the walls never reach (two cells or more), which the corner reaches anyway.
+    const std::int64_t size = std::int64_t(walls.size());
     const std::int64_t sx = 1, sy = dims_.x(), sz = std::int64_t(dims_.x()) * dims_.y();
     while (!stack.empty()) {
         const std::int64_t i = stack.back();
         stack.pop_back();
-        const int x = int(i % dims_.x()), y = int((i / sy) % dims_.y()), z = int(i / sz);
-        const std::int64_t next[6] = {x > 0 ? i - sx : -1, x + 1 < dims_.x() ? i + sx : -1,
-                                      y > 0 ? i - sy : -1, y + 1 < dims_.y() ? i + sy : -1,
-                                      z > 0 ? i - sz : -1, z + 1 < dims_.z() ? i + sz : -1};
-        for (std::int64_t j : next)
-            if (j >= 0 && !outside[size_t(j)] && !walls[size_t(j)]) {
+        for (const std::int64_t j : {i - sx, i + sx, i - sy, i + sy, i - sz, i + sz})
+            if (j >= 0 && j < size && !outside[size_t(j)] && !walls[size_t(j)]) {
                 outside[size_t(j)] = 1;
                 stack.push_back(j);
             }

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <unordered_map>
 #include <utility>
+#include <vector>
 
 namespace popup {
 
@@ -62,32 +62,47 @@ int root(std::vector<int>& parent, int i)
 Components manifold_components(const ModelMesh& model)
 {
     const size_t n = model.triangles.size();
-    std::unordered_map<std::uint64_t, std::vector<int>> edges;
+    // Every edge (its two vertices, lower first) with its triangle, sorted: the triangles
+    // sharing an edge are a run, in triangle order.
+    std::vector<std::pair<std::uint64_t, int>> edges;
+    edges.reserve(3 * n);
     for (size_t t = 0; t < n; ++t)
         for (int k = 0; k < 3; ++k) {
             const auto u = std::uint32_t(model.triangles[t][k]);
             const auto v = std::uint32_t(model.triangles[t][(k + 1) % 3]);
-            edges[(std::uint64_t(std::min(u, v)) << 32) | std::max(u, v)].push_back(int(t));
+            edges.push_back({(std::uint64_t(std::min(u, v)) << 32) | std::max(u, v), int(t)});
         }
+    std::sort(edges.begin(), edges.end());
+    std::vector<std::pair<size_t, size_t>> runs; // [first, past the last) per edge
+    for (size_t b = 0; b < edges.size();) {
+        size_t e = b + 1;
+        while (e < edges.size() && edges[e].first == edges[b].first)
+            ++e;
+        runs.push_back({b, e});
+        b = e;
+    }
     std::vector<int> parent(n);
     for (size_t t = 0; t < n; ++t)
         parent[t] = int(t);
-    for (const auto& [key, sharing] : edges)
-        if (sharing.size() == 2)
-            parent[size_t(root(parent, sharing[0]))] = root(parent, sharing[1]);
+    for (const auto& [b, e] : runs)
+        if (e - b == 2)
+            parent[size_t(root(parent, edges[b].second))] = root(parent, edges[b + 1].second);
+    // Labels in the order of each component's first triangle (whatever its root).
     Components c;
     c.of.resize(n);
-    std::unordered_map<int, int> label;
+    std::vector<int> label(n, -1);
+    int labels = 0;
     for (size_t t = 0; t < n; ++t) {
-        const int r = root(parent, int(t));
-        const auto [it, fresh] = label.emplace(r, int(label.size()));
-        c.of[t] = it->second;
+        int& l = label[size_t(root(parent, int(t)))];
+        if (l < 0)
+            l = labels++;
+        c.of[t] = l;
     }
-    c.closed.assign(label.size(), true);
-    for (const auto& [key, sharing] : edges)
-        if (sharing.size() != 2)
-            for (int t : sharing)
-                c.closed[size_t(c.of[size_t(t)])] = false;
+    c.closed.assign(size_t(labels), true);
+    for (const auto& [b, e] : runs)
+        if (e - b != 2)
+            for (size_t k = b; k < e; ++k)
+                c.closed[size_t(c.of[size_t(edges[k].second)])] = false;
     return c;
 }
 

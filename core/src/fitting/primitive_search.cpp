@@ -34,6 +34,7 @@ PrimitiveSearch search_primitives(const ModelMesh& model, const SurfaceSamples& 
         ro.min_part = options.min_part_mm;
         ro.cancel = cancel;
         ro.inner = inner;
+        ro.lanes = alignments.size() == 1 ? 2 : 1;
         t.fit = fit_prisms(t.samples, card, ro);
         size_t n = 0;
         for (size_t i = 0; i < t.fit.owner.size(); ++i)

@@ -35,23 +35,46 @@ bool triangle_from_lines(const PrismHost& h, Vec2 p1, Vec2 d1, Vec2 p2, Vec2 d2,
            m.s0 > h.across_min && m.s1 < h.across_max && m.s1 - m.s0 > eps;
 }
 
+Draw draw_sample(const Round& round, const DrawInputs& in, std::mt19937_64& rng,
+                 std::uniform_int_distribution<size_t>& pick_point,
+                 std::uniform_int_distribution<int>& pick_level)
+{
+    Draw d;
+    d.p1 = round.starts[pick_point(rng)];
+    const int hosts = int(in.hosts.size());
+    auto eligible = [&](int h) { return above_host(in.hosts[h], in.locals[h][d.p1], in.eps); };
+    size_t count = 0;
+    for (int h = 0; h < hosts; ++h)
+        count += eligible(h);
+    const int level = pick_level(rng);
+    d.p2 = in.cells.pick(d.p1, level, rng);
+    d.p3 = in.cells.pick(d.p1, level, rng);
+    d.p4 = in.cells.pick(d.p1, level, rng);
+    if (count == 0)
+        return d;
+    // The host: the chosen one of those eligible, in their order.
+    std::uniform_int_distribution<size_t> pick_host(0, count - 1);
+    size_t chosen = pick_host(rng);
+    for (int h = 0; h < hosts; ++h)
+        if (eligible(h) && chosen-- == 0) {
+            d.host = h;
+            break;
+        }
+    return d;
+}
+
 void draw_candidates(const Round& round, const DrawInputs& in, std::mt19937_64& rng,
                      std::uniform_int_distribution<size_t>& pick_point,
                      std::uniform_int_distribution<int>& pick_level, Candidates& found)
 {
-    const int p1 = round.starts[pick_point(rng)];
-    std::vector<int> eligible;
-    for (int h = 0; h < int(in.hosts.size()); ++h)
-        if (above_host(in.hosts[h], in.locals[h][p1], in.eps))
-            eligible.push_back(h);
-    const int level = pick_level(rng);
-    const int p2 = in.cells.pick(p1, level, rng);
-    const int p3 = in.cells.pick(p1, level, rng);
-    const int p4 = in.cells.pick(p1, level, rng);
-    if (eligible.empty())
+    try_candidates(draw_sample(round, in, rng, pick_point, pick_level), round, in, found);
+}
+
+void try_candidates(const Draw& d, const Round& round, const DrawInputs& in, Candidates& found)
+{
+    if (d.host < 0)
         return;
-    std::uniform_int_distribution<size_t> pick_host(0, eligible.size() - 1);
-    const int h = eligible[pick_host(rng)];
+    const int h = d.host, p1 = d.p1, p2 = d.p2, p3 = d.p3, p4 = d.p4;
     const PrismHost& host = in.hosts[h];
     const auto& l = in.locals[h];
     if (!above_host(host, l[p2], in.eps))
@@ -68,10 +91,10 @@ void draw_candidates(const Round& round, const DrawInputs& in, std::mt19937_64& 
     rect.a1 = std::max(l[p1].a, l[p2].a);
     if (fit_host(host, rect, in.eps, in.min_part)) {
         const double seed_a0 = rect.a0, seed_a1 = rect.a1;
-        in.search.extend_along(rect, round.sub[h], round.gap, host);
+        in.search.extend_along(rect, round.box_sub[h], round.gap, host);
         stop_at_taken(rect, host, in.taken, seed_a0, seed_a1, in.eps);
         if (fit_host(host, rect, in.eps, in.min_part)) {
-            const double sc = in.search.score(rect, round.sub[h], round.grd[h], host.flat,
+            const double sc = in.search.score(rect, round.box_sub[h], round.grd[h], host.flat,
                                               round.scale, found.best_rect.score);
             if (sc > found.best_rect.score && !overlaps(rect, host, in.taken, in.eps) &&
                 !outside_model(rect, host, in.model, in.eps))
@@ -97,15 +120,24 @@ void draw_candidates(const Round& round, const DrawInputs& in, std::mt19937_64& 
     if (!fit_host(host, tri, in.eps, in.min_part))
         return;
     const double seed_a0 = tri.a0, seed_a1 = tri.a1;
-    in.search.extend_along(tri, round.sub[h], round.gap, host);
+    in.search.extend_along(tri, round.tent_sub[h], round.gap, host);
     stop_at_taken(tri, host, in.taken, seed_a0, seed_a1, in.eps);
     if (!fit_host(host, tri, in.eps, in.min_part))
         return;
-    const double sc =
-        in.search.score(tri, round.sub[h], round.grd[h], true, round.scale, found.best_tri.score);
+    const double sc = in.search.score(tri, round.tent_sub[h], round.grd[h], true, round.scale,
+                                      found.best_tri.score);
     if (sc > found.best_tri.score && !overlaps(tri, host, in.taken, in.eps) &&
         !outside_model(tri, host, in.model, in.eps))
         found.best_tri = {tri, sc};
+}
+
+void keep_better(Candidates& found, const Candidates& later)
+{
+    // Each kind's best is the first of the highest score: the later batch's only if higher.
+    if (later.best_rect.score > found.best_rect.score)
+        found.best_rect = later.best_rect;
+    if (later.best_tri.score > found.best_tri.score)
+        found.best_tri = later.best_tri;
 }
 
 } // namespace popup::prism_search

@@ -32,8 +32,13 @@ struct Round {
     double gap = 0.0;
     /// A draw picks its host among those its first sample stands on: at most this many.
     int hosts_per_sample = 1;
-    /// Per host, the scoring subset and the guard above it, contiguous in its coordinates.
+    /// Per host, the scoring subset and the guard above it in its coordinates, sorted along
+    /// the hinge.
     std::vector<std::vector<Local>> sub, grd;
+    /// Per host, the samples of `sub` that may lie on a rectangular or a triangular prism's
+    /// face or stop its growth (may_carry_box, may_carry_slope), sorted along the hinge: all
+    /// a candidate's growth and score read of the subset.
+    std::vector<std::vector<Local>> box_sub, tent_sub;
 };
 
 /// What a draw reads besides the round: the hosts, every sample in each host's coordinates,
@@ -56,9 +61,29 @@ struct Candidates {
     long draws = 0, tri_draws = 0;
 };
 
-/// One localised minimal sample: its first point, a cell level, three more points in that cell
-/// and a host among those the first stands on, drawn in this order; the candidates it makes
-/// replace the best of their kind in `found` when they score higher and are accepted.
+/// One localised minimal sample: its four points and the host they are read in (-1: none).
+struct Draw {
+    int p1 = 0, p2 = 0, p3 = 0, p4 = 0;
+    int host = -1;
+};
+
+/// Draws a minimal sample: its first point, a cell level, three more points in that cell and a
+/// host among those the first stands on, in this order.
+Draw draw_sample(const Round& round, const DrawInputs& in, std::mt19937_64& rng,
+                 std::uniform_int_distribution<size_t>& pick_point,
+                 std::uniform_int_distribution<int>& pick_level);
+
+/// The candidates a minimal sample makes replace the best of their kind in `found` when they
+/// score higher and are accepted. Reads nothing else of `found` but the best scores: the
+/// candidates of several samples may be tried apart, from the same `found`, then kept in
+/// order by keep_better.
+void try_candidates(const Draw& d, const Round& round, const DrawInputs& in, Candidates& found);
+
+/// Each kind's best of `later` (tried after `found`'s) when it scores higher: the same best
+/// as trying its samples after `found`'s own.
+void keep_better(Candidates& found, const Candidates& later);
+
+/// draw_sample, then try_candidates.
 void draw_candidates(const Round& round, const DrawInputs& in, std::mt19937_64& rng,
                      std::uniform_int_distribution<size_t>& pick_point,
                      std::uniform_int_distribution<int>& pick_level, Candidates& found);

@@ -3,6 +3,8 @@
 // outside), in the host's coordinates. Inline: the search classifies every sample of every draw.
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "popup/fitting/prism_types.hpp"
 
@@ -15,6 +17,22 @@ struct Local {
     double a, s, t;    ///< along the hinge, across, up
     double na, ns, nt; ///< the normal in the same axes
 };
+
+/// Sorts samples along the hinge (by a; ties in any order: every reader counts or sorts).
+inline void sort_along(std::vector<Local>& l)
+{
+    std::sort(l.begin(), l.end(), [](const Local& x, const Local& y) { return x.a < y.a; });
+}
+
+/// The stretch of `l` (sorted along the hinge) with from <= a < to, first and past the last.
+inline std::pair<const Local*, const Local*> stretch(const std::vector<Local>& l, double from,
+                                                     double to)
+{
+    auto by_a = [](const Local& x, double a) { return x.a < a; };
+    const Local* lo = std::lower_bound(l.data(), l.data() + l.size(), from, by_a);
+    const Local* hi = std::lower_bound(lo, l.data() + l.size(), to, by_a);
+    return {lo, hi};
+}
 
 inline Local to_local(const PrismHost& h, const Vec3& p, const Vec3& n)
 {
@@ -30,6 +48,22 @@ inline bool above_host(const PrismHost& h, const Local& l, double eps)
     if (h.flat)
         return l.s > h.across_min - eps && l.s < h.across_max + eps;
     return l.s > eps * 0.5 && l.s < h.across_max + eps && l.t < h.up_max + eps;
+}
+
+/// Whether a sample may lie on a face of a rectangular prism (classify) or be a wall across
+/// the hinge (Search::extend_along): its normal within 20° of up, across or along the hinge.
+inline bool may_carry_box(const Local& l)
+{
+    return l.nt > kNormalAgreement || std::abs(l.ns) > kNormalAgreement ||
+           std::abs(l.na) > kNormalAgreement;
+}
+
+/// The same for a triangular prism: on a slope its normal's share across the hinge is at least
+/// 0.94 (a slope's normal is unit in the section plane; 0.85 its square with room for
+/// rounding), on an end or a wall within 20° of the hinge.
+inline bool may_carry_slope(const Local& l)
+{
+    return l.ns * l.ns + l.nt * l.nt > 0.85 || std::abs(l.na) > kNormalAgreement;
 }
 
 /// Which face of a prism a sample lies on (within ε, normal agreeing), or inside it.

@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
+#include <future>
+#include <optional>
 #include <random>
+#include <vector>
 
 #include "localised_sampling.hpp"
 #include "prism_candidates.hpp"
@@ -65,6 +69,8 @@ Round start_round(std::vector<int> remaining, std::vector<int> starts, const Ran
     }
     round.sub.resize(H);
     round.grd.resize(H);
+    round.box_sub.resize(H);
+    round.tent_sub.resize(H);
     for (int h = 0; h < H; ++h) {
         for (int i : subset)
             if (above_host(r.hosts[h], locals[h][i], eps))
@@ -72,6 +78,15 @@ Round start_round(std::vector<int> remaining, std::vector<int> starts, const Ran
         for (int i : guard)
             if (above_host(r.hosts[h], locals[h][i], eps))
                 round.grd[h].push_back(locals[h][i]);
+        // Along the hinge: a candidate reads only the samples over its own stretch.
+        sort_along(round.sub[h]);
+        sort_along(round.grd[h]);
+        for (const Local& l : round.sub[h]) {
+            if (may_carry_box(l))
+                round.box_sub[h].push_back(l);
+            if (may_carry_slope(l))
+                round.tent_sub[h].push_back(l);
+        }
     }
     return round;
 }
@@ -109,6 +124,91 @@ void accept_prism(Prism m, const std::vector<int>& remaining, const Search& sear
         }
     }
 }
+
+/// A round's draws, 64 at a time (a batch). On two lanes, eight batches are drawn at once and
+/// tried four on each core, each lane from the best scores before them; a batch joins the
+/// round only if the round goes on, and the generator goes back to where it stood after the
+/// last batch taken. Tried from a lower best only more candidates are guarded, and keep_better
+/// keeps the first of the highest scores: the same candidates, counts and generator as one
+/// draw after another.
+class Batches {
+public:
+    static constexpr int kSize = 64;
+    static constexpr int kPerLane = 4;
+
+    Batches(const Round& round, const DrawInputs& in, std::mt19937_64& rng, bool two_lanes)
+        : round_(round), in_(in), rng_(rng), two_lanes_(two_lanes),
+          pick_point_(0, round.starts.size() - 1), pick_level_(0, kLevels - 1)
+    {
+    }
+
+    /// The next batch's draws tried into `found`.
+    void next(Candidates& found)
+    {
+        if (!two_lanes_) {
+            for (int k = 0; k < kSize; ++k, ++found.draws)
+                draw_candidates(round_, in_, rng_, pick_point_, pick_level_, found);
+            return;
+        }
+        if (ahead_.empty())
+            try_ahead(found);
+        Ahead& batch = ahead_.front();
+        keep_better(found, batch.tried);
+        found.tri_draws += batch.tri_draws;
+        found.draws += kSize;
+        taken_ = batch.after;
+        ahead_.pop_front();
+    }
+
+    /// After the round: the generator as after the last batch taken.
+    void finish()
+    {
+        if (taken_)
+            rng_ = *taken_;
+    }
+
+private:
+    struct Ahead {
+        std::vector<Draw> draws;
+        std::mt19937_64 after; ///< the generator after its draws
+        Candidates tried;      ///< its lane's best up to it, its own tri_draws
+        long tri_draws = 0;
+    };
+
+    void try_ahead(const Candidates& found)
+    {
+        for (int b = 0; b < 2 * kPerLane; ++b) {
+            Ahead a;
+            a.draws.resize(kSize);
+            for (Draw& d : a.draws)
+                d = draw_sample(round_, in_, rng_, pick_point_, pick_level_);
+            a.after = rng_;
+            ahead_.push_back(std::move(a));
+        }
+        auto lane = [&](int first) {
+            Candidates c = found;
+            for (int b = first; b < first + kPerLane; ++b) {
+                const long before = c.tri_draws;
+                for (const Draw& d : ahead_[size_t(b)].draws)
+                    try_candidates(d, round_, in_, c);
+                ahead_[size_t(b)].tried = c;
+                ahead_[size_t(b)].tri_draws = c.tri_draws - before;
+            }
+        };
+        std::future<void> other = std::async(std::launch::async, lane, kPerLane);
+        lane(0);
+        other.get();
+    }
+
+    const Round& round_;
+    const DrawInputs& in_;
+    std::mt19937_64& rng_;
+    const bool two_lanes_;
+    std::uniform_int_distribution<size_t> pick_point_;
+    std::uniform_int_distribution<int> pick_level_;
+    std::deque<Ahead> ahead_;
+    std::optional<std::mt19937_64> taken_;
+};
 
 } // namespace
 
@@ -212,16 +312,14 @@ RansacResult fit_prisms(const SurfaceSamples& samples, const PrismHost& card,
                                         samples.spacing, eps);
         Cells cells(samples.points, round.remaining, extent);
         const int hosts_per_sample = round.hosts_per_sample;
-        std::uniform_int_distribution<size_t> pick_point(0, round.starts.size() - 1);
-        std::uniform_int_distribution<int> pick_level(0, kLevels - 1);
 
         const DrawInputs in{r.hosts, locals, search, cells, taken, box, eps, o.min_part};
+        Batches batches(round, in, rng, o.lanes > 1);
         Candidates found;
         bool accepted = false;
         while (!accepted) {
-            for (int batch = 0; batch < 64; ++batch, ++found.draws)
-                draw_candidates(round, in, rng, pick_point, pick_level, found);
-            r.draws += 64;
+            batches.next(found);
+            r.draws += Batches::kSize;
             stop_if_cancelled(o.cancel, "fit_design: fitting primitives");
             // Algorithm 5.2: keep the best candidate once a larger one would have been drawn
             // with probability p_t; stop when even a τ-sized one would have been.
@@ -231,6 +329,7 @@ RansacResult fit_prisms(const SurfaceSamples& samples, const PrismHost& card,
             const long s = rect_better ? found.draws : found.tri_draws;
             if (best.score >= o.min_points &&
                 found_probability(best.score, N, k, hosts_per_sample, kLevels, s) > o.probability) {
+                batches.finish();
                 accept_prism(best.prism, round.remaining, search, eps, locals, taken, r);
                 accepted = true;
             } else if (found_probability(o.min_points, N, 2, hosts_per_sample, kLevels,

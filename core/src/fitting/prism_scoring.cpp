@@ -24,16 +24,41 @@ double Search::score(const Prism& m, const std::vector<Local>& subset,
 {
     const Section sec = section_of(m);
     const double eps = o_.threshold;
+    // Only samples within ε of the prism's stretch along the hinge can lie on a face; a
+    // candidate that cannot beat `to_beat` even if all of them did stops early.
+    const auto [first, last] = stretch(subset, m.a0 - eps, m.a1 + eps);
     int n = 0;
-    for (const Local& q : subset)
-        n += classify(m, sec, q, eps, flat) == Where::face;
+    for (const Local* q = first; q != last;) {
+        if (double(n + (last - q)) * scale <= to_beat)
+            return -1;
+        const Local* block = q + std::min<std::ptrdiff_t>(64, last - q);
+        for (; q != block; ++q)
+            n += classify(m, sec, *q, eps, flat) == Where::face;
+    }
     if (n * scale <= to_beat)
         return -1;
+    return encloses(m, sec, guard, flat) ? -1 : n * scale;
+}
+
+bool Search::encloses(const Prism& m, const Section& sec, const std::vector<Local>& guard,
+                      bool flat) const
+{
+    const double eps = o_.threshold;
+    const bool on_page = m.kind == Prism::Kind::rectangular && flat;
+    // Inside means deeper than ε within the prism's stretch.
+    const auto [first, last] = stretch(guard, m.a0 + eps, m.a1 - eps);
     std::vector<const Local*> inside;
-    for (const Local& q : guard)
-        if (classify(m, sec, q, eps, flat) == Where::inside)
-            inside.push_back(&q);
-    if (inside.size() > 1 && m.kind == Prism::Kind::rectangular && flat) {
+    int high = 0; // inside and above the box's half height: never the room under a model
+    for (const Local* q = first; q != last; ++q) {
+        if (classify(m, sec, *q, eps, flat) != Where::inside)
+            continue;
+        inside.push_back(q);
+        if (!on_page || q->t > 0.5 * m.height + eps)
+            ++high;
+        if (high > 1)
+            return true;
+    }
+    if (inside.size() > 1 && on_page) {
         // A box fold stands on its page: under a model that floats on legs or wheels (a
         // truck's chassis) it fills the room below the model's underside. What it encloses
         // there is the legs' side, not the model's inside, as long as the underside lies in
@@ -47,9 +72,7 @@ double Search::score(const Prism& m, const std::vector<Local>& subset,
                                         [&](const Local* q) { return q->t <= floor + eps; }),
                          inside.end());
     }
-    if (inside.size() > 1)
-        return -1;
-    return n * scale;
+    return inside.size() > 1;
 }
 
 } // namespace popup::prism_search

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <map>
 #include <tuple>
 #include <utility>
@@ -131,8 +132,11 @@ Silhouette unite_faces(const std::vector<const ProjectedFace*>& faces, const std
     };
     std::vector<Edge> edges;
     edges.reserve(3 * faces.size());
+    ClipperLib::Path path; // one buffer for every face
     for (const ProjectedFace* f : faces) {
-        ClipperLib::Path path = to_path(f->polygon);
+        path.clear();
+        for (const Vec2& p : f->polygon)
+            path.push_back(to_int_point(p));
         if (!ClipperLib::Orientation(path))
             ClipperLib::ReversePath(path);
         for (size_t i = 0, n = path.size(); i < n; ++i) {
@@ -145,9 +149,17 @@ Silhouette unite_faces(const std::vector<const ProjectedFace*>& faces, const std
                 edges.push_back({b, a, -1});
         }
     }
-    std::sort(edges.begin(), edges.end(), [](const Edge& x, const Edge& y) {
+    // Sorted in two halves, one on each core, then merged: equal edges are summed whatever
+    // their order.
+    auto before = [](const Edge& x, const Edge& y) {
         return std::tie(x.from, x.to) < std::tie(y.from, y.to);
-    });
+    };
+    const auto middle = edges.begin() + std::ptrdiff_t(edges.size() / 2);
+    std::future<void> other =
+        std::async(std::launch::async, [&] { std::sort(middle, edges.end(), before); });
+    std::sort(edges.begin(), middle, before);
+    other.get();
+    std::inplace_merge(edges.begin(), middle, edges.end(), before);
     std::map<Key, std::vector<Key>> out; // what is left, as outgoing edges per point
     for (size_t i = 0; i < edges.size();) {
         int count = 0;

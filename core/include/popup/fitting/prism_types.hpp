@@ -68,6 +68,9 @@ struct RansacOptions {
     /// refuse a prism that encloses them.
     std::vector<bool> inner;
     const CancelFlag* cancel = nullptr;
+    /// Cores the draws may use (1 or 2): the same prisms either way. search_primitives gives
+    /// 2 to a single alignment's search (several already run two at a time).
+    int lanes = 1;
 };
 
 struct RansacResult {
