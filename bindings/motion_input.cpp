@@ -203,6 +203,7 @@ void bind_chains_and_targets(py::module_& m)
         .def_readonly("first_frame", &MotionTargets::first_frame)
         .def_readonly("last_frame", &MotionTargets::last_frame)
         .def_readonly("travel_removed_mm", &MotionTargets::travel_removed_mm)
+        .def_readonly("in_place", &MotionTargets::in_place)
         .def_property_readonly("window", [](const MotionTargets& t) {
             py::dict d;
             d["chosen"] = t.window.chosen;
@@ -210,6 +211,14 @@ void bind_chains_and_targets(py::module_& m)
             d["whole_score"] = t.window.whole_score;
             return d;
         });
+    m.def(
+        "ground_travel",
+        [](const Animation& a, const Vec3& up, int last_frame, double frame) {
+            return ground_travel(a, up, last_frame, frame);
+        },
+        py::arg("animation"), py::arg("up"), py::arg("last_frame"), py::arg("frame"),
+        "The first root's travel along the ground (across up) from last_frame to frame, file "
+        "units: what motion_targets takes out of every pose when targets.in_place.");
     m.def(
         "motion_targets",
         [](const Animation& a, const MotionView& view, const ChainOptions& chains) {

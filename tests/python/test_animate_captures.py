@@ -68,3 +68,28 @@ def test_fingers_are_chains_when_they_are_all_that_moves(tmp_path):
     # The root stands still: what is taken out is the suit's 0.05 cm jitter, under a millimetre.
     assert report["targets"]["travel_removed_mm"] < 1.0
     assert known["note"].startswith("only the fingers move")
+
+
+def test_a_picture_poses_the_walker_where_the_targets_are(tmp_path):
+    popupcore = pytest.importorskip("popupcore")
+    import numpy as np
+
+    path = make_captures.write("walk", str(tmp_path))
+    animation = popupcore.load_animation(path)
+    view = popupcore.MotionView()
+    view.view = (-1.0, 0.0, 0.0)
+    targets = popupcore.motion_targets(animation, view)
+    assert targets.in_place and targets.travel_removed_mm > 10.0
+    names = [name for name, _ in animation.bones]
+    matrix = np.asarray(targets.animation_to_card)
+    for chain, target in zip(targets.chains, targets.paths):
+        tip = names.index(chain.name)
+        for s, effector in zip(target.s, target.effector):
+            frame = targets.first_frame + s * (targets.last_frame - targets.first_frame)
+            pose = np.asarray(popupcore.forward_kinematics(animation, frame)[tip])[:3, 3]
+            back = np.asarray(
+                popupcore.ground_travel(animation, view.up, targets.last_frame, frame)
+            )
+            card = matrix[:3, :3] @ (pose - back) + matrix[:3, 3]
+            # The same pose the targets were measured on (the travel only moves it).
+            assert card[:2] == pytest.approx(effector, abs=1e-6)

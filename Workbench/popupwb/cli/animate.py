@@ -159,7 +159,7 @@ def run(args):
     )
 
     validity = _write_design(args, result, animation, stages, files, say)
-    _write_pictures(args, result, animation, stages, files, say)
+    _write_pictures(args, result, animation, tuple(options.view.up), stages, files, say)
     report = _report(common, result, validity, stages, files)
     if report["valid"] and not result.pops_up:  # the core's rule: a bare card is no pop-up
         report["valid"] = False
@@ -192,7 +192,7 @@ def _write_design(args, result, animation, stages, files, say):
     return checked
 
 
-def _write_pictures(args, result, animation, stages, files, say):
+def _write_pictures(args, result, animation, up, stages, files, say):
     from popupwb.motion.motion_movie import MovieError, character_frames, write_movie
     from popupwb.motion.paths_plot import write_paths_plot
 
@@ -217,6 +217,8 @@ def _write_pictures(args, result, animation, stages, files, say):
                     result.targets.animation_to_card,
                     result.targets.first_frame,
                     result.targets.last_frame,
+                    # The character stands where the targets are when its walk was taken out.
+                    in_place_up=up if getattr(result.targets, "in_place", False) else None,
                 ),
                 result.chains,
                 title=title,

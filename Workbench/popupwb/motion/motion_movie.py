@@ -93,9 +93,12 @@ def card_frames(scaffold, count=FRAMES):
     return frames[::-1]
 
 
-def character_frames(animation, animation_to_card, first_frame, last_frame, count=FRAMES):
+def character_frames(
+    animation, animation_to_card, first_frame, last_frame, count=FRAMES, in_place_up=None
+):
     """[(frame, bone segments [(a, b)] in card mm, mesh triangles Mx3x3 or None)] over the frame
-    range, `count` evenly spaced (fractional) frames."""
+    range, `count` evenly spaced (fractional) frames. `in_place_up`: the view's up when the
+    targets keep the character in place (targets.in_place), so it stands where they are."""
     from popupwb.core import popupcore
     from popupwb.model.model_source import transformed
 
@@ -109,12 +112,18 @@ def character_frames(animation, animation_to_card, first_frame, last_frame, coun
         globals_ = [
             np.asarray(m, dtype=float) for m in popupcore.forward_kinematics(animation, frame)
         ]
-        joints = transformed(np.array([g[:3, 3] for g in globals_]).reshape(-1, 3), matrix)
+        back = np.zeros(3)
+        if in_place_up is not None:
+            back = np.asarray(
+                popupcore.ground_travel(animation, in_place_up, int(last_frame), float(frame))
+            )
+        points = np.array([g[:3, 3] for g in globals_]).reshape(-1, 3) - back
+        joints = transformed(points, matrix)
         segments = [(joints[p], joints[b]) for b, p in enumerate(parents) if p >= 0]
         triangles = None
         if has_mesh:
             posed = popupcore.posed_mesh(animation, float(frame))
-            vertices = transformed(posed.vertices, matrix)
+            vertices = transformed(np.asarray(posed.vertices) - back, matrix)
             faces = np.asarray(posed.triangles, dtype=np.int64).reshape(-1, 3)
             if len(faces) > MAX_MESH_TRIANGLES:
                 faces = faces[:: int(math.ceil(len(faces) / MAX_MESH_TRIANGLES))]

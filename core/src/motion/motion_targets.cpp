@@ -104,6 +104,14 @@ struct InPlace {
 
 } // namespace
 
+Vec3 ground_travel(const Animation& animation, const Vec3& up, int last_frame, double frame)
+{
+    const Vec3 u = up.normalized();
+    const Vec3 moved = forward_kinematics(animation, frame)[0].translation() -
+                       forward_kinematics(animation, double(last_frame))[0].translation();
+    return moved - u * u.dot(moved);
+}
+
 Result<MotionTargets> motion_targets(const Animation& animation, const MotionView& view,
                                      const ChainOptions& chain_options)
 {
@@ -176,6 +184,7 @@ Result<MotionTargets> motion_targets(const Animation& animation, const MotionVie
     targets.animation_to_card = to_card;
     targets.diagonal_mm = scale * extent.head<2>().norm();
     targets.travel_removed_mm = scale * travel;
+    targets.in_place = in_place.on;
 
     auto card = [&](const Vec3& p) -> Vec3 {
         return to_card.topLeftCorner<3, 3>() * p + to_card.topRightCorner<3, 1>();

@@ -33,9 +33,16 @@ struct MotionTargets {
     /// How far the root travelled along the ground over the frame range and was taken out (card
     /// mm; 0 when kept: MotionView::keep_travel, or a single chain).
     double travel_removed_mm = 0.0;
+    /// The travel was taken out: a picture posing the character at a frame moves it back by
+    /// ground_travel(animation, view.up, last_frame, frame) to stand where the targets are.
+    bool in_place = false;
     /// The frame window chosen (MotionView::auto_frames), or chosen == false: the given frames.
     FrameWindow window;
 };
+
+/// The first root's travel along the ground (across `up`) from `last_frame` to `frame`, file
+/// units: what motion_targets takes out of every pose when it keeps a character in place.
+Vec3 ground_travel(const Animation& animation, const Vec3& up, int last_frame, double frame);
 
 /// Forward kinematics over the frame range, projection on the card, adaptive sampling. Errors
 /// name the option and its range (bad_option) for a bad view, frame range or scale.
