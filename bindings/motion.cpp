@@ -74,6 +74,11 @@ void bind_motion(py::module_& m)
         .def_readonly("floor", &ChainReport::floor,
                       "the lowest E_m any mechanism on the card could reach / the diagonal")
         .def_readonly("floor_mm", &ChainReport::floor_mm)
+        .def_readonly("bound", &ChainReport::bound,
+                      "the best one mechanism does on this chain alone, collisions ignored / the "
+                      "diagonal")
+        .def_readonly("bound_mm", &ChainReport::bound_mm)
+        .def_readonly("bound_mechanism", &ChainReport::bound_mechanism)
         .def_readonly("weight", &ChainReport::weight)
         .def_readonly("status", &ChainReport::status, "animated, merged or stationary")
         .def_readonly("reason", &ChainReport::reason)
@@ -93,6 +98,8 @@ void bind_motion(py::module_& m)
         .def_readonly("weighted_error", &MotionResult::weighted_error)
         .def_readonly("weighted_floor", &MotionResult::weighted_floor,
                       "Σ weight · floor: no design on this card scores a lower weighted_error")
+        .def_readonly("weighted_bound", &MotionResult::weighted_bound,
+                      "Σ weight · bound: each chain with its best mechanism alone")
         .def_readonly("iterations", &MotionResult::iterations)
         .def_readonly("cost", &MotionResult::cost)
         .def_readonly("timings", &MotionResult::timings)

@@ -31,6 +31,8 @@ CHAIN_KEYS = {"name", "mechanism", "error", "weight", "status", "reason"}
 ITERATIONS = "1500"
 SEED = "2"
 
+MAPPINGS = ("vertical", "diagonal", "horizontal", "rotation", "stationary")
+
 
 def animate(path, out, *extra, home=None):
     return run_design("animate", path, out, *extra, home=home)
@@ -96,9 +98,16 @@ def test_the_report_has_every_key_with_its_type(waved):
         assert chain["floor_mm"] == pytest.approx(floor, rel=1e-9, abs=1e-9)
         assert chain["floor"] == pytest.approx(floor / diagonal, rel=1e-9, abs=1e-12)
         assert chain["floor_mm"] <= chain["error_mm"] + 1e-9
+        # The best one mechanism alone is a mechanism on this card: the floor holds for it too.
+        assert chain["floor_mm"] <= chain["bound_mm"] + 1e-9
+        assert chain["bound"] == pytest.approx(chain["bound_mm"] / diagonal, rel=1e-9, abs=1e-12)
+        assert chain["bound_mechanism"] in MAPPINGS + ("printed",)
     assert max(c["floor_mm"] for c in report["chains"]) > 5.0  # the hands start far off the fold
     assert report["weighted_floor"] == pytest.approx(
         sum(c["weight"] * c["floor"] for c in report["chains"]), rel=1e-9, abs=1e-12
+    )
+    assert report["weighted_bound"] == pytest.approx(
+        sum(c["weight"] * c["bound"] for c in report["chains"]), rel=1e-9, abs=1e-12
     )
     timings = report["timings_s"]
     assert "total" in timings and {"load", "design_other", "document", "movie"} <= set(timings)

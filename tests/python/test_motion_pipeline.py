@@ -251,6 +251,9 @@ def test_synthetic_rig_recovers_its_mechanism(name):
     assert arm.mapping == RIGS[name]
     assert arm.status == "animated", arm.reason
     assert arm.error_mm < NEAR_ZERO_MM
+    # A mechanism alone follows it too (its own, or one that ties: a diagonal whose step rises
+    # straight draws a vertical path as well): the best-alone bound is near 0, not the page.
+    assert arm.bound_mm < NEAR_ZERO_MM and arm.bound_mechanism != "printed"
     # the achieved path is the known one at every sample
     want = make_animations.known_path(known, arm.s)
     assert np.abs(np.asarray(arm.achieved) - want).max() < ONE_PERCENT

@@ -248,7 +248,8 @@ def _print_summary(report, files):
         why = f" ({chain['reason']})" if chain["reason"] else ""
         print(
             f"chain {chain['name']}: {chain['mechanism']}, {chain['status']}{why}, error "
-            f"{steps.g(chain['error'])} (floor {steps.g(chain['floor'])}), weight "
+            f"{steps.g(chain['error'])} (floor {steps.g(chain['floor'])}, best alone "
+            f"{steps.g(chain.get('bound'))} by {chain.get('bound_mechanism') or 'n/a'}), weight "
             f"{steps.g(chain['weight'])}"
         )
     print(

@@ -15,7 +15,7 @@ VERSION = 1
 
 def chain_entry(chain):
     """One ChainReport: {name, mechanism (the mapping), mechanisms, error, error_mm, floor,
-    floor_mm, weight, status, reason, s, target, achieved}."""
+    floor_mm, bound, bound_mm, bound_mechanism, weight, status, reason, s, target, achieved}."""
     return {
         "name": chain.name,
         "mechanism": chain.mapping,
@@ -24,6 +24,9 @@ def chain_entry(chain):
         "error_mm": float(chain.error_mm),
         "floor": float(chain.floor),
         "floor_mm": float(chain.floor_mm),
+        "bound": float(getattr(chain, "bound", 0.0)),
+        "bound_mm": float(getattr(chain, "bound_mm", 0.0)),
+        "bound_mechanism": str(getattr(chain, "bound_mechanism", "")),
         "weight": float(chain.weight),
         "status": chain.status,
         "reason": chain.reason,
@@ -88,6 +91,9 @@ def build_report(*, animation_file, animation, options, result, validity, stages
         "chains": chains,
         "weighted_error": float(result.weighted_error) if result is not None else None,
         "weighted_floor": float(result.weighted_floor) if result is not None else None,
+        "weighted_bound": (
+            float(getattr(result, "weighted_bound", 0.0)) if result is not None else None
+        ),
         "iterations": int(result.iterations) if result is not None else 0,
         "cost": float(result.cost) if result is not None else None,
         "timings_s": timings(stages, total_s),

@@ -49,6 +49,23 @@ std::string own_conflict(const MotionDesign& design, int j, int own_slot)
     return why.str();
 }
 
+// The best one mechanism does on chain j alone, collisions ignored: its own candidates (fitted
+// to its path in map_chains) and its part printed on the page.
+void set_bound(const AnnealProblem& p, int j, const ChainTarget& c, ChainReport& cr)
+{
+    Slot printed;
+    printed.printed = true;
+    printed.chains = {j};
+    cr.bound_mm = carried_error(printed, c);
+    cr.bound_mechanism = "printed";
+    for (const Candidate& candidate : p.candidates[j])
+        if (std::isfinite(candidate.error_mm) && candidate.error_mm < cr.bound_mm) {
+            cr.bound_mm = candidate.error_mm;
+            cr.bound_mechanism = to_string(candidate.mechanism.kind());
+        }
+    cr.bound = cr.bound_mm / p.diagonal;
+}
+
 } // namespace
 
 void report_design(const MotionDesign& design, MotionResult& r)
@@ -127,6 +144,8 @@ void report_design(const MotionDesign& design, MotionResult& r)
         cr.floor_mm = reach_floor_mm(c, p.card);
         cr.floor = cr.floor_mm / p.diagonal;
         r.weighted_floor += c.weight * cr.floor;
+        set_bound(p, j, c, cr);
+        r.weighted_bound += c.weight * cr.bound;
         r.chains.push_back(cr);
     }
     if (!r.valid)

@@ -52,6 +52,12 @@ struct ChainReport {
     /// what the card shows across the fold while nearly closed), / the diagonal, and in mm
     double floor = 0.0;
     double floor_mm = 0.0;
+    /// The best one mechanism does on this chain alone, collisions ignored: the lowest E_m of its
+    /// own candidates (each kind fitted to its path) and of its part printed on the page, / the
+    /// diagonal and in mm, and that mechanism's kind ("printed" for the page)
+    double bound = 0.0;
+    double bound_mm = 0.0;
+    std::string bound_mechanism;
     double weight = 0.0;        ///< v_j
     std::string status;         ///< "animated", "merged" or "stationary"
     std::string reason;         ///< why merged or stationary; empty when animated as mapped
@@ -70,6 +76,7 @@ struct MotionResult {
     bool valid = false;          ///< the simulator's full validity check passed on `scaffold`
     double weighted_error = 0.0; ///< Σ v_j E_m(j) / diagonal
     double weighted_floor = 0.0; ///< Σ v_j floor(j): no design on this card scores lower
+    double weighted_bound = 0.0; ///< Σ v_j bound(j): each chain with its best mechanism alone
     long iterations = 0;         ///< annealing iterations run (all search chains)
     double cost = 0.0;           ///< eq 6.5 of the returned state
     StageTimings timings; ///< each stage's seconds, in order ("targets" first), and the call's
