@@ -256,7 +256,7 @@ def _report(common, result, design, stages, files):
         **common,
         result=result,
         validity=design["validity"],
-        metrics=None,  # set by _add_metrics once the measure is done
+        metrics=None,  # run() sets it once the measure on its thread is done
         patches=design["patches"],
         stages=stages.timings,
         total_s=stages.total(),
