@@ -31,7 +31,9 @@ def _animate(tmp_path, name, *flags):
     )
     assert run.returncode == 0, run.stderr[-2000:]
     with open(out / "report.json") as f:
-        return json.load(f), known
+        report = json.load(f)
+    report["_stderr"] = run.stderr  # what the maker read, for the tests
+    return report, known
 
 
 def test_a_walk_has_its_limbs_as_chains_stays_on_the_card_and_shows_one_stroke(tmp_path):
@@ -48,6 +50,9 @@ def test_a_walk_has_its_limbs_as_chains_stays_on_the_card_and_shows_one_stroke(t
     assert window["chosen"] and window["score"] > 1.1 * window["whole_score"]
     # One stroke of a 1.1 s cycle: between a quarter and a whole cycle of frames at 120 fps.
     shown = (targets["last_frame"] - targets["first_frame"]) / known["fps"]
+    # The maker is told which frames are shown and how to choose others.
+    assert f"showing frames {targets['first_frame']}-{targets['last_frame']}" in report["_stderr"]
+    assert "--first-frame and --last-frame choose others" in report["_stderr"]
     assert 0.25 <= shown <= 1.1
     assert report["valid"] and report["sheets_ok"]
     assert report["weighted_error"] < 0.10
@@ -58,6 +63,7 @@ def test_a_walk_has_its_limbs_as_chains_stays_on_the_card_and_shows_one_stroke(t
 def test_named_frames_are_shown_as_named(tmp_path):
     report, _ = _animate(tmp_path, "walk", "--first-frame", "0", "--last-frame", "200")
     assert report["targets"]["window"]["chosen"] is False
+    assert "showing frames" not in report["_stderr"]
     assert (report["targets"]["first_frame"], report["targets"]["last_frame"]) == (0, 200)
 
 

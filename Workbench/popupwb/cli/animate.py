@@ -153,6 +153,9 @@ def run(args):
         report = _report(common, None, None, stages, files)
         return steps.report_no_design(args, args.animation, e, report, files, say)
     _add_core_stages(stages, result.timings, time.perf_counter() - started)
+    shown = motion_run.frames_shown(result.targets, "--first-frame and --last-frame")
+    if shown:
+        say(shown)
     say(
         f"{len(result.chains)} chain(s) on {len(result.mechanisms)} mechanism(s); weighted "
         f"motion error {result.weighted_error:.4f} of the character's diagonal"

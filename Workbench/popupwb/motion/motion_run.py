@@ -66,6 +66,18 @@ def motion_options(
     return option_fields.raise_if_bad(options, flags)
 
 
+def frames_shown(targets, how_to_choose):
+    """A sentence naming the frames the core chose (targets.window, docs/MATH.md "The frame
+    window"), `how_to_choose` telling the maker how to name others; "" when they named them."""
+    window = dict(getattr(targets, "window", None) or {})
+    if not window.get("chosen"):
+        return ""
+    return (
+        f"showing frames {targets.first_frame}-{targets.last_frame}, the stroke a card follows "
+        f"best ({how_to_choose} choose others)"
+    )
+
+
 def options_dict(options):
     """The MotionOptions as plain JSON values (for the report): every field of the core's
     table, the view's under "view" and the chains' under "chains"."""

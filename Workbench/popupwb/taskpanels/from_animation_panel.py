@@ -176,8 +176,10 @@ class FromAnimationPanel(LongJobPanel):
         result = self.result
         chains = ", ".join(f"{c.name} {c.mapping} ({c.status})" for c in result.chains)
         verdict = "valid" if result.valid else "NOT valid"
+        shown = motion_run.frames_shown(result.targets, "First and Last frame")
         return (
-            f"{len(result.chains)} chain(s) on {len(result.mechanisms)} mechanism(s)"
+            (f"{shown[0].upper()}{shown[1:]}; " if shown else "")
+            + f"{len(result.chains)} chain(s) on {len(result.mechanisms)} mechanism(s)"
             f"{': ' + chains if chains else ''}; weighted motion error "
             f"{result.weighted_error:.3f} (no design on this card under "
             f"{result.weighted_floor:.3f}); {verdict}. OK builds the card."
