@@ -10,6 +10,7 @@
 #include "binding_support.hpp"
 #include "point_rows.hpp"
 #include "popup/motion/design_motion.hpp"
+#include "popup/motion/printed_parts.hpp"
 
 namespace py = pybind11;
 using namespace popup;
@@ -122,4 +123,17 @@ void bind_motion(py::module_& m)
         "The animated pop-up of thesis ch. 6 (DesignError on bad input or options; valid False "
         "with diagnostics when the full simulator still refuses the card; popupcore.Cancelled "
         "when cancel is set).");
+
+    py::class_<PrintedPart>(m, "PrintedPart",
+                            "One piece of the character as the card prints it (thesis Fig 6.9)")
+        .def_readonly("mechanism", &PrintedPart::mechanism,
+                      "the mechanism carrying the limb; '' for the body")
+        .def_readonly("parts", &PrintedPart::parts,
+                      "that mechanism's parts it is printed on; empty for the body")
+        .def_readonly("chains", &PrintedPart::chains, "the chains it shows; empty for the body")
+        .def_readonly("mesh", &PrintedPart::mesh, "its triangles at the last frame, card mm");
+    m.def("printed_parts", &printed_parts, py::arg("animation"), py::arg("result"),
+          "The character split as the card prints it: the body first, then one limb per "
+          "mechanism that carries chains (empty mesh when no triangle is skinned to them alone); "
+          "[] without a skinned mesh.");
 }

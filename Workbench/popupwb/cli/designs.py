@@ -16,9 +16,12 @@ from popupwb.readable_file import unreadable
 # CuttingSheet features say ({CuttingSheet Name: {piece: side}}), empty for anything else.
 # `patch_titles` ({patch id: maker title}, patch_titles.py) names a card's patches in findings.
 # `model` is the ModelMesh (card mm) a card was designed from (card.SourceModel, `popup fit`), whose
-# appearance the sheets print as artwork; None for anything else.
+# appearance the sheets print as artwork; None for anything else. `limbs` are an animated
+# character's limbs (model_source.card_limbs), each printed on its mechanism's moving parts alone.
 Design = collections.namedtuple(
-    "Design", "scaffold fields printed_sides patch_titles model", defaults=({}, {}, None)
+    "Design",
+    "scaffold fields printed_sides patch_titles model limbs",
+    defaults=({}, {}, None, ()),
 )
 
 
@@ -62,12 +65,14 @@ def _card_design(path, card, several, with_model=False):
         where = f"{path}: card {card.Label}" if several else path
         hint = " (--card checks another card alone)" if several else ""
         raise InputError(f"{where}: {problems[0]}{hint}")
+    prints = with_model and card_prints_artwork(card)
     return Design(
         built.scaffold.copy(),
         {"object": card.Name, "label": card.Label},
         _cutting_sides(card),
         titles_of_card(card, built),
-        _source_model(path, card) if with_model and card_prints_artwork(card) else None,
+        _source_model(path, card) if prints else None,
+        _limbs(path, card) if prints else (),
     )
 
 
@@ -79,6 +84,16 @@ def _source_model(path, card):
         return card_model(card)
     except ValueError as e:
         raise InputError(f"{path}: {card.Label}.SourceModel: {one_line(e)}")
+
+
+def _limbs(path, card):
+    """The limbs of an animated card's character (popupwb.model.model_source.card_limbs)."""
+    from popupwb.model.model_source import card_limbs
+
+    try:
+        return card_limbs(card)
+    except ValueError as e:
+        raise InputError(f"{path}: {card.Label}: a limb's mesh: {one_line(e)}")
 
 
 def _cutting_sides(card):

@@ -233,7 +233,9 @@ def _artwork(args, design, sheet_set):
     from popupwb.sheets.print_artwork import artwork_warnings, source_model_artwork
 
     try:
-        artwork = source_model_artwork(design.model, design.scaffold, sheet_set, args.design)
+        artwork = source_model_artwork(
+            design.model, design.scaffold, sheet_set, args.design, limbs=design.limbs
+        )
     except ValueError as e:
         raise InputError(one_line(e))
     for d in artwork_warnings(artwork):  # an unreadable texture: the model prints shaded

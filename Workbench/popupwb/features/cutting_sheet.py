@@ -434,7 +434,7 @@ def sheet_artwork(obj, sheet_set):
     read through popupcore.load_model, else the mesh the card keeps); None for a card without a
     source model. ValueError naming obj when the layout is out of date or the model cannot be
     rendered."""
-    from popupwb.model.model_source import card_model
+    from popupwb.model.model_source import card_limbs, card_model
     from popupwb.sheets.print_artwork import source_model_artwork
 
     card = obj.Card
@@ -447,6 +447,7 @@ def sheet_artwork(obj, sheet_set):
         )
     try:
         model = card_model(card)
+        limbs = card_limbs(card) if model is not None else ()
     except ValueError as error:
         raise ValueError(f"{obj.Label}: {card.Label}.SourceModel: {error}") from None
     if model is None:
@@ -459,6 +460,7 @@ def sheet_artwork(obj, sheet_set):
         run=lambda function, *args: progress.run(
             f"{obj.Label}: printing {card.Label}'s model on the patches", function, *args
         ),
+        limbs=limbs,
     )
 
 

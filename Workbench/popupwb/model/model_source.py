@@ -6,6 +6,7 @@ Model files (STL, OBJ, PLY, OFF, glTF, ...) are read by popupcore.load_model (as
 covers what lives in FreeCAD. Errors are ValueError naming the object or file and what is wrong.
 """
 
+import collections
 import os
 
 import numpy as np
@@ -181,10 +182,38 @@ def card_model(card):
             return in_card_frame(model_file.load_model(path), matrix)
         except (ValueError, RuntimeError, OSError, AttributeError):
             pass  # changed or unreadable since: the kept mesh still has the shape
-    points, facets = source.Mesh.Topology  # placed where the card is placed
+    return _kept_mesh(source, card)
+
+
+def _kept_mesh(source, card):
+    """The ModelMesh a Mesh feature `source` keeps, in `card`'s frame (it stands where the card
+    is placed)."""
+    from popupwb.core import popupcore
+
+    points, facets = source.Mesh.Topology
     to_card = card.Placement.inverse().toMatrix()
     local = [to_card.multVec(p) for p in points]
     vertices = np.array([[p.x, p.y, p.z] for p in local], dtype=float).reshape(-1, 3)
     return popupcore.ModelMesh(
         vertices, np.array(facets, dtype=np.int64).reshape(-1, 3), source=source.Label
     )
+
+
+# A limb of an animated character (popupwb.motion.design_from_motion): its mesh in the card's
+# frame and the names of the patches it is printed on ("<mechanism Name>.<part>").
+PrintedLimb = collections.namedtuple("PrintedLimb", "mesh patches")
+
+
+def card_limbs(card):
+    """The limbs `card`'s mechanisms carry (each mechanism's LimbModel, printed on its
+    LimbParts alone; thesis Fig 6.9), in the card's frame; [] for a card without any."""
+    from popupwb.model.card_scaffold import mechanisms_of
+
+    limbs = []
+    for mechanism in mechanisms_of(card):
+        limb = getattr(mechanism, "LimbModel", None)
+        if limb is None or not is_mesh_object(limb):
+            continue
+        patches = frozenset(f"{mechanism.Name}.{part}" for part in mechanism.LimbParts)
+        limbs.append(PrintedLimb(_kept_mesh(limb, card), patches))
+    return limbs

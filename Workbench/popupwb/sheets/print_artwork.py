@@ -129,17 +129,13 @@ def place_artwork(sheet_set, artwork):
     return placed
 
 
-def render_sheet_artwork(mesh, scaffold, sheet_set, **options):
-    """{patch id: popupcore.PatchArtwork} for every patch the sheet set lays out, each rendered
-    from the side its sheet prints (back_side where the flat patch's back faces up), the
-    texture read once per side. `mesh`: a popupcore.ModelMesh in card mm; `scaffold`: the
-    design at its design state; `sheet_set`: the popupcore.SheetSet export.layout gives;
-    `options`: the keywords of popupcore.render_artworks (pixels_per_mm, depth, behind, light,
-    ambient, max_pixels). popupcore.DesignError names a bad option or model."""
-    from popupwb.core import popupcore
+# A limb is all that prints on its patches: it counts at any depth in front of them and this far
+# behind (the raised platform of a floating layer stands above the limb it shows), in mm.
+LIMB_BEHIND_MM = 1000.0
 
-    if "back_side" in options:
-        raise ValueError("render_sheet_artwork chooses back_side per patch from the sheet set")
+
+def _patch_sides(sheet_set):
+    """{patch id: whether its sheet prints its back side} of every laid-out patch."""
     sides = {}
     for piece in sheet_set.pieces:
         for flat in piece.patches:
@@ -149,23 +145,52 @@ def render_sheet_artwork(mesh, scaffold, sheet_set, **options):
                     "(written by an older PopUp); lay the sheets out again"
                 )
             sides[flat.id] = not flat.normal_side_up()
-    artwork = {}
+    return sides
+
+
+def _render_on(artwork, mesh, patches, sides, options):
+    """Renders `mesh` on those `patches` the sheets lay out, each from its printed side."""
+    from popupwb.core import popupcore
+
     for back in (False, True):
-        patches = [p for p in scaffold.patches if sides.get(p.id) is back]
-        if patches:
-            for art in popupcore.render_artworks(mesh, patches, back_side=back, **options):
+        chosen = [p for p in patches if sides.get(p.id) is back]
+        if chosen:
+            for art in popupcore.render_artworks(mesh, chosen, back_side=back, **options):
                 artwork[art.patch] = art
+
+
+def render_sheet_artwork(mesh, scaffold, sheet_set, limbs=(), **options):
+    """{patch id: popupcore.PatchArtwork} for every patch the sheet set lays out, each rendered
+    from the side its sheet prints (back_side where the flat patch's back faces up), the
+    texture read once per side. `mesh`: a popupcore.ModelMesh in card mm; `scaffold`: the
+    design at its design state; `sheet_set`: the popupcore.SheetSet export.layout gives;
+    `limbs`: model_source.PrintedLimb of an animated character, each printed alone on its
+    patches (at any depth: LIMB_BEHIND_MM), `mesh` (the body) on all the others; `options`: the
+    keywords of popupcore.render_artworks (pixels_per_mm, depth, behind, light, ambient,
+    max_pixels). popupcore.DesignError names a bad option or model."""
+    if "back_side" in options:
+        raise ValueError("render_sheet_artwork chooses back_side per patch from the sheet set")
+    sides = _patch_sides(sheet_set)
+    artwork = {}
+    limb_patches = set()
+    for limb in limbs:
+        patches = [p for p in scaffold.patches if p.name in limb.patches]
+        limb_patches.update(p.id for p in patches)
+        window = dict(options, depth=float("inf"), behind=LIMB_BEHIND_MM)
+        _render_on(artwork, limb.mesh, patches, sides, window)
+    body = [p for p in scaffold.patches if p.id not in limb_patches]
+    _render_on(artwork, mesh, body, sides, options)
     return artwork
 
 
-def source_model_artwork(mesh, scaffold, sheet_set, owner, run=None):
-    """render_sheet_artwork of a card's source model, as the GUI export and `popup sheet` both
-    print it; `run(function, *args)` runs the rendering (progress.run in the GUI: progress and
-    cancel), else it runs here. ValueError "<owner>: artwork of the source model: <why>" when
-    the model cannot be rendered."""
+def source_model_artwork(mesh, scaffold, sheet_set, owner, run=None, limbs=()):
+    """render_sheet_artwork of a card's source model (and its limbs), as the GUI export and
+    `popup sheet` both print it; `run(function, *args)` runs the rendering (progress.run in the
+    GUI: progress and cancel), else it runs here. ValueError "<owner>: artwork of the source
+    model: <why>" when the model cannot be rendered."""
     run = run or (lambda function, *args: function(*args))
     try:
-        return run(render_sheet_artwork, mesh, scaffold, sheet_set)
+        return run(render_sheet_artwork, mesh, scaffold, sheet_set, limbs)
     except ValueError as error:  # DesignError: the model cannot be rendered
         why = " ".join(str(error).split())
         raise ValueError(f"{owner}: artwork of the source model: {why}") from None

@@ -10,6 +10,7 @@
 #include "motion/motion_outlines.hpp"
 #include "motion_fixtures.hpp"
 #include "popup/motion/design_motion.hpp"
+#include "popup/motion/printed_parts.hpp"
 #include "popup/simulation/check_validity.hpp"
 
 namespace popup::motion {
@@ -203,6 +204,61 @@ TEST(MotionOutlines, WithoutAMeshTheReportSaysThereIsNoOutline)
                d.message.find("no skinned mesh") != std::string::npos;
     });
     EXPECT_TRUE(said);
+}
+
+// printed_parts on the same rig: the arm's box is the limb on the horizontal translation's M,
+// the body box (and the head, unless a floating layer carries it) the body; each box's posed
+// corners are the authored ones (the mesh is authored at the last frame and the placement is 1:1),
+// so the split is checked against the boxes as written above.
+TEST(PrintedParts, TheArmIsPrintedOnItsMechanismAndTheBodyWithoutIt)
+{
+    const Animation a = rig();
+    const Result<MotionResult> r = design_motion(a, options_for(a));
+    ASSERT_TRUE(r.ok);
+    const ChainReport& arm = chain_named(r.value, "arm");
+    ASSERT_EQ(arm.status, "animated") << arm.reason;
+    const std::vector<PrintedPart> printed = printed_parts(a, r.value);
+    ASSERT_GE(printed.size(), 2u);
+    const PrintedPart& body = printed[0];
+    EXPECT_TRUE(body.mechanism.empty());
+    EXPECT_TRUE(body.parts.empty());
+    // Every triangle once: the body's, the head's and the arm's boxes, 12 each. The head is
+    // printed on the page, or on a floating layer when the search gives it one.
+    std::size_t triangles = 0;
+    for (const PrintedPart& p : printed)
+        triangles += p.mesh.triangles.size();
+    EXPECT_EQ(triangles, 36u);
+    const auto on_arm = std::find_if(printed.begin(), printed.end(), [&](const PrintedPart& p) {
+        return p.mechanism == arm.mechanisms.front();
+    });
+    ASSERT_NE(on_arm, printed.end());
+    const PrintedPart& limb = *on_arm;
+    EXPECT_EQ(body.mesh.triangles.size(), printed.size() == 2 ? 24u : 12u);
+    EXPECT_EQ(limb.mechanism, arm.mechanisms.front());
+    EXPECT_EQ(limb.parts, std::vector<std::string>{"M"});
+    EXPECT_EQ(limb.chains, std::vector<std::string>{"arm"});
+    ASSERT_EQ(limb.mesh.triangles.size(), 12u);
+    Eigen::AlignedBox3d box;
+    for (const Vec3& v : limb.mesh.vertices)
+        box.extend(v);
+    const Vec3 offset = r.value.targets.animation_to_card.topRightCorner<3, 1>();
+    EXPECT_LT((box.min() - (arm_lo + offset)).norm(), 1e-6);
+    EXPECT_LT((box.max() - (arm_hi + offset)).norm(), 1e-6);
+    for (const Vec3& v : body.mesh.vertices) // no corner of the arm's box is in the body
+        EXPECT_FALSE(
+            v.x() > arm_lo.x() + offset.x() - 1e-9 && v.x() < arm_hi.x() + offset.x() + 1e-9 &&
+            v.y() > arm_lo.y() + offset.y() - 1e-9 && v.y() < arm_hi.y() + offset.y() + 1e-9);
+}
+
+TEST(PrintedParts, WithoutAMeshThereIsNothingToPrint)
+{
+    Animation a = rig();
+    const MotionOptions o = options_for(a);
+    a.mesh = ModelMesh{};
+    a.skin.clear();
+    const Result<MotionResult> r = design_motion(a, o);
+    ASSERT_TRUE(r.ok);
+    EXPECT_TRUE(printed_parts(a, r.value).empty());
 }
 
 } // namespace popup::motion
