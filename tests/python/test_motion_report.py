@@ -20,6 +20,9 @@ def _chain(name, mapping, status, reason="", error=0.01, weight=0.5):
         error_mm=error * 200.0,
         floor=error / 2,
         floor_mm=error * 100.0,
+        bound=error * 0.75,
+        bound_mm=error * 150.0,
+        bound_mechanism=mapping,
         weight=weight,
         status=status,
         reason=reason,
@@ -42,9 +45,16 @@ def _result(core):
         last_frame=30,
         diagonal_mm=200.0,
         animation_to_card=np.eye(4),
+        travel_removed_mm=0.0,
+        window={"chosen": False, "score": 0.5, "whole_score": 0.5},
         chains=[
             types.SimpleNamespace(
-                name=c.name, bones=[i, i + 1], parent_chain=-1, weight=c.weight, pruned=[]
+                name=c.name,
+                bones=[i, i + 1],
+                parent_chain=-1,
+                weight=c.weight,
+                pruned=[],
+                reach=40.0,
             )
             for i, c in enumerate(chains)
         ],
@@ -63,6 +73,7 @@ def _result(core):
         valid=True,
         weighted_error=0.6 * 0.02 + 0.3 * 0.01,
         weighted_floor=0.6 * 0.01 + 0.3 * 0.005,
+        weighted_bound=0.6 * 0.015 + 0.3 * 0.0075,
         iterations=3000,
         cost=12.5,
         diagnostics=[],

@@ -24,9 +24,9 @@ def chain_entry(chain):
         "error_mm": float(chain.error_mm),
         "floor": float(chain.floor),
         "floor_mm": float(chain.floor_mm),
-        "bound": float(getattr(chain, "bound", 0.0)),
-        "bound_mm": float(getattr(chain, "bound_mm", 0.0)),
-        "bound_mechanism": str(getattr(chain, "bound_mechanism", "")),
+        "bound": float(chain.bound),
+        "bound_mm": float(chain.bound_mm),
+        "bound_mechanism": str(chain.bound_mechanism),
         "weight": float(chain.weight),
         "status": chain.status,
         "reason": chain.reason,
@@ -60,8 +60,8 @@ def _targets_entry(targets):
         "first_frame": int(targets.first_frame),
         "last_frame": int(targets.last_frame),
         "diagonal_mm": float(targets.diagonal_mm),
-        "travel_removed_mm": float(getattr(targets, "travel_removed_mm", 0.0)),
-        "window": dict(getattr(targets, "window", None) or {}),
+        "travel_removed_mm": float(targets.travel_removed_mm),
+        "window": dict(targets.window),
         "animation_to_card": np.asarray(targets.animation_to_card, dtype=float),
         "chains": [
             {
@@ -70,7 +70,7 @@ def _targets_entry(targets):
                 "parent_chain": int(c.parent_chain),
                 "weight": float(c.weight),
                 "pruned": list(c.pruned),
-                "reach": float(getattr(c, "reach", 0.0)),
+                "reach": float(c.reach),
             }
             for c in targets.chains
         ],
@@ -91,9 +91,7 @@ def build_report(*, animation_file, animation, options, result, validity, stages
         "chains": chains,
         "weighted_error": float(result.weighted_error) if result is not None else None,
         "weighted_floor": float(result.weighted_floor) if result is not None else None,
-        "weighted_bound": (
-            float(getattr(result, "weighted_bound", 0.0)) if result is not None else None
-        ),
+        "weighted_bound": (float(result.weighted_bound) if result is not None else None),
         "iterations": int(result.iterations) if result is not None else 0,
         "cost": float(result.cost) if result is not None else None,
         "timings_s": timings(stages, total_s),
