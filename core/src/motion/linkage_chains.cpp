@@ -26,10 +26,11 @@ std::vector<std::vector<int>> vertices_by_bone(const Animation& animation)
     return by_bone;
 }
 
-/// Per bone: the distance from its parent's origin to its own at the first frame (0 for a root).
-std::vector<double> bone_lengths(const Animation& animation)
+/// Per bone: the distance from its parent's origin to its own in the pose `global` (the first
+/// frame; 0 for a root).
+std::vector<double> bone_lengths(const Animation& animation,
+                                 const std::vector<Eigen::Isometry3d>& global)
 {
-    const std::vector<Eigen::Isometry3d> global = forward_kinematics(animation, 0.0);
     std::vector<double> length(animation.bones.size(), 0.0);
     for (size_t b = 0; b < animation.bones.size(); ++b)
         if (animation.bones[b].parent >= 0)
@@ -42,11 +43,12 @@ std::vector<double> bone_lengths(const Animation& animation)
 /// from: a curling finger (a third), not a suit's jitter on a still leg (under 2 %).
 constexpr double kMoves = 0.1;
 
-/// The largest side of the box of every joint at the first frame (file units).
-double character_size(const Animation& animation)
+/// The largest side of the box of every joint in the pose `global` (the first frame; file
+/// units).
+double character_size(const std::vector<Eigen::Isometry3d>& global)
 {
     Eigen::AlignedBox3d box;
-    for (const Eigen::Isometry3d& m : forward_kinematics(animation, 0.0))
+    for (const Eigen::Isometry3d& m : global)
         box.extend(m.translation());
     return box.isEmpty() ? 0.0 : box.sizes().maxCoeff();
 }
@@ -175,15 +177,24 @@ void prune_short(std::vector<Working>& chains, double min_reach, const std::vect
     merge_lone_children(chains);
 }
 
-/// Per chain: whether its tip moves against the bone it hangs from by more than kMoves of its
-/// reach over the take (about 200 frames looked at); a root chain never does.
-std::vector<bool> chains_moving(const Animation& animation, const std::vector<Working>& chains)
+using Poses = std::vector<std::vector<Eigen::Isometry3d>>;
+
+/// The skeleton at up to 200 frames spread over the take: enough to see what moves.
+Poses sampled_poses(const Animation& animation)
 {
     const int frames = animation.frames();
     const int step = std::max(1, frames / 200);
-    std::vector<std::vector<Eigen::Isometry3d>> poses;
+    Poses poses;
     for (int f = 0; f < frames; f += step)
         poses.push_back(forward_kinematics(animation, double(f)));
+    return poses;
+}
+
+/// Per chain: whether its tip moves against the bone it hangs from by more than kMoves of its
+/// reach over `poses` (sampled_poses); a root chain never does.
+std::vector<bool> chains_moving(const Animation& animation, const Poses& poses,
+                                const std::vector<Working>& chains)
+{
     std::vector<bool> moving(chains.size(), false);
     for (size_t c = 0; c < chains.size(); ++c) {
         const int from = animation.bones[chains[c].bones.front()].parent;
@@ -204,10 +215,11 @@ std::vector<bool> chains_moving(const Animation& animation, const std::vector<Wo
 void prune_short_unless_all_that_moves(std::vector<Working>& chains, double min_reach,
                                        const Animation& animation)
 {
-    const std::vector<bool> moved = chains_moving(animation, chains);
+    const Poses poses = sampled_poses(animation);
+    const std::vector<bool> moved = chains_moving(animation, poses, chains);
     std::vector<Working> pruned = chains;
     prune_short(pruned, min_reach, std::vector<bool>(chains.size(), false), animation);
-    const std::vector<bool> still_moving = chains_moving(animation, pruned);
+    const std::vector<bool> still_moving = chains_moving(animation, poses, pruned);
     bool left_moving = false, lost_moving = false;
     for (size_t c = 0; c < chains.size(); ++c) {
         left_moving = left_moving || (pruned[c].alive && still_moving[c]);
@@ -265,7 +277,8 @@ std::vector<LinkageChain> linkage_chains(const Animation& animation, const Chain
     const bool skinned = !animation.skin.empty();
     const std::vector<std::vector<int>> by_bone =
         skinned ? vertices_by_bone(animation) : std::vector<std::vector<int>>(n);
-    const std::vector<double> length = bone_lengths(animation);
+    const std::vector<Eigen::Isometry3d> first = forward_kinematics(animation, 0.0);
+    const std::vector<double> length = bone_lengths(animation, first);
     std::vector<double> amount = length;
     if (skinned)
         for (int b = 0; b < n; ++b)
@@ -278,8 +291,8 @@ std::vector<LinkageChain> linkage_chains(const Animation& animation, const Chain
     prune_light(chains, options.prune_fraction * total / n, animation);
     merge_lone_children(chains);
     if (options.min_chain_size > 0.0)
-        prune_short_unless_all_that_moves(
-            chains, options.min_chain_size * character_size(animation), animation);
+        prune_short_unless_all_that_moves(chains, options.min_chain_size * character_size(first),
+                                          animation);
     return finished(chains, animation);
 }
 

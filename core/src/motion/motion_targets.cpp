@@ -65,24 +65,29 @@ bool check_view(const Animation& animation, const MotionView& view, const ViewRe
     return true;
 }
 
+/// The part of `moved` along the ground: across `up` (unit), what the walk travels.
+Vec3 along_ground(const Vec3& up, const Vec3& moved)
+{
+    return moved - up * up.dot(moved);
+}
+
 /// Poses with the root's travel along the ground taken out (docs/MATH.md, "A walk stays on the
 /// card"): at each frame the whole skeleton moves back by its first root's travel across `up`
 /// since the last frame, so the last frame, whose posed mesh the card prints, is the file's own.
 struct InPlace {
     const Animation& animation;
     bool on = false;
-    Mat3 across = Mat3::Identity(); ///< projection onto the ground (across up)
-    Vec3 at_last = Vec3::Zero();    ///< the first root at the last frame
+    Vec3 up = Vec3::UnitY();     ///< unit
+    Vec3 at_last = Vec3::Zero(); ///< the first root at the last frame
 
-    InPlace(const Animation& a, const Vec3& up, int last, bool remove) : animation(a), on(remove)
+    InPlace(const Animation& a, const Vec3& up_, int last, bool remove)
+        : animation(a), on(remove), up(up_.normalized())
     {
-        const Vec3 u = up.normalized();
-        across -= u * u.transpose();
         at_last = forward_kinematics(a, double(last))[0].translation();
     }
     Vec3 travel(const Eigen::Isometry3d& root) const
     {
-        return on ? Vec3(across * (root.translation() - at_last)) : Vec3::Zero();
+        return on ? along_ground(up, root.translation() - at_last) : Vec3::Zero();
     }
     std::vector<Eigen::Isometry3d> pose(double frame) const
     {
@@ -106,10 +111,9 @@ struct InPlace {
 
 Vec3 ground_travel(const Animation& animation, const Vec3& up, int last_frame, double frame)
 {
-    const Vec3 u = up.normalized();
-    const Vec3 moved = forward_kinematics(animation, frame)[0].translation() -
-                       forward_kinematics(animation, double(last_frame))[0].translation();
-    return moved - u * u.dot(moved);
+    return along_ground(up.normalized(),
+                        forward_kinematics(animation, frame)[0].translation() -
+                            forward_kinematics(animation, double(last_frame))[0].translation());
 }
 
 Result<MotionTargets> motion_targets(const Animation& animation, const MotionView& view,
