@@ -59,13 +59,14 @@ TO_BLENDER = Matrix(((1, 0, 0), (0, 0, -1), (0, 1, 0)))
 
 
 def rest_skeleton():
-    """(root joint, {joint: (parent, head, tail)} in Blender metres) of the suit standing."""
+    """{joint: (parent, head, tail)} in Blender metres: the suit standing, each bone's tail at
+    its main child (the spine, the neck, the middle finger) or its end site."""
     root = captures.humanoid()
     at = joint_positions(root, {"Hips": {"Yposition": [HIP_HEIGHT]}}, 0)
     bones = {}
 
     def visit(joint, parent):
-        if joint.children:  # the tail at the middle finger, the neck, the spine: the main child
+        if joint.children:
             main = {"Hips": "Spine", "Spine2": "Neck"}.get(joint.name)
             child = next((c for c in joint.children if c.name == main), None)
             child = child or next(
@@ -79,7 +80,7 @@ def rest_skeleton():
             visit(child, joint.name)
 
     visit(root, None)
-    return root, bones
+    return bones
 
 
 def _blender(cm):
@@ -504,7 +505,7 @@ def known_answers(name, rig, body, frames):
 def write(name, out_dir):
     _, frames, _, _, _, _ = TAKES[name]
     bpy.ops.wm.read_factory_settings(use_empty=True)
-    _, bones = rest_skeleton()
+    bones = rest_skeleton()
     rig = make_armature(bones)
     body = make_mesh(rig, bones)
     rng = np.random.default_rng(sum(map(ord, "blender_" + name)))
