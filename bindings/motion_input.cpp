@@ -103,6 +103,10 @@ void bind_animation(py::module_& m)
         "frames slerp rotations and lerp translations between their neighbours.");
     m.def("posed_mesh", &posed_mesh, py::arg("animation"), py::arg("frame"),
           "The skinned mesh at a frame (linear blend skinning).");
+    m.def("character_root", &character_root, py::arg("animation"),
+          "The character's own root bone: the first root, or below it while a bone stands still "
+          "and has one child (a glTF or FBX armature node above the hips); what is above it is "
+          "not drawn or measured as the character.");
 }
 
 // Linkage chains, the card's view and the target paths.

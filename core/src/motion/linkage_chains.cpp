@@ -43,13 +43,15 @@ std::vector<double> bone_lengths(const Animation& animation,
 /// from: a curling finger (a third), not a suit's jitter on a still leg (under 2 %).
 constexpr double kMoves = 0.1;
 
-/// The largest side of the box of every joint in the pose `global` (the first frame; file
-/// units).
-double character_size(const std::vector<Eigen::Isometry3d>& global)
+/// The largest side of the box of the character's joints (not the still nodes above it) in the
+/// pose `global` (the first frame; file units).
+double character_size(const Animation& animation, const std::vector<Eigen::Isometry3d>& global)
 {
+    const std::vector<bool> above = above_character(animation);
     Eigen::AlignedBox3d box;
-    for (const Eigen::Isometry3d& m : global)
-        box.extend(m.translation());
+    for (std::size_t b = 0; b < global.size(); ++b)
+        if (!above[b])
+            box.extend(global[b].translation());
     return box.isEmpty() ? 0.0 : box.sizes().maxCoeff();
 }
 
@@ -291,8 +293,8 @@ std::vector<LinkageChain> linkage_chains(const Animation& animation, const Chain
     prune_light(chains, options.prune_fraction * total / n, animation);
     merge_lone_children(chains);
     if (options.min_chain_size > 0.0)
-        prune_short_unless_all_that_moves(chains, options.min_chain_size * character_size(first),
-                                          animation);
+        prune_short_unless_all_that_moves(
+            chains, options.min_chain_size * character_size(animation, first), animation);
     return finished(chains, animation);
 }
 

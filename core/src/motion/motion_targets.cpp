@@ -77,22 +77,24 @@ Vec3 along_ground(const Vec3& up, const Vec3& moved)
 struct InPlace {
     const Animation& animation;
     bool on = false;
+    int bone = 0;                ///< character_root
     Vec3 up = Vec3::UnitY();     ///< unit
     Vec3 at_last = Vec3::Zero(); ///< the first root at the last frame
 
     InPlace(const Animation& a, const Vec3& up_, int last, bool remove)
-        : animation(a), on(remove), up(up_.normalized())
+        : animation(a), on(remove), bone(character_root(a)), up(up_.normalized())
     {
-        at_last = forward_kinematics(a, double(last))[0].translation();
+        at_last = forward_kinematics(a, double(last))[bone].translation();
     }
-    Vec3 travel(const Eigen::Isometry3d& root) const
+    /// How far the character has travelled along the ground in the pose `global`.
+    Vec3 travel(const std::vector<Eigen::Isometry3d>& global) const
     {
-        return on ? along_ground(up, root.translation() - at_last) : Vec3::Zero();
+        return on ? along_ground(up, global[bone].translation() - at_last) : Vec3::Zero();
     }
     std::vector<Eigen::Isometry3d> pose(double frame) const
     {
         std::vector<Eigen::Isometry3d> global = forward_kinematics(animation, frame);
-        const Vec3 back = travel(global[0]);
+        const Vec3 back = travel(global);
         for (Eigen::Isometry3d& g : global)
             g.pretranslate(-back);
         return global;
@@ -100,7 +102,7 @@ struct InPlace {
     ModelMesh mesh(double frame) const
     {
         ModelMesh posed = posed_mesh(animation, frame);
-        const Vec3 back = travel(forward_kinematics(animation, frame)[0]);
+        const Vec3 back = travel(forward_kinematics(animation, frame));
         for (Vec3& v : posed.vertices)
             v -= back;
         return posed;
@@ -111,9 +113,10 @@ struct InPlace {
 
 Vec3 ground_travel(const Animation& animation, const Vec3& up, int last_frame, double frame)
 {
+    const int bone = character_root(animation);
     return along_ground(up.normalized(),
-                        forward_kinematics(animation, frame)[0].translation() -
-                            forward_kinematics(animation, double(last_frame))[0].translation());
+                        forward_kinematics(animation, frame)[bone].translation() -
+                            forward_kinematics(animation, double(last_frame))[bone].translation());
 }
 
 Result<MotionTargets> motion_targets(const Animation& animation, const MotionView& view,
@@ -145,14 +148,18 @@ Result<MotionTargets> motion_targets(const Animation& animation, const MotionVie
 
     // The character's extent over the range, in the card's axes (before scale and placement):
     // every bone at every frame, and the skinned mesh at up to 32 frames.
+    // The still nodes above the character's root (an armature node at the file's origin) are not
+    // the character: counted, a walk filmed far from the origin shrank to a corner of the card.
+    const std::vector<bool> above = above_character(animation);
     Eigen::AlignedBox3d box;
     double travel = 0.0;
     for (int f = first; f <= last; ++f) {
         const std::vector<Eigen::Isometry3d> pose = forward_kinematics(animation, f);
-        const Vec3 back = in_place.travel(pose[0]);
+        const Vec3 back = in_place.travel(pose);
         travel = std::max(travel, back.norm());
-        for (const Eigen::Isometry3d& g : pose)
-            box.extend(axes * (g.translation() - back));
+        for (size_t b = 0; b < pose.size(); ++b)
+            if (!above[b])
+                box.extend(axes * (pose[b].translation() - back));
     }
     if (!animation.mesh.vertices.empty()) {
         const int stride = std::max(1, (last - first) / skinned_frames_for_extent);

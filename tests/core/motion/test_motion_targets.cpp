@@ -269,6 +269,42 @@ TEST(MotionTargets, AWalkStaysOnTheCardAsItsLastFrame)
 
 namespace {
 
+/// The walker under a still armature node far from it (30 back along x, as glTF and FBX exports
+/// put one above the hips): the node's bone 0, the walker's bones below it.
+Animation walker_under_a_node()
+{
+    Animation a = walker();
+    a.source = "walker under a node";
+    a.bones.insert(a.bones.begin(), {"Armature", -1});
+    for (std::size_t b = 1; b < a.bones.size(); ++b)
+        a.bones[b].parent += 1;
+    for (std::vector<Eigen::Isometry3d>& pose : a.local)
+        pose.insert(pose.begin(), rigid(Vec3(-30, 0, 0)));
+    for (std::vector<Eigen::Isometry3d>& pose : a.local)
+        pose[1].translation() += Vec3(30, 0, 0); // the hips where the walker's are
+    a.bind_inverse.assign(a.bones.size(), Eigen::Isometry3d::Identity());
+    return a;
+}
+
+} // namespace
+
+TEST(MotionTargets, TheHipsTravelNotTheStillNodeAboveThem)
+{
+    // The same figures as the walker alone (AWalkStaysOnTheCardAsItsLastFrame): the node neither
+    // travels nor counts in the character's extent.
+    const Animation a = walker_under_a_node();
+    const auto r = motion_targets(a, MotionView{});
+    ASSERT_TRUE(r.ok) << r.diagnostics[0].message;
+    EXPECT_NEAR(r.value.animation_to_card(0, 0), 84.0, 1e-9);
+    EXPECT_NEAR(r.value.travel_removed_mm, 840.0, 1e-9);
+    for (const Vec2& p : r.value.paths[2].effector)
+        EXPECT_LT((p - Vec2(-42.0, 21.0)).norm(), 1e-9);
+    // From the last frame (20) back to the first, the hips went back 10 along the ground.
+    EXPECT_LT((ground_travel(a, Vec3::UnitY(), 20, 0.0) - Vec3(-10, 0, 0)).norm(), 1e-12);
+}
+
+namespace {
+
 /// A hub with two arms of length 1 (on x and on y), swinging together ±60° about z as
 /// 60° · sin(2π t / 40) over 81 frames: two full swings back and forth.
 Animation swinging()

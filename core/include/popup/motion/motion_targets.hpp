@@ -40,8 +40,10 @@ struct MotionTargets {
     FrameWindow window;
 };
 
-/// The first root's travel along the ground (across `up`) from `last_frame` to `frame`, file
-/// units: what motion_targets takes out of every pose when it keeps a character in place.
+/// The character's travel along the ground (across `up`) from `last_frame` to `frame`, file
+/// units: what motion_targets takes out of every pose when it keeps a character in place. The
+/// first root travels, or below it the first bone that moves or branches (a glTF or FBX
+/// armature node above the hips stands still).
 Vec3 ground_travel(const Animation& animation, const Vec3& up, int last_frame, double frame);
 
 /// Forward kinematics over the frame range, projection on the card, adaptive sampling. Errors
