@@ -10,8 +10,11 @@ import pytest
 from cli_runner import assert_named_error, data, popup, read_report, run_design
 
 RIG = "animations/rig_four.bvh"
-ARMS = ("DiagonalArmFore", "HorizontalArmFore", "RotationArmFore", "VerticalArmFore")
-CHOSEN = ("RotationArmFore", "VerticalArmFore")
+ARMS = tuple(
+    "EndSite_" + arm
+    for arm in ("DiagonalArmFore", "HorizontalArmFore", "RotationArmFore", "VerticalArmFore")
+)
+CHOSEN = ("EndSite_RotationArmFore", "EndSite_VerticalArmFore")
 
 
 @pytest.fixture(scope="module")
@@ -66,7 +69,7 @@ def test_the_chosen_arms_move_and_the_others_are_held_still_by_the_maker(chosen)
 def test_an_unknown_chain_is_one_error_line_naming_it_and_the_chains_found(tmp_path, user_home):
     out = tmp_path / "out"
     proc = run_design(
-        "animate", data(RIG), out, "--chains", "RotationArmFore,Hand.L", home=user_home
+        "animate", data(RIG), out, "--chains", "EndSite_RotationArmFore,Hand.L", home=user_home
     )
     assert_named_error(proc, "--chains", '"Hand.L"', *ARMS)
     assert not os.path.exists(out / "design.FCStd")

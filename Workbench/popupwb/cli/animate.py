@@ -75,7 +75,7 @@ def add_parser(sub):
         "--chains",
         metavar="NAMES",
         help="animate only these chains, comma-separated, named as the report and --list-chains "
-        "name them (\"Hand.L,Foot.R\"); the others are held still; default: all",
+        'name them ("Hand.L,Foot.R"); the others are held still; default: all',
     )
     animate.add_argument(
         "--list-chains",
@@ -224,7 +224,7 @@ def _raise_if_unknown_chain(args, error):
         if d.get("parameter") == "animate_only"
     ]
     if unknown:
-        raise InputError(f"--chains {args.chains}: " + "; ".join(unknown))
+        raise InputError(f"--chains {args.chains}: " + "; ".join(unknown) + " (see --list-chains)")
 
 
 def _add_core_stages(stages, timings, wall_s):

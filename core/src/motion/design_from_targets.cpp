@@ -14,10 +14,11 @@ namespace popup::motion {
 
 namespace {
 
-// Each name of options.animate_only is a chain's: one error per other name, listing the chains.
+// Every name of options.animate_only is a chain's: else one error naming the others and listing
+// the chains found.
 void check_animate_only(Diagnostics& out, const MotionTargets& targets, const MotionOptions& o)
 {
-    std::string found;
+    std::string found, unknown;
     for (const LinkageChain& chain : targets.chains)
         found += (found.empty() ? "" : ", ") + chain.name;
     for (const std::string& name : o.animate_only) {
@@ -25,13 +26,14 @@ void check_animate_only(Diagnostics& out, const MotionTargets& targets, const Mo
         for (const LinkageChain& chain : targets.chains)
             known = known || chain.name == name;
         if (!known)
-            out.push_back(Diagnostic::error(
-                DiagnosticCode::bad_option,
-                "MotionOptions.animate_only names \"" + name +
-                    "\", which is no chain of this character; the chains found: " +
-                    (found.empty() ? "none" : found),
-                about_parameter("animate_only")));
+            unknown += (unknown.empty() ? "\"" : ", \"") + name + "\"";
     }
+    if (!unknown.empty())
+        out.push_back(
+            Diagnostic::error(DiagnosticCode::bad_option,
+                              "MotionOptions.animate_only: no chain is named " + unknown +
+                                  "; the chains found: " + (found.empty() ? "none" : found),
+                              about_parameter("animate_only")));
 }
 
 // The options (check_motion_options) and the targets the stages rely on, each bad one with the

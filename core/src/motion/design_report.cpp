@@ -69,9 +69,9 @@ void set_bound(const AnnealProblem& p, int j, const ChainTarget& c, ChainReport&
 // Why a chain the maker did not choose (MotionOptions::animate_only) stands where it does.
 std::string unchosen_reason(const ChainReport& cr, bool printed)
 {
-    const std::string where = printed                  ? "its part is printed on the page"
+    const std::string where = printed                 ? "its part is printed on the page"
                               : cr.status == "merged" ? cr.reason
-                                                       : "a floating layer carries it";
+                                                      : "a floating layer carries it";
     return "held still: the maker did not choose it to animate (animate_only); " + where;
 }
 

@@ -23,8 +23,8 @@ struct MotionDesign {
     std::vector<MotionKind> mapped;       ///< per chain, its own mapping (best_mapping)
     /// per chain, held still because the maker did not choose it (MotionOptions::animate_only)
     std::vector<bool> unchosen;
-    AnnealState state;                    ///< the design's slots, stage by stage
-    std::map<int, std::string> reasons;   ///< chain -> why stationary
+    AnnealState state;                  ///< the design's slots, stage by stage
+    std::map<int, std::string> reasons; ///< chain -> why stationary
     /// Per slot, the names of the mechanisms that carry it (the build's).
     std::vector<std::vector<std::string>> slot_mechanisms;
 };

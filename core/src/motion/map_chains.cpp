@@ -65,10 +65,10 @@ MotionDesign map_chains(const MotionTargets& targets, const MotionOptions& o,
         // A chain the maker did not choose is mapped to the floating layer: p.still then keeps
         // every later stage from moving it.
         d.unchosen.push_back(!chosen(o, c.name));
-        mapped.push_back(d.unchosen.back() ? MotionKind::stationary
-                                           : best_mapping(p.candidates.back(), c,
-                                                          still_path_fraction * p.diagonal,
-                                                          p.diagonal));
+        mapped.push_back(d.unchosen.back()
+                             ? MotionKind::stationary
+                             : best_mapping(p.candidates.back(), c,
+                                            still_path_fraction * p.diagonal, p.diagonal));
         if (progress)
             progress->store(0.2 * double(j + 1) / targets.chains.size());
     }

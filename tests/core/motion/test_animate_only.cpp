@@ -132,15 +132,15 @@ TEST(AnimateOnly, NamingEveryChainIsTheDefaultDesign)
 TEST(AnimateOnly, AnUnknownNameIsABadOptionNamingItAndTheChainsFound)
 {
     MotionOptions o = quick();
-    o.animate_only = {"head", "Hand.L"};
+    o.animate_only = {"head", "Hand.L", "tail"};
     const Result<MotionResult> r = design_from_targets(targets_of(arm_and_head()), o);
     ASSERT_FALSE(r.ok);
     ASSERT_EQ(r.diagnostics.size(), 1u);
     const Diagnostic& d = r.diagnostics.front();
     EXPECT_EQ(d.code, DiagnosticCode::bad_option);
     EXPECT_EQ(d.parameter.value_or(""), "animate_only");
-    EXPECT_EQ(d.message, "MotionOptions.animate_only names \"Hand.L\", which is no chain of this "
-                         "character; the chains found: arm, head");
+    EXPECT_EQ(d.message, "MotionOptions.animate_only: no chain is named \"Hand.L\", \"tail\"; the "
+                         "chains found: arm, head");
 }
 
 } // namespace
