@@ -56,6 +56,10 @@ void bind_motion(py::module_& m)
                        "h_max (mm); <= 0: 25 mm on an A4 card, scaled")
         .def_readwrite("seed", &MotionOptions::seed)
         .def_readwrite("outlines", &MotionOptions::outlines)
+        .def_readwrite("animate_only", &MotionOptions::animate_only,
+                       "the chains to animate, by name (ChainReport.name); the others are held "
+                       "still; [] (the default): all. Assign a whole list: appending to it "
+                       "changes a copy")
         .def_static(
             "fields", [] { return motion_option_fields(); },
             "Every option's OptionField (name, doc, unit, default, range): its own, then the "

@@ -215,6 +215,9 @@ void bind_chains_and_targets(py::module_& m)
             d["whole_score"] = t.window.whole_score;
             return d;
         });
+    m.def("path_moves", &path_moves, py::arg("path"), py::arg("diagonal_mm"),
+          "Whether a chain moves on the card: its end effector strays more than 1 % of the "
+          "character's diagonal from its mean point (as the mapping decides what holds still).");
     m.def(
         "ground_travel",
         [](const Animation& a, const Vec3& up, int last_frame, double frame) {

@@ -25,7 +25,7 @@ void bind_options(py::module_& m)
                       "'mm', '°', what a fraction is of, or '' (a count)")
         .def_property_readonly(
             "kind", [](const OptionField& f) { return std::string(to_string(f.kind)); },
-            "number, count, flag, direction (3 numbers) or point (2 numbers)")
+            "number, count, flag, direction (3 numbers), point (2 numbers) or names (a list)")
         .def_property_readonly(
             "default",
             [](const OptionField& f) -> py::object {

@@ -6,7 +6,7 @@ their boxes, fit_run and motion_run their options, and the reports the options u
 restates a range or a default.
 
 A field is a popupcore.OptionField: .name, .group ("" or the nested options it sits in: "view",
-"chains"), .doc, .unit, .kind (number, count, flag, direction, point), .default (None when unset
+"chains"), .doc, .unit, .kind (number, count, flag, direction, point, names), .default (None when unset
 by default), .min, .max, .range (the text errors use) and .accepts(value).
 """
 
@@ -93,7 +93,8 @@ def check(field, value, flag, low=None):
 def set_options(options, table, values):
     """Sets each {name: value} that is not None on `options` (a grouped field on its nested
     options: options.view.first_frame), checked against its field first; ValueError naming the
-    option and its range. Vectors are set as they are (the binding checks their length)."""
+    option and its range. Vectors and lists of names are set as they are (the binding checks a
+    vector's length)."""
     for name, value in values.items():
         if value is None:
             continue
@@ -138,6 +139,8 @@ def as_dict(options, table):
 def _plain(value):
     if value is None or isinstance(value, (bool, int, float, str)):
         return value
+    if isinstance(value, (list, tuple)) and all(isinstance(v, str) for v in value):
+        return list(value)  # names (animate_only); [] stays []
     try:
         return [float(v) for v in value]
     except TypeError:

@@ -4,7 +4,8 @@ the panel opens on a hand-written BVH of a waving figure (tests/python/bvh_sampl
 settings go in, Design runs with the progress bar and draws the target paths against the
 mechanisms' paths in the panel, a second design is cancelled from the progress dialog, and OK
 builds a checked card with one feature per mechanism, linked to the animation; dragging the fold
-angle moves the arm. Screenshots: <build>/sandbox/gui_from_animation/from_animation_panel.png
+angle moves the arm. The chain list shows a checked box per chain found once the animation is
+read; unchecking the animated chain holds it still at the next design (issue 26 item 1). Screenshots: <build>/sandbox/gui_from_animation/from_animation_panel.png
 (the task panel with its plot) and from_animation_card.png (the card at 120°)."""
 
 import os
@@ -20,6 +21,46 @@ NAME = "gui_from_animation"
 
 BODY = r"""
 import time
+
+
+def chains_test(panel, designed):
+    from PySide import QtCore
+
+    items = [panel.chain_list.item(row) for row in range(panel.chain_list.count())]
+    chains = {
+        "listed": [item.data(QtCore.Qt.UserRole) for item in items],
+        "all_checked": all(item.checkState() == QtCore.Qt.Checked for item in items),
+        "all_chosen": panel.chosen_chains() is None,
+    }
+    animated = [c.name for c in designed.chains if c.status == "animated"] if designed else []
+    chains["animated_before"] = animated
+    # The groups' preferred widths: the chains' must not be the widest (the side pane is narrow).
+    from PySide import QtGui
+
+    groups = [panel.layout.itemAt(i).widget() for i in range(panel.layout.count())]
+    widths = {g.title(): g.sizeHint().width() for g in groups if isinstance(g, QtGui.QGroupBox)}
+    chains["group_widths"] = widths
+    if animated:
+        held = animated[0]
+        row = chains["listed"].index(held)
+        items[row].setCheckState(QtCore.Qt.Unchecked)
+        chains["chosen"] = panel.chosen_chains()
+        again = panel.run_design()
+        reports = {c.name: c for c in again.chains} if again else {}
+        chains["held"] = held
+        chains["held_mapping"] = reports[held].mapping if held in reports else None
+        chains["held_reason"] = reports[held].reason if held in reports else ""
+        chains["kept_unchecked"] = panel.chain_list.item(row).checkState() == QtCore.Qt.Unchecked
+        panel.chain_list.item(row).setCheckState(QtCore.Qt.Checked)
+        # None checked: the design is refused on the status line, no exception.
+        for r in range(panel.chain_list.count()):
+            panel.chain_list.item(r).setCheckState(QtCore.Qt.Unchecked)
+        chains["none_checked_returns"] = panel.run_design() is not None
+        chains["none_checked_status"] = panel.status.text()
+        for r in range(panel.chain_list.count()):
+            panel.chain_list.item(r).setCheckState(QtCore.Qt.Checked)
+        panel.run_design()  # the card OK builds below animates every chain again
+    result["chains_panel"] = chains
 
 
 def run():
@@ -60,6 +101,7 @@ def run():
     result["mechanism_names"] = [m.name for m in designed.mechanisms] if designed else []
     pixmap = panel.plot.pixmap()
     result["plot_size"] = [pixmap.width(), pixmap.height()] if pixmap else [0, 0]
+    chains_test(panel, designed)
     panel.form.resize(460, 900)
     settle()
     panel.form.grab().save(CONFIG["panel_png"])
@@ -154,6 +196,36 @@ def main():
         r.get("source_animation"),
     )
     check("dragging the fold angle moves the mechanisms", r.get("moved") is True)
+    chains = r.get("chains_panel", {})
+    check(
+        "the chain list has a checked box per chain found, all animating",
+        chains.get("listed") == r.get("chains")
+        and chains.get("all_checked") is True
+        and chains.get("all_chosen") is True,
+        chains,
+    )
+    check(
+        "unchecking the animated chain holds it still, the report saying the maker chose so",
+        chains.get("animated_before")
+        and chains.get("chosen") == [c for c in chains["listed"] if c != chains.get("held")]
+        and chains.get("held_mapping") == "stationary"
+        and "the maker did not choose it" in chains.get("held_reason", "")
+        and chains.get("kept_unchecked") is True,
+        chains,
+    )
+    check(
+        "no chain checked: Design says so on the status line",
+        chains.get("none_checked_returns") is False
+        and "check at least one chain" in chains.get("none_checked_status", ""),
+        chains,
+    )
+    widths = dict(chains.get("group_widths", {}))
+    chain_width = widths.pop("Chains to animate", None)
+    check(
+        "the chain list does not widen the panel",
+        chain_width is not None and widths and chain_width <= max(widths.values()),
+        chains.get("group_widths"),
+    )
     check.no_traceback(r.get("log"))
     check("card screenshot saved", r.get("card_non_white_pixels", 0) > 1000, config["card_png"])
     return check.exit_code()

@@ -10,6 +10,10 @@ Progress goes to stderr, the files written and the verdict to stdout. Exit codes
 0 a valid design with usable sheets, 1 no valid design (the report and what could be written say
 what was tried), 2 input that cannot be used (one line naming the file or flag, the value and the
 allowed range). The steps it shares with `popup fit` are in design_steps.py.
+
+`--chains "Hand.L,Foot.R"` animates those chains only (MotionOptions.animate_only: the others are
+held still, the report says so); `--list-chains` prints the chains found and exits 0 without
+designing (no --out needed).
 """
 
 import os
@@ -19,6 +23,7 @@ from popupwb import option_fields
 from popupwb.cli import design_steps as steps
 from popupwb.cli.common import InputError, import_core, stdout_to_stderr
 from popupwb.cli.design_steps import DESIGN_FILE, REPORT_FILE, SHEETS_DIR
+from popupwb.readable_file import unreadable
 
 PATHS_FILE = "paths.png"
 MOVIE_FILE = "motion.gif"
@@ -51,7 +56,8 @@ def add_parser(sub):
         "design found, 2 unusable input.",
     )
     animate.add_argument("animation", help="animation file, or a .json of named trajectories")
-    steps.add_out_flag(animate)
+    # Not required: --list-chains writes nothing (run() asks for it when designing).
+    animate.add_argument("--out", metavar="DIR", help="folder for the files")
     steps.add_seed_flag(animate, core.get("seed"))
     metavars = {"--iterations": "N", "--first-frame": "F", "--last-frame": "L", "--scale": "MM"}
     for flag, name in FLAGS.items():
@@ -64,6 +70,18 @@ def add_parser(sub):
         action="store_true",
         help="keep a walking character's travel along the ground; by default it is kept in "
         "place (as at the last frame), so its limbs' paths are what the card can show",
+    )
+    animate.add_argument(
+        "--chains",
+        metavar="NAMES",
+        help="animate only these chains, comma-separated, named as the report and --list-chains "
+        'name them ("Hand.L,Foot.R"); the others are held still; default: all',
+    )
+    animate.add_argument(
+        "--list-chains",
+        action="store_true",
+        help="print the chains found (name, bones, reach on the card, moving or still) with "
+        "the view and frame flags given, and exit without designing",
     )
     steps.add_paper_flag(animate)
     animate.set_defaults(run=run)
@@ -96,6 +114,11 @@ def _options(args, motion_run):
         raise InputError(str(e))
     view, up = steps.directions(args, motion_run.direction, ("view", "up"))
     paper, card_size = steps.paper_and_card_size(args, motion_run.card_size_for_paper)
+    animate_only = None
+    if args.chains is not None:
+        animate_only = motion_run.chain_names(args.chains)
+        if not animate_only:
+            raise InputError(f"--chains {args.chains!r}: name at least one chain")
     with steps.core_range_checks():
         options = motion_run.motion_options(
             seed=args.seed,
@@ -107,6 +130,7 @@ def _options(args, motion_run):
             scale=args.scale,
             card_size=card_size,
             keep_travel=args.keep_travel or None,
+            animate_only=animate_only,
             # Frames the maker names are shown as named (the core chooses only the whole take's).
             auto_frames=False
             if args.first_frame is not None or args.last_frame is not None
@@ -126,7 +150,12 @@ def run(args):
         popupcore, ("load_animation", "load_trajectories", "MotionOptions", "design_motion")
     )
     options, paper = _options(args, motion_run)
-    steps.check_out_and_input(args, args.animation)
+    if args.out is None and not args.list_chains:
+        raise InputError("--out DIR is required to design (only --list-chains goes without)")
+    if args.out is not None:
+        steps.check_out_and_input(args, args.animation)
+    elif unreadable(args.animation):
+        raise InputError(unreadable(args.animation))
 
     stages = motion_run.Stages(say)
     with stages.stage("load", f"reading {args.animation}"):
@@ -136,6 +165,8 @@ def run(args):
             except (ValueError, RuntimeError, OSError) as e:
                 raise InputError(steps.named(args.animation, e))
     say(what)
+    if args.list_chains:
+        return _list_chains(args, animation, options, motion_run)
 
     os.makedirs(args.out, exist_ok=True)
     files = {}
@@ -149,6 +180,7 @@ def run(args):
     try:
         result = motion_run.design(animation, options, on_progress=_Progress(say))
     except popupcore.DesignError as e:
+        _raise_if_unknown_chain(args, e)
         steps.raise_unless_no_design(e, args.animation)
         report = _report(common, None, None, stages, files)
         return steps.report_no_design(args, args.animation, e, report, files, say)
@@ -170,6 +202,29 @@ def run(args):
     valid = report["valid"]
     status = steps.sheets_of_valid_design(args, paper, report, valid, files, stages, say)
     return steps.finish(args, report, status, files, stages, say, _print_summary)
+
+
+def _list_chains(args, animation, options, motion_run):
+    """--list-chains: the chains found, one a line on stdout; exit 0."""
+    try:
+        chains = motion_run.chains_found(animation, options)
+    except ValueError as e:  # DesignError: a view or frame option the animation refuses
+        raise InputError(steps.named(args.animation, e))
+    for chain in chains:
+        print(motion_run.chain_line(chain))
+    print(f"{len(chains)} chain(s); animate some with --chains NAME,NAME")
+    return 0
+
+
+def _raise_if_unknown_chain(args, error):
+    """The core's error for a --chains name no chain has, led by the flag (exit 2)."""
+    unknown = [
+        d["message"]
+        for d in getattr(error, "diagnostics", None) or []
+        if d.get("parameter") == "animate_only"
+    ]
+    if unknown:
+        raise InputError(f"--chains {args.chains}: " + "; ".join(unknown) + " (see --list-chains)")
 
 
 def _add_core_stages(stages, timings, wall_s):

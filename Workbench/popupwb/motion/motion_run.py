@@ -6,6 +6,7 @@ Stage timing is fitting.fit_run.Stages. Bad input is ValueError (popupcore.Desig
 naming the file or the option, the value and the allowed range.
 """
 
+import collections
 import os
 import threading
 
@@ -48,10 +49,12 @@ def motion_options(
     depth_weight=None,
     keep_travel=None,
     auto_frames=None,
+    animate_only=None,
     flags=None,
 ):
     """A popupcore.MotionOptions; None keeps the core's default. ValueError naming the option
-    and its range (the core's check; `flags` as option_fields.raise_if_bad's)."""
+    and its range (the core's check; `flags` as option_fields.raise_if_bad's). `animate_only`:
+    the names of the chains to animate (the others held still); None or [] animates all."""
     from popupwb.core import popupcore
 
     options = popupcore.MotionOptions()
@@ -62,8 +65,44 @@ def motion_options(
         prune_fraction=prune_fraction, motion_weight=motion_weight, depth_weight=depth_weight
     )
     values.update(keep_travel=keep_travel, auto_frames=auto_frames)
+    values.update(animate_only=list(animate_only) if animate_only else None)
     option_fields.set_options(options, option_fields.fields("MotionOptions"), values)
     return option_fields.raise_if_bad(options, flags)
+
+
+# One chain as `popup animate --list-chains` and the From-animation panel show it: its name (the
+# report's), its bones, its reach on the card (mm) and whether its path moves on the card.
+ChainFound = collections.namedtuple("ChainFound", "name bones reach_mm moving")
+
+
+def chains_found(animation, options):
+    """[ChainFound] of the chains design_motion maps with `options` (its view, frames and chain
+    options), in the report's order. ValueError (DesignError) names a bad view option."""
+    from popupwb.core import popupcore
+
+    targets = popupcore.motion_targets(animation, options.view, options.chains)
+    # animation_to_card scales uniformly: a column's length is the file unit in card mm.
+    scale = sum(float(targets.animation_to_card[row][0]) ** 2 for row in range(3)) ** 0.5
+    return [
+        ChainFound(
+            chain.name,
+            len(chain.bones),
+            chain.reach * scale,
+            bool(popupcore.path_moves(path, targets.diagonal_mm)),
+        )
+        for chain, path in zip(targets.chains, targets.paths)
+    ]
+
+
+def chain_line(chain):
+    """'Hand.L: 3 bones, reach 52.1 mm, moving' (or 'still')."""
+    moving = "moving" if chain.moving else "still"
+    return f"{chain.name}: {chain.bones} bones, reach {chain.reach_mm:.1f} mm, {moving}"
+
+
+def chain_names(text):
+    """The names of a comma-separated list ("Hand.L, Foot.R"), blanks dropped."""
+    return [name.strip() for name in text.split(",") if name.strip()]
 
 
 def frames_shown(targets, how_to_choose):

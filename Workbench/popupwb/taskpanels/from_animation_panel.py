@@ -1,7 +1,9 @@
 """FromAnimationPanel: PopUp_FromAnimation's task panel. The maker picks the frames (first: the
 closed card, last: the open card), the viewpoint (the file's direction looked along and the one
 that becomes up), the pruning fraction τp, the motion and depth weights of eq 6.5, the annealing
-iterations and the seed, presses Design, looks at the target paths against the mechanisms' paths
+iterations and the seed, which chains to animate (a check box per chain found, filled when the
+animation is read: Find chains or the first Design; an unchecked chain is held still), presses
+Design, looks at the target paths against the mechanisms' paths
 (drawn in the panel, the paths.png of `popup animate`) and accepts (OK builds the card) or designs
 again with other settings.
 
@@ -22,6 +24,7 @@ from popupwb.taskpanels.long_job_panel import AXES, LongJobPanel, axis_box, axis
 from popupwb.taskpanels.long_job_panel import option_real_box, option_spin_box, push_button
 
 PLOT_WIDTH_PX = 420
+CHAIN_ROWS_SHOWN = 5  # the chain list's height in rows: it scrolls beyond, the panel stays short
 
 last_panel = None  # the panel opened last (scripts and the GUI tests drive it)
 
@@ -38,7 +41,7 @@ class FromAnimationPanel(LongJobPanel):
         self._make_form(
             f"Pop-up from {os.path.basename(path)}",
             "PopUpFromAnimationPanel",
-            [self._animation_group(), self._design_group()],
+            [self._animation_group(), self._chains_group(), self._design_group()],
             "DesignStatus",
             "Press Design to map the character's limbs to mechanisms.",
         )
@@ -75,6 +78,21 @@ class FromAnimationPanel(LongJobPanel):
             ],
         )
 
+    def _chains_group(self):
+        """The chains found, one checkable row each (all checked: all animate); narrow: a list
+        that scrolls, as wide as the panel lets it be."""
+        self.chain_list = QtGui.QListWidget()
+        self.chain_list.setObjectName("ChainList")
+        self.chain_list.setToolTip(
+            "Checked chains are animated; an unchecked chain is held still (its floating layer or "
+            "its part printed on the page)"
+        )
+        rows = CHAIN_ROWS_SHOWN * self.chain_list.fontMetrics().height() + 8
+        self.chain_list.setMaximumHeight(rows)
+        self.chain_list.setSizePolicy(QtGui.QSizePolicy.Ignored, QtGui.QSizePolicy.Preferred)
+        self.find_chains_button = push_button("Find chains", "FindChainsButton", self.find_chains)
+        return form_group("Chains to animate", [self.chain_list, self.find_chains_button])
+
     def _design_group(self):
         core = option_fields.fields("MotionOptions")
         self.prune = option_real_box("Pruning", core["prune_fraction"], 0.01)
@@ -99,8 +117,9 @@ class FromAnimationPanel(LongJobPanel):
 
     # --- designing --------------------------------------------------------------------------
 
-    def options(self):
-        """popupcore.MotionOptions from the widgets."""
+    def options(self, with_chains=True):
+        """popupcore.MotionOptions from the widgets; ValueError when chains are listed and none
+        is checked. Without `with_chains`, every chain animates (the list is not read)."""
         last = self.last_frame.value()
         return motion_run.motion_options(
             seed=self.seed.value(),
@@ -113,7 +132,55 @@ class FromAnimationPanel(LongJobPanel):
             prune_fraction=self.prune.value(),
             motion_weight=self.motion_weight.value(),
             depth_weight=self.depth_weight.value(),
+            animate_only=self.chosen_chains() if with_chains else None,
         )
+
+    # --- the chains --------------------------------------------------------------------------
+
+    def chosen_chains(self):
+        """The checked chains' names; None when all are checked (or none listed yet): all
+        animate. ValueError when none is checked."""
+        items = [self.chain_list.item(row) for row in range(self.chain_list.count())]
+        checked = [item.data(QtCore.Qt.UserRole) for item in items if _checked(item)]
+        if items and not checked:
+            raise ValueError("Chains to animate: check at least one chain")
+        return None if len(checked) == len(items) else checked
+
+    def find_chains(self):
+        """Reads the animation (once) and lists its chains with the current settings; a chain
+        listed before keeps its check, a new one is checked. Returns the ChainFound list, or None
+        (the status line says why)."""
+        from popupwb import progress
+
+        label = f"{os.path.basename(self.path)}: finding the chains"
+
+        def job():
+            animation = self._load()
+            return progress.run(
+                label, motion_run.chains_found, animation, self.options(with_chains=False)
+            )
+
+        chains = self._attempt(label, job)
+        if chains is not None:
+            self._list_chains(chains)
+        return chains
+
+    def _list_chains(self, chains):
+        unchecked = {
+            item.data(QtCore.Qt.UserRole)
+            for item in (self.chain_list.item(row) for row in range(self.chain_list.count()))
+            if not _checked(item)
+        }
+        self.chain_list.clear()
+        for chain in chains:
+            text = chain.name if chain.moving else f"{chain.name} (still)"
+            item = QtGui.QListWidgetItem(text)
+            item.setData(QtCore.Qt.UserRole, chain.name)
+            item.setToolTip(motion_run.chain_line(chain))
+            item.setFlags(item.flags() | QtCore.Qt.ItemIsUserCheckable)
+            state = QtCore.Qt.Unchecked if chain.name in unchecked else QtCore.Qt.Checked
+            item.setCheckState(state)
+            self.chain_list.addItem(item)
 
     def _load(self):
         from popupwb import progress
@@ -129,6 +196,7 @@ class FromAnimationPanel(LongJobPanel):
     def run_design(self):
         """Designs with the current settings and plots the paths; returns the MotionResult or
         None (cancelled, or no design: the status line says why)."""
+        from popupwb import progress
         from popupwb.core import popupcore
 
         self.result = None
@@ -138,6 +206,9 @@ class FromAnimationPanel(LongJobPanel):
 
         def job():
             animation = self._load()
+            # Listed again with the current settings (pruning changes the chains), checks kept.
+            chains = progress.run(label, motion_run.chains_found, animation, self.options(False))
+            self._list_chains(chains)
             options = self.options()
             meter = popupcore.MotionProgress()
             return self._run_core(
@@ -196,3 +267,7 @@ class FromAnimationPanel(LongJobPanel):
             os.path.basename(self.path),
             lambda: build_design(self.doc, self.result, self.animation, self.path),
         )
+
+
+def _checked(item):
+    return item.checkState() == QtCore.Qt.Checked

@@ -19,6 +19,8 @@ const char* to_string(OptionKind kind)
         return "direction";
     case OptionKind::point:
         return "point";
+    case OptionKind::names:
+        return "names";
     }
     return "number";
 }
@@ -50,6 +52,8 @@ std::string OptionField::range() const
         return "a finite non-zero direction (3 numbers)";
     if (kind == OptionKind::point)
         return "a finite point (2 numbers)";
+    if (kind == OptionKind::names)
+        return "a list of names";
     const bool low = std::isfinite(min), high = std::isfinite(max);
     std::string text;
     if (kind == OptionKind::count && low && high && !min_open && !max_open)

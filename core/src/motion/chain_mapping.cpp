@@ -10,6 +10,7 @@
 #include "motion_kinematics.hpp"
 #include "motion_parameters.hpp"
 #include "parameter_table.hpp"
+#include "popup/motion/motion_targets.hpp"
 
 namespace popup::motion {
 
@@ -429,14 +430,7 @@ std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& full,
 MotionKind best_mapping(const std::array<Candidate, motion_kind_count>& c, const ChainTarget& t,
                         double still_mm, double diagonal)
 {
-    Vec2 mean = Vec2::Zero();
-    for (const Vec2& a : t.target)
-        mean += a;
-    mean /= std::max<std::size_t>(1, t.target.size());
-    double spread = 0;
-    for (const Vec2& a : t.target)
-        spread = std::max(spread, (a - mean).norm());
-    const bool still = spread <= still_mm;
+    const bool still = path_spread(t.target) <= still_mm;
     if (still && c[int(MotionKind::stationary)].error_mm < inf)
         return MotionKind::stationary;
     int best = int(MotionKind::stationary);

@@ -14,6 +14,28 @@ namespace popup::motion {
 
 namespace {
 
+// Every name of options.animate_only is a chain's: else one error naming the others and listing
+// the chains found.
+void check_animate_only(Diagnostics& out, const MotionTargets& targets, const MotionOptions& o)
+{
+    std::string found, unknown;
+    for (const LinkageChain& chain : targets.chains)
+        found += (found.empty() ? "" : ", ") + chain.name;
+    for (const std::string& name : o.animate_only) {
+        bool known = false;
+        for (const LinkageChain& chain : targets.chains)
+            known = known || chain.name == name;
+        if (!known)
+            unknown += (unknown.empty() ? "\"" : ", \"") + name + "\"";
+    }
+    if (!unknown.empty())
+        out.push_back(
+            Diagnostic::error(DiagnosticCode::bad_option,
+                              "MotionOptions.animate_only: no chain is named " + unknown +
+                                  "; the chains found: " + (found.empty() ? "none" : found),
+                              about_parameter("animate_only")));
+}
+
 // The options (check_motion_options) and the targets the stages rely on, each bad one with the
 // option it names.
 Diagnostics check_inputs(const MotionTargets& targets, const MotionOptions& o)
@@ -37,6 +59,7 @@ Diagnostics check_inputs(const MotionTargets& targets, const MotionOptions& o)
                                std::to_string(path.effector.size()) +
                                " effector points; it needs >= 2 of each, as many");
     }
+    check_animate_only(out, targets, o);
     return out;
 }
 

@@ -66,6 +66,15 @@ void set_bound(const AnnealProblem& p, int j, const ChainTarget& c, ChainReport&
     cr.bound = cr.bound_mm / p.diagonal;
 }
 
+// Why a chain the maker did not choose (MotionOptions::animate_only) stands where it does.
+std::string unchosen_reason(const ChainReport& cr, bool printed)
+{
+    const std::string where = printed                 ? "its part is printed on the page"
+                              : cr.status == "merged" ? cr.reason
+                                                      : "a floating layer carries it";
+    return "held still: the maker did not choose it to animate (animate_only); " + where;
+}
+
 } // namespace
 
 void report_design(const MotionDesign& design, MotionResult& r)
@@ -139,6 +148,8 @@ void report_design(const MotionDesign& design, MotionResult& r)
             cr.achieved = carried_path(printed, c);
             cr.error_mm = carried_error(printed, c);
         }
+        if (j < int(design.unchosen.size()) && design.unchosen[j])
+            cr.reason = unchosen_reason(cr, i < 0);
         cr.error = cr.error_mm / p.diagonal;
         r.weighted_error += c.weight * cr.error;
         cr.floor_mm = reach_floor_mm(c, p.card);

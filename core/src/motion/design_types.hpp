@@ -21,8 +21,10 @@ struct MotionDesign {
     AnnealProblem problem;                ///< the chains at search_target's samples
     std::vector<ChainTarget> full_chains; ///< every sample: what the report scores
     std::vector<MotionKind> mapped;       ///< per chain, its own mapping (best_mapping)
-    AnnealState state;                    ///< the design's slots, stage by stage
-    std::map<int, std::string> reasons;   ///< chain -> why stationary
+    /// per chain, held still because the maker did not choose it (MotionOptions::animate_only)
+    std::vector<bool> unchosen;
+    AnnealState state;                  ///< the design's slots, stage by stage
+    std::map<int, std::string> reasons; ///< chain -> why stationary
     /// Per slot, the names of the mechanisms that carry it (the build's).
     std::vector<std::vector<std::string>> slot_mechanisms;
 };

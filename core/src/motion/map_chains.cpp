@@ -1,6 +1,8 @@
 #include "map_chains.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace popup::motion {
 
@@ -16,6 +18,13 @@ bool depths_all_equal(const std::vector<ChainTarget>& chains)
         if (std::abs(c.depth - chains.front().depth) > 1e-9)
             return false;
     return true;
+}
+
+// Whether the maker chose chain `name` to animate (MotionOptions::animate_only; empty: all).
+bool chosen(const MotionOptions& o, const std::string& name)
+{
+    return o.animate_only.empty() ||
+           std::find(o.animate_only.begin(), o.animate_only.end(), name) != o.animate_only.end();
 }
 
 } // namespace
@@ -53,7 +62,13 @@ MotionDesign map_chains(const MotionTargets& targets, const MotionOptions& o,
         full_chains.push_back(c);
         p.chains.push_back(search_target(c));
         p.candidates.push_back(fit_candidates(c, card, p.h_max));
-        mapped.push_back(best_mapping(p.candidates.back(), c, 0.01 * p.diagonal, p.diagonal));
+        // A chain the maker did not choose is mapped to the floating layer: p.still then keeps
+        // every later stage from moving it.
+        d.unchosen.push_back(!chosen(o, c.name));
+        mapped.push_back(d.unchosen.back()
+                             ? MotionKind::stationary
+                             : best_mapping(p.candidates.back(), c,
+                                            still_path_fraction * p.diagonal, p.diagonal));
         if (progress)
             progress->store(0.2 * double(j + 1) / targets.chains.size());
     }

@@ -44,6 +44,11 @@ const std::vector<MotionField>& own_fields()
             {Field::on_off("outlines",
                            "moving and stationary patches take the character's outline"),
              [](const MotionOptions& o) { return double(o.outlines); }},
+            // Checked against the chains found (design_from_targets): no range of its own.
+            {Field::vector(OptionKind::names, "animate_only",
+                           "the chains to animate, by name as the report gives them; the others "
+                           "are held still; empty: all"),
+             nullptr},
             {Field::number("prune_fraction",
                            "τp: a leaf chain lighter than this fraction of the mean is merged "
                            "into its parent")

@@ -264,4 +264,21 @@ Result<MotionTargets> motion_targets(const Animation& animation, const MotionVie
     return result;
 }
 
+double path_spread(const std::vector<Vec2>& points)
+{
+    Vec2 mean = Vec2::Zero();
+    for (const Vec2& a : points)
+        mean += a;
+    mean /= std::max<std::size_t>(1, points.size());
+    double spread = 0;
+    for (const Vec2& a : points)
+        spread = std::max(spread, (a - mean).norm());
+    return spread;
+}
+
+bool path_moves(const ChainPath& path, double diagonal_mm)
+{
+    return path_spread(path.effector) > still_path_fraction * diagonal_mm;
+}
+
 } // namespace popup

@@ -20,6 +20,7 @@ enum class OptionKind {
     flag,      ///< on or off
     direction, ///< a 3-vector (a direction in the input's axes)
     point,     ///< a 2-vector (card mm)
+    names,     ///< a list of names (empty: a rule decides, the doc says which)
 };
 const char* to_string(OptionKind kind);
 

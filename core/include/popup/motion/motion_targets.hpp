@@ -46,6 +46,17 @@ struct MotionTargets {
 /// armature node above the hips stands still).
 Vec3 ground_travel(const Animation& animation, const Vec3& up, int last_frame, double frame);
 
+/// A chain whose end effector stays within this fraction of the character's diagonal of its mean
+/// point does not move on the card: the mapping holds it still (its floating layer).
+constexpr double still_path_fraction = 0.01;
+
+/// The farthest a path's point lies from the path's mean point (mm; 0 for no points).
+double path_spread(const std::vector<Vec2>& points);
+
+/// Whether a chain moves on the card: its end effector strays more than still_path_fraction of
+/// `diagonal_mm` from its mean point (as the mapping decides; `popup animate --list-chains`).
+bool path_moves(const ChainPath& path, double diagonal_mm);
+
 /// Forward kinematics over the frame range, projection on the card, adaptive sampling. Errors
 /// name the option and its range (bad_option) for a bad view, frame range or scale.
 Result<MotionTargets> motion_targets(const Animation& animation, const MotionView& view,

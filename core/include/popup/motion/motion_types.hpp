@@ -28,9 +28,13 @@ struct MotionOptions {
     double layer_height_max = 0.0;
     std::uint64_t seed = 1;
     bool outlines = true; ///< moving and stationary patches take the character's outline
+    /// The chains to animate, by name as the report gives them (LinkageChain::name); every other
+    /// chain is held still: its floating layer or its part printed on the page, never a moving
+    /// mechanism. Empty: every chain is free to move. A name no chain has is a bad_option.
+    std::vector<std::string> animate_only;
 };
 
-/// MotionOptions' fields (motion_options.cpp): its own first (motion_weight ... outlines), then
+/// MotionOptions' fields (motion_options.cpp): its own first (motion_weight ... animate_only), then
 /// the view's (group "view", motion_view_fields()) and the chains' (group "chains"); each with
 /// its name, doc, unit, default (MotionOptions{}'s) and the range design_motion accepts. The
 /// workbench builds `popup animate`'s flags and the From-animation panel from them.
