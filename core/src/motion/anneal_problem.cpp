@@ -154,6 +154,15 @@ double state_cost(const AnnealProblem& p, const AnnealState& s)
     return e;
 }
 
+double state_motion_error(const AnnealProblem& p, const AnnealState& s)
+{
+    double e = 0;
+    for (const Slot& slot : s.slots)
+        for (int j : slot.chains)
+            e += p.chains[j].weight * carried_error(slot, p.chains[j]) / p.diagonal;
+    return e;
+}
+
 std::vector<SlotCollision> state_collisions(const AnnealProblem& p, const AnnealState& s)
 {
     std::vector<CollisionVolume> v;

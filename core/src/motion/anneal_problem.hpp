@@ -89,6 +89,10 @@ double printed_error(const AnnealProblem& problem, int j);
 /// has H = 0.
 double slot_cost(const AnnealProblem& problem, const Slot& slot);
 
+/// The motion part of eq 6.5 alone: Σ over the state's chains v_j E_m(j) / diagonal (the
+/// report's weighted error on the search's samples; chains in no slot are not counted).
+double state_motion_error(const AnnealProblem& problem, const AnnealState& state);
+
 /// Eq 6.5 and Σ D_c of a whole state (the full evaluation).
 double state_cost(const AnnealProblem& problem, const AnnealState& state);
 double state_collision(const AnnealProblem& problem, const AnnealState& state);

@@ -1,6 +1,10 @@
 #include "give_way.hpp"
 
 #include <cmath>
+#include <optional>
+
+#include "motion_feasibility.hpp"
+#include "motion_parameters.hpp"
 
 namespace popup::motion {
 
@@ -63,6 +67,47 @@ int loser_of(const AnnealProblem& p, const AnnealState& state, int a, int b)
     if (std::abs(ca - cb) > 1e-9)
         return ca < cb ? a : b;
     return chain_weight(p, state.slots[a]) <= chain_weight(p, state.slots[b]) ? a : b;
+}
+
+bool clear_layer(const AnnealProblem& p, AnnealState& state, int k, const CollisionVolume& room,
+                 int except)
+{
+    const Slot& s = state.slots[k];
+    if (s.printed || s.mechanism.kind() != MotionKind::stationary)
+        return false;
+    const StationaryMotion& f = s.mechanism.stationary();
+    const double middle = f.offset + f.width / 2;
+    // The shortest glued crease upwards: a narrower, lower layer on shorter supports takes less
+    // room; the overhang only has to reach the anchor (support + overhang >= |anchor|).
+    const double c = shortest_crease();
+    std::optional<Slot> best;
+    double best_cost = HUGE_VAL;
+    for (double width : {c, 1.5 * c, 2 * c, f.width})
+        for (double height : {c, 1.5 * c, 2 * c, 3 * c, f.height})
+            for (double support : {c, 1.5 * c, 2 * c, f.support}) {
+                Slot t = s;
+                StationaryMotion& g = t.mechanism.stationary();
+                g.width = width;
+                g.offset = middle - width / 2;
+                g.height = height;
+                g.support = support;
+                g.overhang = std::max(0.0, std::abs(g.anchor) - support);
+                const double cost = slot_cost(p, t);
+                if (!(cost < best_cost) || !feasible(t.mechanism, p.card))
+                    continue;
+                const CollisionVolume v = slot_volume(p, t);
+                bool free = !collide(v, room);
+                for (int m = 0; m < int(state.slots.size()) && free; ++m)
+                    free = m == k || m == except || !collide(v, slot_volume(p, state.slots[m]));
+                if (free) {
+                    best = t;
+                    best_cost = cost;
+                }
+            }
+    if (!best)
+        return false;
+    state.slots[k] = *best;
+    return true;
 }
 
 } // namespace popup::motion

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "give_way.hpp"
+
 namespace popup::motion {
 
 namespace {
@@ -15,7 +17,33 @@ bool still_slot(const AnnealProblem& p, const Slot& s)
     return true;
 }
 
-// Each moving chain, heaviest first, back onto its own mapping's mechanism where that pays.
+// Chain j's slot i on `mechanism`: the slots it then meets give way where they can, a floating
+// layer by taking another shape about its point (clear_layer), else by printing its part on the
+// page (its path from the page's point: a still part's is the layer's, a moving chain's left on
+// a layer is its printed path). False when it meets a moving mechanism.
+bool lift_onto(const AnnealProblem& p, AnnealState& trial, int i, const MotionMechanism& mechanism)
+{
+    trial.slots[i].printed = false;
+    trial.slots[i].mechanism = mechanism;
+    const CollisionVolume v = slot_volume(p, trial.slots[i]);
+    for (int k = 0; k < int(trial.slots.size()); ++k) {
+        if (k == i || !collide(v, slot_volume(p, trial.slots[k])))
+            continue;
+        if (trial.slots[k].mechanism.kind() != MotionKind::stationary)
+            return false;
+        if (!clear_layer(p, trial, k, v, i))
+            trial.slots[k].printed = true;
+    }
+    return true;
+}
+
+// Each moving chain, heaviest first, onto the best of its fitted mechanisms that follows it
+// closer than it is followed now and than its printed part, where that hits no moving mechanism
+// and pays. It pays when eq 6.5 drops, or when the motion error Σ v_j E_m drops (motion first):
+// eq 6.5 charges a part printed to make room its whole depth |D − 0|, up to w_d v_j, against a
+// limb's motion w_m v_j ΔE_m / diagonal, ten times smaller on a humanoid (the walk's right hand,
+// 4.0 mm on its arm against 6.3 mm printed, stood still so that the left hand's floating layer
+// kept its depth; docs/MATH.md, "Motion before depth").
 void lift_moving_chains(MotionDesign& d)
 {
     const AnnealProblem& p = d.problem;
@@ -33,28 +61,34 @@ void lift_moving_chains(MotionDesign& d)
         for (int k = 0; k < int(state.slots.size()); ++k)
             if (state.slots[k].chains == std::vector<int>{j})
                 i = k;
-        const Candidate& own = p.candidates[j][int(mapped[j])];
-        if (i < 0 || !std::isfinite(own.error_mm) ||
-            (!state.slots[i].printed && state.slots[i].mechanism.kind() == mapped[j]))
+        if (i < 0 || (!state.slots[i].printed && state.slots[i].mechanism.kind() == mapped[j]))
             continue;
-        AnnealState trial = state;
-        trial.slots[i].printed = false;
-        trial.slots[i].mechanism = own.mechanism;
-        const CollisionVolume v = slot_volume(p, trial.slots[i]);
-        bool free = true;
-        for (int k = 0; k < int(trial.slots.size()) && free; ++k) {
-            if (k == i || !collide(v, slot_volume(p, trial.slots[k])))
+        // Its own mapping first, then its other moving candidates, closest first.
+        std::vector<int> kinds;
+        for (int k = 0; k < motion_kind_count; ++k)
+            if (k != int(MotionKind::stationary) && std::isfinite(p.candidates[j][k].error_mm))
+                kinds.push_back(k);
+        std::stable_sort(kinds.begin(), kinds.end(), [&](int a, int b) {
+            return (a == int(mapped[j])) > (b == int(mapped[j])) ||
+                   ((a == int(mapped[j])) == (b == int(mapped[j])) &&
+                    p.candidates[j][a].error_mm < p.candidates[j][b].error_mm);
+        });
+        const double now = carried_error(state.slots[i], p.chains[j]);
+        const double cost = state_cost(p, state), motion = state_motion_error(p, state);
+        for (int k : kinds) {
+            AnnealState trial = state;
+            if (!lift_onto(p, trial, i, p.candidates[j][k].mechanism))
                 continue;
-            if (still_slot(p, trial.slots[k]))
-                trial.slots[k].printed = true;
-            else
-                free = false;
-        }
-        // Only a mechanism that follows the chain closer than its printed part is worth room.
-        if (free && state_cost(p, trial) < state_cost(p, state) &&
-            carried_error(trial.slots[i], p.chains[j]) < printed_error(p, j) - 1e-9) {
-            state = trial;
-            reasons.erase(j); // moving again: print_pointless's reason no longer holds
+            // Only a mechanism that follows the chain closer than its printed part and than
+            // what carries it now is worth room.
+            const double moved = carried_error(trial.slots[i], p.chains[j]);
+            if (!(moved < printed_error(p, j) - 1e-9 && moved < now - 1e-9))
+                continue;
+            if (state_cost(p, trial) < cost || state_motion_error(p, trial) < motion - 1e-9) {
+                state = trial;
+                reasons.erase(j); // moving again: print_pointless's reason no longer holds
+                break;
+            }
         }
     }
 }
