@@ -99,8 +99,14 @@ def run():
     result["frames_max"] = panel.last_frame.maximum()
     result["chains"] = [c.name for c in designed.chains] if designed else []
     result["mechanism_names"] = [m.name for m in designed.mechanisms] if designed else []
-    pixmap = panel.plot.pixmap()
-    result["plot_size"] = [pixmap.width(), pixmap.height()] if pixmap else [0, 0]
+    result["plot_size"] = list(panel.plot.full_size())
+    result["frame_boxes"] = [panel.first_frame.text(), panel.last_frame.text()]
+    result["window"] = [designed.targets.first_frame, designed.targets.last_frame] if designed else []
+    # The side pane is 300-400 px wide: the whole panel, plot included, must fit 340 px.
+    result["panel_min_width"] = panel.form.minimumSizeHint().width()
+    panel.form.resize(340, 900)
+    settle()
+    result["plot_shown_width"] = panel.plot.pixmap().width() if panel.plot.pixmap() else 0
     chains_test(panel, designed)
     panel.form.resize(460, 900)
     settle()
@@ -175,8 +181,21 @@ def main():
     )
     check(
         "the paths plot is in the panel",
-        r.get("plot_size", [0, 0])[0] > 300 and r.get("panel_tinted_pixels", 0) > 500,
+        r.get("plot_size", [0, 0])[0] >= 300 and r.get("panel_tinted_pixels", 0) > 500,
         r.get("plot_size"),
+    )
+    check(
+        "the panel fits a 340 px side pane, its plot scaled to it",
+        0 < r.get("panel_min_width", 10**6) <= 340 and 200 < r.get("plot_shown_width", 0) <= 340,
+        [r.get("panel_min_width"), r.get("plot_shown_width")],
+    )
+    window = r.get("window") or [None, None]
+    frame_boxes = r.get("frame_boxes") or ["", ""]
+    check(
+        "the frame boxes show the frames the card shows",
+        frame_boxes[1] in (f"auto: {window[1]}", "last")
+        and (frame_boxes[1] == "last" or frame_boxes[0] == f"auto: {window[0]}"),
+        [frame_boxes, window],
     )
     cancel = r.get("cancel", {})
     bar = cancel.get("bar", [0, 0])

@@ -10,6 +10,10 @@ import numpy as np
 
 IMAGE_SIZE_PX = (1200, 900)
 DPI = 100
+# For a task panel in FreeCAD's side pane (300-400 px): narrow, the legend under the card, drawn
+# at a lower DPI so its text stays legible at the width it is shown.
+NARROW_SIZE_PX = (400, 600)
+NARROW_DPI = 60
 CARD_EDGE = (0.45, 0.45, 0.45)
 COLOURS = (
     "#1f77b4",
@@ -48,14 +52,16 @@ def chain_paths(chains):
     return rows
 
 
-def write_paths_plot(path, chains, card_width, card_depth, title=""):
+def write_paths_plot(path, chains, card_width, card_depth, title="", narrow=False):
     """Writes the PNG to `path`: the card (x from -depth to +depth, y from 0 to width, mm) and,
     per chain, its target path (solid, a dot at the open state) and the mechanism's path
-    (dashed, a cross at the open state)."""
+    (dashed, a cross at the open state). `narrow`: for a task panel (NARROW_SIZE_PX, the legend
+    under the card)."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
-    figure = Figure(figsize=(IMAGE_SIZE_PX[0] / DPI, IMAGE_SIZE_PX[1] / DPI), dpi=DPI)
+    (width_px, height_px), dpi = (NARROW_SIZE_PX, NARROW_DPI) if narrow else (IMAGE_SIZE_PX, DPI)
+    figure = Figure(figsize=(width_px / dpi, height_px / dpi), dpi=dpi)
     FigureCanvasAgg(figure)
     axes = figure.add_subplot(1, 1, 1)
     depth, width = float(card_depth), float(card_width)
@@ -76,14 +82,14 @@ def write_paths_plot(path, chains, card_width, card_depth, title=""):
     axes.set_aspect("equal")
     axes.set_xlabel("card x (mm), ground page to the right")
     axes.set_ylabel("card y (mm), along the fold")
-    axes.set_title(
-        title
-        + ("\n" if title else "")
-        + "solid: target path of each end effector; dashed: its mechanism's point "
-        "(open circle: closed card, dot and cross: open card)",
-        fontsize=10,
+    key = (
+        "solid: target path of each end effector; dashed: its mechanism's point "
+        "(open circle: closed card, dot and cross: open card)"
     )
-    if chains:
+    axes.set_title(title if narrow else title + ("\n" if title else "") + key, fontsize=10)
+    if chains and narrow:
+        axes.legend(loc="upper center", bbox_to_anchor=(0.5, -0.16), fontsize=9, frameon=False)
+    elif chains:
         axes.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False)
     axes.grid(True, lw=0.3, alpha=0.5)
     figure.tight_layout()

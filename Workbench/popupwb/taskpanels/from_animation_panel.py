@@ -20,10 +20,10 @@ from PySide import QtCore, QtGui
 
 from popupwb import option_fields
 from popupwb.motion import motion_run
+from popupwb.taskpanels.fitted_image import FittedImage
 from popupwb.taskpanels.long_job_panel import AXES, LongJobPanel, axis_box, axis_named, form_group
 from popupwb.taskpanels.long_job_panel import option_real_box, option_spin_box, push_button
 
-PLOT_WIDTH_PX = 420
 CHAIN_ROWS_SHOWN = 5  # the chain list's height in rows: it scrolls beyond, the panel stays short
 
 last_panel = None  # the panel opened last (scripts and the GUI tests drive it)
@@ -45,11 +45,9 @@ class FromAnimationPanel(LongJobPanel):
             "DesignStatus",
             "Press Design to map the character's limbs to mechanisms.",
         )
-        self.plot = QtGui.QLabel()
-        self.plot.setObjectName("PathsPlot")
-        self.plot.setAlignment(QtCore.Qt.AlignCenter)
-        self.plot.setToolTip(
-            "Solid: each end effector's target path on the card; dashed: its mechanism's point"
+        self.plot = FittedImage(
+            "PathsPlot",
+            "Solid: each end effector's target path on the card; dashed: its mechanism's point",
         )
         self.layout.addWidget(self.plot)
 
@@ -223,9 +221,18 @@ class FromAnimationPanel(LongJobPanel):
         self.result = self._attempt(label, job)
         if self.result is None:
             return None
+        self._show_window(self.result.targets)
         self._show_plot()
         self._say(self.summary())
         return self.result
+
+    def _show_window(self, targets):
+        """The frames the core chose, in the frame boxes while they are left at their automatic
+        values (first 0, last "last"): "auto: 370" and "auto: 431"; the boxes' values stay, so
+        the next Design chooses again."""
+        chosen = bool(targets.window["chosen"])
+        self.first_frame.setSpecialValueText(f"auto: {targets.first_frame}" if chosen else "")
+        self.last_frame.setSpecialValueText(f"auto: {targets.last_frame}" if chosen else "last")
 
     def _show_plot(self):
         from popupwb.motion.paths_plot import write_paths_plot
@@ -237,11 +244,10 @@ class FromAnimationPanel(LongJobPanel):
             self.result.card.width,
             self.result.card.depth,
             title=os.path.basename(self.path),
+            narrow=True,
         )
         self.plot_png = buffer.getvalue()
-        pixmap = QtGui.QPixmap()
-        pixmap.loadFromData(self.plot_png, "PNG")
-        self.plot.setPixmap(pixmap.scaledToWidth(PLOT_WIDTH_PX, QtCore.Qt.SmoothTransformation))
+        self.plot.set_png(self.plot_png)
 
     def summary(self):
         result = self.result

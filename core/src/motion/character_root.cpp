@@ -5,8 +5,13 @@ namespace popup {
 int character_root(const Animation& animation)
 {
     const std::size_t n = animation.bones.size();
-    if (n == 0)
-        return 0;
+    if (n == 0 || animation.skin.empty())
+        return 0; // a skeleton alone (BVH, trajectories): every bone is the character's
+    std::vector<bool> skins(n, false); // whether any vertex is weighted to the bone
+    for (const auto& weights : animation.skin)
+        for (const auto& [bone, weight] : weights)
+            if (weight > 0.0 && bone >= 0 && std::size_t(bone) < n)
+                skins[std::size_t(bone)] = true;
     std::vector<int> children(n, 0), only_child(n, -1);
     for (std::size_t b = 0; b < n; ++b)
         if (const int p = animation.bones[b].parent; p >= 0) {
@@ -26,7 +31,7 @@ int character_root(const Animation& animation)
         return true;
     };
     int bone = 0;
-    while (children[bone] == 1 && still(bone))
+    while (children[bone] == 1 && !skins[std::size_t(bone)] && still(bone))
         bone = only_child[bone];
     return bone;
 }

@@ -270,7 +270,8 @@ TEST(MotionTargets, AWalkStaysOnTheCardAsItsLastFrame)
 namespace {
 
 /// The walker under a still armature node far from it (30 back along x, as glTF and FBX exports
-/// put one above the hips): the node's bone 0, the walker's bones below it.
+/// put one above the hips): the node's bone 0, the walker's bones below it, skinned (as such
+/// exports are) by one vertex at each of the walker's joints, inside the joints' own box.
 Animation walker_under_a_node()
 {
     Animation a = walker();
@@ -283,6 +284,11 @@ Animation walker_under_a_node()
     for (std::vector<Eigen::Isometry3d>& pose : a.local)
         pose[1].translation() += Vec3(30, 0, 0); // the hips where the walker's are
     a.bind_inverse.assign(a.bones.size(), Eigen::Isometry3d::Identity());
+    for (int bone = 1; bone <= 3; ++bone) {
+        a.mesh.vertices.push_back(Vec3::Zero()); // at the bone's origin in every pose
+        a.skin.push_back({{bone, 1.0}});
+    }
+    a.mesh.triangles.push_back({0, 1, 2});
     return a;
 }
 

@@ -63,9 +63,11 @@ std::vector<Eigen::Isometry3d> forward_kinematics(const Animation& animation, do
 /// The skinned mesh at a frame (linear blend skinning), for outlines and artwork.
 ModelMesh posed_mesh(const Animation& animation, double frame);
 
-/// The character's own root bone: the first root, or below it while a bone stands still over the
-/// take and has one child (the armature node glTF and FBX exports put above the hips, at the
-/// file's origin). Its travel is the character's; the still bones above it are not the character.
+/// The character's own root bone: the first root, or, for a skinned character, below it while a
+/// bone skins no vertex, stands still over the take and has one child (the armature node glTF
+/// and FBX exports put above the hips, at the file's origin). Its travel is the character's; the
+/// still bones above it are not the character. A skeleton alone (BVH, trajectories) is all
+/// character: 0.
 int character_root(const Animation& animation);
 
 /// Per bone: whether it is one of the still bones above character_root.
