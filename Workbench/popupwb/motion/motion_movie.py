@@ -56,23 +56,6 @@ class MovieError(ValueError):
     """The fold could not be simulated over the whole range."""
 
 
-def _shading(normal):
-    """The light's share on a surface of that normal (both faces lit alike)."""
-    light = LIGHT / np.linalg.norm(LIGHT)
-    length = float(np.linalg.norm(normal))
-    shade = abs(float(normal @ light)) / length if length > 0 else 0.5
-    return AMBIENT + (1.0 - AMBIENT) * shade
-
-
-def _shade(colour, normal):
-    return tuple(int(round(c)) for c in np.clip(colour * _shading(normal), 0, 255))
-
-
-def _normal(polygon):
-    polygon = np.asarray(polygon, dtype=float)  # Newell's normal
-    return np.cross(polygon, np.roll(polygon, -1, axis=0)).sum(axis=0)
-
-
 def card_frames(scaffold, count=FRAMES):
     """[(θ degrees, [patch outline Kx3], card patch indices, (rotations n x 3 x 3,
     translations n x 3) of the patches from the design state)] from closed to open, by
@@ -200,18 +183,21 @@ class _View:
 def _draw_card(canvas, view, outlines, card, poses, artwork):
     """The card at one fold angle into the left panel of `canvas` (an RGB array); the patches
     seen edge-on, to be drawn as lines."""
-    from popupwb.motion.movie_card import paint_card
+    from popupwb.motion.movie_card import newell_normals, paint_card
 
-    shades = [_shading(_normal(outline)) for outline in outlines]
-    colours = [
-        tuple(int(round(c)) for c in np.clip((CARD if i in card else PAPER) * f, 0, 255))
-        for i, f in enumerate(shades)
-    ]
+    normals = newell_normals(outlines)
+    light = LIGHT / np.linalg.norm(LIGHT)
+    lengths = np.linalg.norm(normals, axis=1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        lit = np.where(lengths > 0, np.abs(normals @ light) / lengths, 0.5)
+    shades = AMBIENT + (1.0 - AMBIENT) * lit
+    base = np.array([CARD if i in card else PAPER for i in range(len(outlines))]).reshape(-1, 3)
+    colours = np.clip(np.rint(base * shades[:, None]), 0, 255).astype(np.uint8)
     printed = (artwork, shades, *poses) if artwork is not None else None
-    picture, covered, edge_on = paint_card(
-        view, outlines, colours, canvas.shape[0], PANEL_PX, EDGE, printed
+    picture, covered, (x0, y0), edge_on = paint_card(
+        view, outlines, normals, colours, (PANEL_PX, canvas.shape[0]), EDGE, printed
     )
-    region = canvas[:, :PANEL_PX]
+    region = canvas[y0 : y0 + picture.shape[0], x0 : x0 + picture.shape[1]]
     region[covered] = picture[covered]
     return edge_on
 

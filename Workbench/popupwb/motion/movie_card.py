@@ -22,13 +22,17 @@ OVERSAMPLE = 1.5
 MIN_PIXELS_PER_MM = 1.0
 MAX_PIXELS_PER_MM = 8.0
 EDGE_ON_PX2 = 2.0  # a patch seen under this doubled area (pixels²) is drawn as a line
+# Patches lying on one plane (a mechanism's parts flat on the page at 180°): the later one, glued
+# over the earlier (the pages come first), shows.
+TIE_MM = 1e-4
 
 
 class CardArtwork:
-    """The printed artwork of a scaffold's patches at its design state, in one flat atlas:
-    patch index i's image is atlas[offset[i] : offset[i] + width[i] * height[i]] (row-major,
-    row 0 at the top), its pixel (column c, row r) spanning the design-state points
-    corner[i] + [c, c + 1] step_u[i] + [r, r + 1] step_v[i]; has[i] False without one."""
+    """The printed artwork of a scaffold's patches at its design state, cropped to what is
+    printed, in one flat atlas: patch index i's image is rows offset[i] to offset[i] +
+    width[i] * height[i] of `ink` (RGB premultiplied by alpha) and `alpha` (row-major, row 0 at
+    the top), its pixel (column c, row r) spanning the design-state points corner[i] +
+    [c, c + 1] step_u[i] + [r, r + 1] step_v[i]; has[i] False where nothing is printed."""
 
     def __init__(self, count, images):
         self.has = np.zeros(count, dtype=bool)
@@ -43,22 +47,32 @@ class CardArtwork:
         pixels, at = [], 0
         for i, art in sorted(images.items()):
             rgba = np.asarray(art.rgba)
-            if not rgba[..., 3].any():
+            rows, cols = np.nonzero(rgba[..., 3])
+            if not len(rows):
                 continue  # nothing of the character on it: plain paper
+            r0, c0 = rows.min(), cols.min()
+            rgba = rgba[r0 : rows.max() + 1, c0 : cols.max() + 1]
             frame = art.frame
             u, v = (np.asarray(frame[k], dtype=float) for k in ("u", "v"))
             step = float(art.mm_per_pixel)
-            h, w = rgba.shape[:2]
             u0, v0 = art.origin_uv
-            self.corner[i] = np.asarray(frame["origin"], dtype=float) + u0 * u + (v0 + h * step) * v
+            top = (
+                np.asarray(frame["origin"], dtype=float)
+                + u0 * u
+                + (v0 + art.rgba.shape[0] * step) * v
+            )
             self.step_u[i], self.step_v[i] = step * u, -step * v
+            self.corner[i] = top + c0 * self.step_u[i] + r0 * self.step_v[i]
             self.normal[i] = np.asarray(frame["normal"], dtype=float)
             self.back[i] = bool(art.back_side)
             self.has[i] = True
-            self.offset[i], self.width[i], self.height[i] = at, w, h
+            self.height[i], self.width[i] = rgba.shape[:2]
+            self.offset[i] = at
             pixels.append(rgba.reshape(-1, 4))
-            at += w * h
-        self.atlas = np.vstack(pixels) if pixels else np.zeros((0, 4), dtype=np.uint8)
+            at += len(pixels[-1])
+        atlas = np.vstack(pixels) if pixels else np.zeros((0, 4), dtype=np.uint8)
+        self.alpha = atlas[:, 3].astype(np.float32) / 255.0
+        self.ink = atlas[:, :3].astype(np.float32) * self.alpha[:, None]
 
 
 def pixels_per_mm(view_scale):
@@ -96,104 +110,140 @@ def render_card_artwork(scaffold, printed, resolution):
     return CardArtwork(len(patches), images)
 
 
-def _image_maps(artwork, affine, rotations, translations, eye):
-    """(n, 2, 3): per patch, the affine map from a panel pixel (x, y) to its artwork's continuous
-    (column, row); NaN where the patch shows no artwork this frame (none, seen from behind or
-    edge-on). `affine` = (A 2x3, b): the camera, panel pixel = A X + b."""
+def _print_patch(picture, ids, box, artwork, i, shade, pose, camera):
+    """Draws patch i's artwork on the pixels of `picture` (the box `box` of the panel) it wins
+    in `ids`, over the paper colour they have, shaded by `shade`: the image carried by the
+    patch's rigid motion `pose` = (R, t) and the `camera` = (A, b, eye), panel pixel = A X + b.
+    Nothing where its printed side faces away (blank paper seen) or it is seen edge-on."""
+    (rotation, translation), (a, b, eye) = pose, camera
+    facing = float((rotation @ artwork.normal[i]) @ eye)
+    if facing == 0 or (facing < 0) != bool(artwork.back[i]):
+        return
+    start = a @ (rotation @ artwork.corner[i] + translation) + b
+    jacobian = np.c_[a @ (rotation @ artwork.step_u[i]), a @ (rotation @ artwork.step_v[i])]
+    if abs(np.linalg.det(jacobian)) < 1e-9:
+        return
+    width, height = artwork.width[i], artwork.height[i]
+    # Only the pixels under the image can show it.
+    corners = start + np.array([[0, 0], [width, 0], [0, height], [width, height]]) @ jacobian.T
+    x0, y0 = np.maximum(np.floor(corners.min(axis=0)).astype(int) - box[:2], 0)
+    x1, y1 = np.maximum(np.ceil(corners.max(axis=0)).astype(int) + 1 - box[:2], 0)
+    rows, cols = np.nonzero(ids[y0:y1, x0:x1] == i)
+    if not len(rows):
+        return
+    rows, cols = rows + y0, cols + x0
+    inverse = np.linalg.inv(jacobian)
+    offset = np.c_[cols + (box[0] + 0.5), rows + (box[1] + 0.5)] - start
+    column, row = np.floor(offset @ inverse.T).astype(np.int64).T
+    inside = (column >= 0) & (column < width) & (row >= 0) & (row < height)
+    rows, cols = rows[inside], cols[inside]
+    at = artwork.offset[i] + row[inside] * width + column[inside]
+    paper = picture[rows, cols].astype(np.float32)
+    ink = artwork.ink[at] * shade + paper * (1.0 - artwork.alpha[at])[:, None]
+    picture[rows, cols] = np.rint(ink).astype(np.uint8)  # within 0..255: a blend
+
+
+def newell_normals(polygons):
+    """(n, 3) Newell normals of the polygons (each Kx3; zero for fewer than 3 corners), their
+    length twice the area, all in one pass."""
+    counts = np.array([len(p) for p in polygons], dtype=np.int64)
+    normals = np.zeros((len(polygons), 3))
+    used = counts >= 3
+    if not used.any():
+        return normals
+    points = np.vstack([np.asarray(p, dtype=float).reshape(-1, 3) for p in polygons])
+    starts = np.concatenate([[0], np.cumsum(counts)[:-1]])
+    following = np.arange(1, len(points) + 1)
+    ends = starts + counts - 1
+    following[ends[counts > 0]] = starts[counts > 0]
+    products = np.cross(points, points[following])
+    normals[used] = np.add.reduceat(products, starts[used], axis=0)[: used.sum()]
+    return normals
+
+
+def _depth_planes(polygons, normals, affine, eye):
+    """(n, 3): per polygon (a, b, c), its depth toward the camera at pixel (x, y) being
+    a x + b y + c (the polygon is planar, the camera orthographic: pixel = A X + b, depth =
+    eye . X); NaN seen edge-on."""
     a, b = affine
-    maps = np.full((len(artwork.has), 2, 3), np.nan)
-    for i in np.nonzero(artwork.has)[0]:
-        rotation = rotations[i]
-        facing = float((rotation @ artwork.normal[i]) @ eye)
-        if (facing <= 0) != bool(artwork.back[i]) or facing == 0:
-            continue  # its printed side faces away: blank paper seen
-        start = a @ (rotation @ artwork.corner[i] + translations[i]) + b
-        jacobian = np.c_[a @ (rotation @ artwork.step_u[i]), a @ (rotation @ artwork.step_v[i])]
-        if abs(np.linalg.det(jacobian)) < 1e-9:
-            continue
-        inverse = np.linalg.inv(jacobian)
-        maps[i] = np.c_[inverse, -inverse @ start]
-    return maps
+    inverse = np.linalg.inv(np.vstack([a, eye]))
+    m = normals @ inverse  # the plane n . X = n . X0 in (pixel - b, depth)
+    centres = np.array([np.asarray(p, dtype=float).reshape(-1, 3).mean(axis=0) for p in polygons])
+    level = np.einsum("ij,ij->i", normals, centres)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.c_[
+            -m[:, 0] / m[:, 2],
+            -m[:, 1] / m[:, 2],
+            (level + m[:, 0] * b[0] + m[:, 1] * b[1]) / m[:, 2],
+        ]
 
 
-def _artwork_pixels(artwork, maps, ids, covered):
-    """(rows, cols, rgba float) of the covered panel pixels whose patch shows artwork there."""
-    rows, cols = np.nonzero(covered & artwork.has[np.maximum(ids, 0)])
-    which = ids[rows, cols]
-    m = maps[which]
-    x, y = cols + 0.5, rows + 0.5
-    column = np.floor(m[:, 0, 0] * x + m[:, 0, 1] * y + m[:, 0, 2])
-    row = np.floor(m[:, 1, 0] * x + m[:, 1, 1] * y + m[:, 1, 2])
-    with np.errstate(invalid="ignore"):
-        inside = (column >= 0) & (column < artwork.width[which])
-        inside &= (row >= 0) & (row < artwork.height[which])
-    rows, cols, which = rows[inside], cols[inside], which[inside]
-    at = artwork.offset[which] + row[inside].astype(np.int64) * artwork.width[which]
-    at += column[inside].astype(np.int64)
-    return rows, cols, artwork.atlas[at].astype(float)
-
-
-def _zbuffer(view, polygons, height, width):
-    """(ids, edge-on indices): per panel pixel the index of the polygon nearest the camera there
-    (-1 none), each polygon's depth taken from its plane; polygons seen edge-on are left out."""
+def _zbuffer(pixels, planes, box):
+    """(ids, edge-on indices): per pixel of `box` (x0, y0, x1, y1) the index of the polygon
+    nearest the camera there (-1 none; of polygons as near, within TIE_MM, the last);
+    `pixels` each polygon's corners in panel pixels, `planes` its depth plane. Polygons seen
+    edge-on (under a pixel of area) are left out."""
     from PIL import Image, ImageDraw
 
-    zbuffer = np.full((height, width), -np.inf)
-    ids = np.full((height, width), -1, dtype=np.int64)
+    bx0, by0, bx1, by1 = box
+    zbuffer = np.full((by1 - by0, bx1 - bx0), -np.inf)
+    ids = np.full((by1 - by0, bx1 - bx0), -1, dtype=np.int32)
     edge_on = []
-    for i, polygon in enumerate(polygons):
-        if len(polygon) < 3:
+    for i, corners in enumerate(pixels):
+        if len(corners) < 3:
             continue
-        pixels = view.pixels(polygon, 0)
-        x0, y0 = np.floor(pixels.min(axis=0)).astype(int)
-        x1, y1 = np.ceil(pixels.max(axis=0)).astype(int) + 1
-        x0, y0, x1, y1 = max(x0, 0), max(y0, 0), min(x1, width), min(y1, height)
-        doubled = np.sum(
-            pixels[:, 0] * np.roll(pixels[:, 1], -1) - np.roll(pixels[:, 0], -1) * pixels[:, 1]
-        )
-        if abs(doubled) < EDGE_ON_PX2 or x1 <= x0 or y1 <= y0:  # under a pixel of area
+        x0, y0 = np.floor(corners.min(axis=0)).astype(int)
+        x1, y1 = np.ceil(corners.max(axis=0)).astype(int) + 1
+        x0, y0, x1, y1 = max(x0, bx0), max(y0, by0), min(x1, bx1), min(y1, by1)
+        following = np.roll(corners, -1, axis=0)
+        doubled = np.sum(corners[:, 0] * following[:, 1] - following[:, 0] * corners[:, 1])
+        if abs(doubled) < EDGE_ON_PX2 or x1 <= x0 or y1 <= y0 or not np.isfinite(planes[i]).all():
             edge_on.append(i)
             continue
         mask = Image.new("1", (x1 - x0, y1 - y0), 0)
-        ImageDraw.Draw(mask).polygon([(float(a - x0), float(b - y0)) for a, b in pixels], fill=1)
-        inside = np.asarray(mask, dtype=bool)
-        # The polygon is planar: its depth is affine in the pixel coordinates.
-        system = np.c_[pixels, np.ones(len(pixels))]
-        (a, b, c), *_ = np.linalg.lstsq(system, view.depth(polygon), rcond=None)
-        z = a * (np.arange(x0, x1) + 0.5)[None, :] + b * (np.arange(y0, y1) + 0.5)[:, None] + c
-        window = zbuffer[y0:y1, x0:x1]
-        nearer = inside & (z > window)
+        ImageDraw.Draw(mask).polygon((corners - (x0, y0)).ravel().tolist(), fill=1)
+        a, b, c = planes[i]
+        z = (a * (np.arange(x0, x1) + 0.5))[None, :] + (b * (np.arange(y0, y1) + 0.5) + c)[:, None]
+        window = zbuffer[y0 - by0 : y1 - by0, x0 - bx0 : x1 - bx0]
+        nearer = np.asarray(mask, dtype=bool) & (z > window - TIE_MM)
         window[nearer] = z[nearer]
-        ids[y0:y1, x0:x1][nearer] = i
+        ids[y0 - by0 : y1 - by0, x0 - bx0 : x1 - bx0][nearer] = i
     return ids, edge_on
 
 
-def paint_card(view, polygons, colours, height, width, outline, printed=None):
-    """The card panel as (RGB uint8 height x width x 3, covered mask, edge-on polygon indices):
-    each pixel shows the polygon nearest the camera there, in its colour (an RGB triple: the
-    paper shaded) or, where the artwork prints on it, the image's pixel over that paper, shaded
-    alike; region borders are outlined with `outline` (None: not). `printed` = (CardArtwork,
-    shades, rotations n x 3 x 3, translations n x 3): the artwork, each polygon's shading factor
-    and rigid motion from the design state; None: the paper alone."""
-    ids, edge_on = _zbuffer(view, polygons, height, width)
+def paint_card(view, polygons, normals, colours, size, outline, printed=None):
+    """The card panel's drawn box as (RGB uint8 array, covered mask, (x0, y0) its top-left
+    pixel, edge-on polygon indices) for a panel of `size` (width, height): each pixel shows the
+    polygon nearest the camera there, in its colour (an RGB triple: the paper shaded) or, where
+    the artwork prints on it, the image's pixel over that paper, shaded alike; region borders
+    are outlined with `outline` (None: not). `normals`: newell_normals(polygons); `printed` =
+    (CardArtwork, shades, rotations n x 3 x 3, translations n x 3): the artwork, each polygon's
+    shading factor and rigid motion from the design state; None: the paper alone."""
+    affine, eye = view.affine(), view.towards_eye()
+    counts = [len(p) for p in polygons]
+    points = np.vstack([np.asarray(p, dtype=float).reshape(-1, 3) for p in polygons])
+    flat = points @ affine[0].T + affine[1]
+    pixels = np.split(flat, np.cumsum(counts)[:-1])
+    lo = np.floor(flat.min(axis=0)).astype(int) - 2
+    hi = np.ceil(flat.max(axis=0)).astype(int) + 3
+    box = (max(lo[0], 0), max(lo[1], 0), min(hi[0], size[0]), min(hi[1], size[1]))
+    if box[2] <= box[0] or box[3] <= box[1]:  # nothing in the panel
+        return np.zeros((0, 0, 3), np.uint8), np.zeros((0, 0), bool), box[:2], []
+    planes = _depth_planes(polygons, normals, affine, eye)
+    ids, edge_on = _zbuffer(pixels, planes, box)
     palette = np.array([(255, 255, 255)] + [tuple(c) for c in colours], dtype=np.uint8)
     picture = palette[ids + 1]
     covered = ids >= 0
-    if printed is not None and printed[0].has.any():
+    if printed is not None:
         artwork, shades, rotations, translations = printed
-        maps = _image_maps(artwork, view.affine(), rotations, translations, view.towards_eye())
-        rows, cols, rgba = _artwork_pixels(artwork, maps, ids, covered)
-        if len(rows):
-            which = ids[rows, cols]
-            paper = palette[which + 1].astype(float)
-            alpha = rgba[:, 3:] / 255.0
-            shade = np.asarray(shades, dtype=float)[which][:, None]
-            ink = rgba[:, :3] * shade * alpha + paper * (1.0 - alpha)
-            picture[rows, cols] = np.clip(np.rint(ink), 0, 255).astype(np.uint8)
+        camera = (*affine, eye)
+        for i in np.nonzero(artwork.has)[0]:
+            pose = (rotations[i], translations[i])
+            _print_patch(picture, ids, box, artwork, i, shades[i], pose, camera)
     if outline is not None:
         border = np.zeros_like(covered)
         border[:, 1:] |= ids[:, 1:] != ids[:, :-1]
         border[1:, :] |= ids[1:, :] != ids[:-1, :]
         picture[border] = outline
         covered |= border
-    return picture, covered, edge_on
+    return picture, covered, box[:2], edge_on
