@@ -231,12 +231,16 @@ def _draw_mesh(canvas, view, triangles):
 
 
 def _printed_artwork(scaffold, printed, view):
-    """movie_card.CardArtwork of the printed parts, None without any."""
+    """movie_card.CardArtwork of the printed parts, None without any or when they cannot be
+    rendered (the sheets, which print them, say why)."""
     from popupwb.motion.movie_card import pixels_per_mm, render_card_artwork
 
     if not printed:
         return None
-    return render_card_artwork(scaffold, printed, pixels_per_mm(view.scale))
+    try:
+        return render_card_artwork(scaffold, printed, pixels_per_mm(view.scale))
+    except ValueError:  # popupcore.DesignError: a mesh the core cannot render
+        return None
 
 
 def _one_palette(frames):
@@ -297,8 +301,10 @@ def write_movie(path, scaffold, character, chains=(), title="", count=FRAMES, pr
         draw = ImageDraw.Draw(image)
         for i in edge_on:
             draw.line(view(np.vstack([outlines[i], outlines[i][:1]]), 0), fill=EDGE)
-        for a, b in segments:  # on the card's plane, where its paths are measured
-            draw.line(view(np.array([a, b])[:, :2], PANEL_PX), fill=BONE, width=3)
+        if segments:  # on the card's plane, where its paths are measured
+            ends = view.pixels(np.array(segments)[:, :, :2].reshape(-1, 2), PANEL_PX)
+            for a, b in ends.reshape(-1, 2, 2).tolist():
+                draw.line([tuple(a), tuple(b)], fill=BONE, width=3)
         for j, (target, achieved, samples) in enumerate(paths):
             colour = POINT_COLOURS[j % len(POINT_COLOURS)]
             for points, left in ((achieved, 0), (target, PANEL_PX)):

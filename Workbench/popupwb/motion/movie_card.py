@@ -46,21 +46,17 @@ class CardArtwork:
         self.height = np.zeros(count, dtype=np.int64)
         pixels, at = [], 0
         for i, art in sorted(images.items()):
-            rgba = np.asarray(art.rgba)
+            rgba = np.asarray(art.rgba)  # a copy out of the core: read once
             rows, cols = np.nonzero(rgba[..., 3])
             if not len(rows):
                 continue  # nothing of the character on it: plain paper
-            r0, c0 = rows.min(), cols.min()
-            rgba = rgba[r0 : rows.max() + 1, c0 : cols.max() + 1]
             frame = art.frame
             u, v = (np.asarray(frame[k], dtype=float) for k in ("u", "v"))
             step = float(art.mm_per_pixel)
             u0, v0 = art.origin_uv
-            top = (
-                np.asarray(frame["origin"], dtype=float)
-                + u0 * u
-                + (v0 + art.rgba.shape[0] * step) * v
-            )
+            top = np.asarray(frame["origin"], dtype=float) + u0 * u + (v0 + len(rgba) * step) * v
+            r0, c0 = rows.min(), cols.min()
+            rgba = rgba[r0 : rows.max() + 1, c0 : cols.max() + 1]
             self.step_u[i], self.step_v[i] = step * u, -step * v
             self.corner[i] = top + c0 * self.step_u[i] + r0 * self.step_v[i]
             self.normal[i] = np.asarray(frame["normal"], dtype=float)
@@ -92,7 +88,7 @@ def render_card_artwork(scaffold, printed, resolution):
     images, taken = {}, set()
     for limb in printed[1:]:
         names = {f"{limb.mechanism}.{part}" for part in limb.parts}
-        chosen = [p for p in patches if p.name in names and p.id not in taken]
+        chosen = [p for p in patches if p.name in names]
         taken.update(p.id for p in chosen)
         if chosen and len(limb.mesh.triangles):
             arts = popupcore.render_artworks(
@@ -146,18 +142,16 @@ def _print_patch(picture, ids, box, artwork, i, shade, pose, camera):
 def newell_normals(polygons):
     """(n, 3) Newell normals of the polygons (each Kx3; zero for fewer than 3 corners), their
     length twice the area, all in one pass."""
-    counts = np.array([len(p) for p in polygons], dtype=np.int64)
     normals = np.zeros((len(polygons), 3))
-    used = counts >= 3
-    if not used.any():
+    used = [i for i, p in enumerate(polygons) if len(p) >= 3]
+    if not used:
         return normals
-    points = np.vstack([np.asarray(p, dtype=float).reshape(-1, 3) for p in polygons])
+    points = np.vstack([np.asarray(polygons[i], dtype=float).reshape(-1, 3) for i in used])
+    counts = np.array([len(polygons[i]) for i in used], dtype=np.int64)
     starts = np.concatenate([[0], np.cumsum(counts)[:-1]])
     following = np.arange(1, len(points) + 1)
-    ends = starts + counts - 1
-    following[ends[counts > 0]] = starts[counts > 0]
-    products = np.cross(points, points[following])
-    normals[used] = np.add.reduceat(products, starts[used], axis=0)[: used.sum()]
+    following[starts + counts - 1] = starts  # each polygon's last corner closes it
+    normals[used] = np.add.reduceat(np.cross(points, points[following]), starts, axis=0)
     return normals
 
 
@@ -200,12 +194,12 @@ def _zbuffer(pixels, planes, box):
         if abs(doubled) < EDGE_ON_PX2 or x1 <= x0 or y1 <= y0 or not np.isfinite(planes[i]).all():
             edge_on.append(i)
             continue
-        mask = Image.new("1", (x1 - x0, y1 - y0), 0)
+        mask = Image.new("L", (x1 - x0, y1 - y0), 0)  # "L": 1 read as bool without unpacking
         ImageDraw.Draw(mask).polygon((corners - (x0, y0)).ravel().tolist(), fill=1)
         a, b, c = planes[i]
         z = (a * (np.arange(x0, x1) + 0.5))[None, :] + (b * (np.arange(y0, y1) + 0.5) + c)[:, None]
         window = zbuffer[y0 - by0 : y1 - by0, x0 - bx0 : x1 - bx0]
-        nearer = np.asarray(mask, dtype=bool) & (z > window - TIE_MM)
+        nearer = np.asarray(mask).view(bool) & (z > window - TIE_MM)
         window[nearer] = z[nearer]
         ids[y0 - by0 : y1 - by0, x0 - bx0 : x1 - bx0][nearer] = i
     return ids, edge_on
