@@ -10,8 +10,9 @@ filled through a z-buffer with the artwork its sheet prints (movie_card: the bod
 each limb on its mechanism's moving parts) over the paper, shaded by its normal.
 Right, the character: its bones (popupcore.forward_kinematics, fractional frames interpolated) and,
 when it has one, its skinned mesh (popupcore.posed_mesh, drawn by popupcore.render_view), mapped
-to the card by animation_to_card and projected the same way. Both halves share one scale and the faint target paths, so the
-mechanisms' points (left) and the end effectors (right) can be followed together.
+to the card by animation_to_card and projected the same way. Both halves share one scale and the
+faint target paths, so the mechanisms' points (left) and the end effectors (right) can be
+followed together.
 
 Deterministic: fixed frame count, sizes, colours and Pillow's built-in font, one palette for all
 frames; no timestamps.
@@ -147,13 +148,8 @@ class _View:
         return np.stack([p[:, 0], p[:, 1] * math.cos(tilt) + p[:, 2] * math.sin(tilt)], axis=1)
 
     @staticmethod
-    def depth(points):
-        p = np.asarray(points, dtype=float).reshape(-1, 3)
-        tilt = math.radians(TILT_DEGREES)
-        return p[:, 2] * math.cos(tilt) - p[:, 1] * math.sin(tilt)
-
-    @staticmethod
     def towards_eye():
+        """The depth of a card point X toward the camera is towards_eye() . X."""
         tilt = math.radians(TILT_DEGREES)
         return np.array([0.0, -math.sin(tilt), math.cos(tilt)])
 
