@@ -251,6 +251,7 @@ def _write_design(args, result, animation, stages, files, say):
 
 
 def _write_pictures(args, result, animation, up, stages, files, say):
+    from popupwb.motion.design_from_motion import printed_character
     from popupwb.motion.motion_movie import MovieError, character_frames, write_movie
     from popupwb.motion.paths_plot import write_paths_plot
 
@@ -280,6 +281,7 @@ def _write_pictures(args, result, animation, up, stages, files, say):
                 ),
                 result.chains,
                 title=title,
+                printed=printed_character(animation, result),  # the card as it is printed
             )
         except MovieError as e:  # an invalid design that locks: the report says why
             say(f"no movie: {e}")

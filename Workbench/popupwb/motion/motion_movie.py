@@ -4,15 +4,18 @@ angle θ = 180°·s and the animation frame first + s·(last − first), s = k /
 pairing the design is made for, docs/MATH.md "Motion targets").
 
 Left, the card: the simulated scaffold (popupcore.simulate_fold from the design state) posed at θ,
-each patch filled through a z-buffer (numpy, Pillow's polygon masks) and shaded by its normal,
 seen by a camera above the open card (card x to the right, y up: the view the target paths are
-measured in) leaning TILT_DEGREES toward its front edge, so what stands up shows.
+measured in) leaning TILT_DEGREES toward its front edge, so what stands up shows; each patch
+filled through a z-buffer with the artwork its sheet prints (movie_card: the body on the pages,
+each limb on its mechanism's moving parts) over the paper, shaded by its normal.
 Right, the character: its bones (popupcore.forward_kinematics, fractional frames interpolated) and,
-when it has one, its skinned mesh (popupcore.posed_mesh), mapped to the card by animation_to_card
-and projected the same way. Both halves share one scale and the faint target paths, so the
-mechanisms' points (left) and the end effectors (right) can be followed together.
+when it has one, its skinned mesh (popupcore.posed_mesh, drawn by popupcore.render_view), mapped
+to the card by animation_to_card and projected the same way. Both halves share one scale and the
+faint target paths, so the mechanisms' points (left) and the end effectors (right) can be
+followed together.
 
-Deterministic: fixed frame count, sizes, colours and Pillow's built-in font; no timestamps.
+Deterministic: fixed frame count, sizes, colours and Pillow's built-in font, one palette for all
+frames; no timestamps.
 """
 
 import math
@@ -27,6 +30,8 @@ FRAME_MS = 90
 HOLD_MS = 1200  # the open card stays a while before the loop starts again
 MAX_MESH_TRIANGLES = 6000
 BACKGROUND = (255, 255, 255)
+PALETTE_COLOURS = 128
+PALETTE_SAMPLES = 7  # frames, evenly spaced, the shared palette is chosen from
 PAPER = np.array([245.0, 225.0, 178.0])
 CARD = np.array([214.0, 214.0, 214.0])
 MESH = np.array([140.0, 165.0, 215.0])
@@ -44,6 +49,7 @@ POINT_COLOURS = (
     (227, 119, 194),
 )
 LIGHT = np.array([0.3, -0.4, 0.87])
+AMBIENT = 0.55
 TILT_DEGREES = 30.0  # the camera above the open card, leaning toward its front edge (y = 0)
 
 
@@ -51,24 +57,11 @@ class MovieError(ValueError):
     """The fold could not be simulated over the whole range."""
 
 
-def _shade(colour, normal):
-    light = LIGHT / np.linalg.norm(LIGHT)
-    length = float(np.linalg.norm(normal))
-    shade = abs(float(normal @ light)) / length if length > 0 else 0.5
-    return tuple(int(round(c)) for c in np.clip(colour * (0.55 + 0.45 * shade), 0, 255))
-
-
-def _normal(polygon):
-    normal = np.zeros(3)
-    for i in range(len(polygon)):  # Newell's normal
-        normal += np.cross(polygon[i], polygon[(i + 1) % len(polygon)])
-    return normal
-
-
 def card_frames(scaffold, count=FRAMES):
-    """[(θ degrees, [patch outline Kx3], card patch indices)] from closed to open, by simulating
-    the scaffold from its design state (180°) to 0 at `count` angles; MovieError when the
-    simulation stops early (a design that locks)."""
+    """[(θ degrees, [patch outline Kx3], card patch indices, (rotations n x 3 x 3,
+    translations n x 3) of the patches from the design state)] from closed to open, by
+    simulating the scaffold from its design state (180°) to 0 at `count` angles; MovieError when
+    the simulation stops early (a design that locks)."""
     from popupwb.core import popupcore
 
     angles = list(np.linspace(math.pi, 0.0, int(count)))
@@ -89,7 +82,8 @@ def card_frames(scaffold, count=FRAMES):
             np.asarray(o, dtype=float).reshape(-1, 3)
             for o in popupcore.posed_outlines(scaffold, state)
         ]
-        frames.append((math.degrees(angle), outlines, card))
+        poses = (np.asarray(state.rotations), np.asarray(state.translations).reshape(-1, 3))
+        frames.append((math.degrees(angle), outlines, card, poses))
     return frames[::-1]
 
 
@@ -151,93 +145,117 @@ class _View:
         if p.shape[1] == 2:  # a point of the card's plane
             p = np.c_[p, np.zeros(len(p))]
         tilt = math.radians(TILT_DEGREES)
-        return np.c_[p[:, 0], p[:, 1] * math.cos(tilt) + p[:, 2] * math.sin(tilt)]
+        return np.stack([p[:, 0], p[:, 1] * math.cos(tilt) + p[:, 2] * math.sin(tilt)], axis=1)
 
     @staticmethod
-    def depth(points):
-        p = np.asarray(points, dtype=float).reshape(-1, 3)
+    def towards_eye():
+        """The depth of a card point X toward the camera is towards_eye() . X."""
         tilt = math.radians(TILT_DEGREES)
-        return p[:, 2] * math.cos(tilt) - p[:, 1] * math.sin(tilt)
+        return np.array([0.0, -math.sin(tilt), math.cos(tilt)])
+
+    def affine(self, left=0):
+        """(A 2x3, b): the pixel of a card point X is A X + b."""
+        tilt = math.radians(TILT_DEGREES)
+        a = self.scale * np.array([[1.0, 0.0, 0.0], [0.0, -math.cos(tilt), -math.sin(tilt)]])
+        b = np.array(
+            [
+                left + PANEL_PX / 2 - self.centre[0] * self.scale,
+                HEADER_PX + PANEL_PX / 2 + self.centre[1] * self.scale,
+            ]
+        )
+        return a, b
 
     def pixels(self, points, left=0):
         """(N, 2) float pixel coordinates."""
         q = self.screen(points)
         x = left + PANEL_PX / 2 + (q[:, 0] - self.centre[0]) * self.scale
         y = HEADER_PX + PANEL_PX / 2 - (q[:, 1] - self.centre[1]) * self.scale
-        return np.c_[x, y]
+        return np.stack([x, y], axis=1)
 
     def __call__(self, points, left=0):
         return [(float(a), float(b)) for a, b in self.pixels(points, left)]
 
 
-def _render(image, view, polygons, colours, left, outline):
-    """Draws planar `polygons` (each Kx3, card mm) into the panel at `left` with a z-buffer:
-    each pixel shows the polygon nearest the camera there, its depth from the polygon's plane,
-    so folded patches hide what is behind them whatever their order. Region borders are
-    outlined with `outline` (None: not); polygons seen edge-on are drawn as lines."""
-    from PIL import Image, ImageDraw
+def _draw_card(canvas, view, outlines, card, poses, artwork):
+    """The card at one fold angle into the left panel of `canvas` (an RGB array); the patches
+    seen edge-on, to be drawn as lines."""
+    from popupwb.motion.movie_card import newell_normals, paint_card
 
-    width, height = image.size
-    zbuffer = np.full((height, PANEL_PX), -np.inf)
-    ids = np.full((height, PANEL_PX), -1, dtype=np.int64)
-    edge_on = []
-    for i, polygon in enumerate(polygons):
-        if len(polygon) < 3:
-            continue
-        pixels = view.pixels(polygon, 0)
-        depth = view.depth(polygon)
-        x0, y0 = np.floor(pixels.min(axis=0)).astype(int)
-        x1, y1 = np.ceil(pixels.max(axis=0)).astype(int) + 1
-        x0, y0, x1, y1 = max(x0, 0), max(y0, 0), min(x1, PANEL_PX), min(y1, height)
-        doubled = np.sum(
-            pixels[:, 0] * np.roll(pixels[:, 1], -1) - np.roll(pixels[:, 0], -1) * pixels[:, 1]
-        )
-        if abs(doubled) < 2.0 or x1 <= x0 or y1 <= y0:  # under a pixel of area: edge-on
-            edge_on.append(i)
-            continue
-        mask = Image.new("1", (x1 - x0, y1 - y0), 0)
-        ImageDraw.Draw(mask).polygon([(float(a - x0), float(b - y0)) for a, b in pixels], fill=1)
-        inside = np.asarray(mask, dtype=bool)
-        # The polygon is planar: its depth is affine in the pixel coordinates.
-        system = np.c_[pixels, np.ones(len(pixels))]
-        (a, b, c), *_ = np.linalg.lstsq(system, depth, rcond=None)
-        rows, cols = np.nonzero(inside)
-        z = a * (cols + x0 + 0.5) + b * (rows + y0 + 0.5) + c
-        current = zbuffer[rows + y0, cols + x0]
-        nearer = z > current
-        zbuffer[rows[nearer] + y0, cols[nearer] + x0] = z[nearer]
-        ids[rows[nearer] + y0, cols[nearer] + x0] = i
-    palette = np.array([BACKGROUND] + [tuple(c) for c in colours], dtype=np.uint8)
-    picture = palette[ids + 1]
-    if outline is not None:
-        border = np.zeros_like(ids, dtype=bool)
-        border[:, 1:] |= ids[:, 1:] != ids[:, :-1]
-        border[1:, :] |= ids[1:, :] != ids[:-1, :]
-        picture[border] = outline
-    drawn = np.asarray(image).copy()
-    region = drawn[:, left : left + PANEL_PX]
-    covered = ids >= 0
-    if outline is not None:
-        covered |= border
+    normals = newell_normals(outlines)
+    light = LIGHT / np.linalg.norm(LIGHT)
+    lengths = np.linalg.norm(normals, axis=1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        lit = np.where(lengths > 0, np.abs(normals @ light) / lengths, 0.5)
+    shades = AMBIENT + (1.0 - AMBIENT) * lit
+    base = np.array([CARD if i in card else PAPER for i in range(len(outlines))]).reshape(-1, 3)
+    colours = np.clip(np.rint(base * shades[:, None]), 0, 255).astype(np.uint8)
+    printed = (artwork, shades, *poses) if artwork is not None else None
+    picture, covered, (x0, y0), edge_on = paint_card(
+        view, outlines, normals, colours, (PANEL_PX, canvas.shape[0]), EDGE, printed
+    )
+    region = canvas[y0 : y0 + picture.shape[0], x0 : x0 + picture.shape[1]]
     region[covered] = picture[covered]
-    image.paste(Image.fromarray(drawn))
-    draw = ImageDraw.Draw(image)
-    for i in edge_on:
-        draw.line(view(np.vstack([polygons[i], polygons[i][:1]]), left), fill=outline or BONE)
+    return edge_on
 
 
-def _paint_flat(draw, view, triangles):
-    """The character's mesh projected on the card's plane (as its paths are), far triangles
-    first: small triangles, so the painter's order is enough."""
-    depth = triangles[:, :, 2].mean(axis=1)
-    for i in np.argsort(depth, kind="stable"):
-        draw.polygon(view(triangles[i][:, :2], PANEL_PX), fill=_shade(MESH, _normal(triangles[i])))
+def _draw_mesh(canvas, view, triangles):
+    """The character's mesh projected on the card's plane (as its paths are) into the right
+    panel of `canvas`, nearest the camera on top (popupcore.render_view's z-buffer)."""
+    from popupwb.core import popupcore
+
+    tilt = math.radians(TILT_DEGREES)
+    points = np.asarray(triangles, dtype=float).reshape(-1, 3)
+    # On the card's plane seen by the camera: (x, y cos t); z orders what lies over what.
+    flat = np.stack([points[:, 0], points[:, 1] * math.cos(tilt), points[:, 2]], axis=1)
+    faces = np.arange(len(flat), dtype=np.int32).reshape(-1, 3)
+    rgba = popupcore.render_view(
+        [(flat, faces, MESH / 255.0)],
+        [],
+        towards_eye=(0.0, 0.0, 1.0),
+        up=(0.0, 1.0, 0.0),
+        centre=(float(view.centre[0]), float(view.centre[1]), 0.0),
+        mm_per_pixel=1.0 / view.scale,
+        width=PANEL_PX,
+        height=PANEL_PX,
+        light=tuple(LIGHT),
+        ambient=AMBIENT,
+        edge_px=0.0,
+    )
+    region = canvas[HEADER_PX : HEADER_PX + PANEL_PX, PANEL_PX : 2 * PANEL_PX]
+    drawn = rgba[..., 3] > 0
+    region[drawn] = rgba[..., :3][drawn]
 
 
-def write_movie(path, scaffold, character, chains=(), title="", count=FRAMES):
+def _printed_artwork(scaffold, printed, view):
+    """movie_card.CardArtwork of the printed parts, None without any or when they cannot be
+    rendered (the sheets, which print them, say why)."""
+    from popupwb.motion.movie_card import pixels_per_mm, render_card_artwork
+
+    if not printed:
+        return None
+    try:
+        return render_card_artwork(scaffold, printed, pixels_per_mm(view.scale))
+    except ValueError:  # popupcore.DesignError: a mesh the core cannot render
+        return None
+
+
+def _one_palette(frames):
+    """The frames as "P" images sharing one palette, chosen from PALETTE_SAMPLES of them: the
+    GIF's frames compare and compress cheaply and the colours do not flicker."""
+    from PIL import Image
+
+    picks = np.unique(np.linspace(0, len(frames) - 1, PALETTE_SAMPLES).round().astype(int))
+    sample = Image.fromarray(np.concatenate([np.asarray(frames[k]) for k in picks], axis=0))
+    palette = sample.quantize(PALETTE_COLOURS, method=Image.Quantize.FASTOCTREE)
+    return [frame.quantize(palette=palette, dither=Image.Dither.NONE) for frame in frames]
+
+
+def write_movie(path, scaffold, character, chains=(), title="", count=FRAMES, printed=()):
     """Writes the GIF to `path` and returns (path, frames, (width, height)). `character` is
     character_frames(...) of the same `count` (the right half), `chains` the ChainReports whose
-    target and achieved paths are drawn faintly, with the moving points on them."""
+    target and achieved paths are drawn faintly, with the moving points on them, `printed` the
+    character as the card prints it (design_from_motion.printed_character: the body, then the
+    limbs), drawn on the card's patches; () draws the paper alone."""
     from PIL import Image, ImageDraw, ImageFont
 
     cards = card_frames(scaffold, count)
@@ -252,31 +270,37 @@ def write_movie(path, scaffold, character, chains=(), title="", count=FRAMES):
         )
         for c in chains
     ]
-    everything = [o for _, outlines, _ in cards for o in outlines]
+    everything = [o for _, outlines, _, _ in cards for o in outlines]
     everything += [np.array(seg) for _, segments, _ in people for seg in segments]
     everything += [np.c_[p, np.zeros(len(p))] for t, a, _ in paths for p in (t, a) if len(p)]
     view = _View(np.vstack(everything))
+    artwork = _printed_artwork(scaffold, printed, view)
     font = ImageFont.load_default()
     size = (2 * PANEL_PX, PANEL_PX + HEADER_PX)
+    background = Image.new("RGB", size, BACKGROUND)
+    draw = ImageDraw.Draw(background)
+    for left in (0, PANEL_PX):  # the same in every frame
+        for target, achieved, _ in paths:
+            if len(target) > 1:
+                draw.line(view(target, left), fill=PATH, width=1)
+    background = np.asarray(background)
     images = []
-    for k, ((angle, outlines, card), (frame, segments, triangles)) in enumerate(zip(cards, people)):
+    for k, ((angle, outlines, card, poses), (frame, segments, triangles)) in enumerate(
+        zip(cards, people)
+    ):
         s = k / max(count - 1, 1)
-        image = Image.new("RGB", size, BACKGROUND)
-        draw = ImageDraw.Draw(image)
-        for left in (0, PANEL_PX):
-            for target, achieved, _ in paths:
-                if len(target) > 1:
-                    draw.line(view(target, left), fill=PATH, width=1)
-        colours = [
-            _shade(CARD if i in card else PAPER, _normal(outline))
-            for i, outline in enumerate(outlines)
-        ]
-        _render(image, view, outlines, colours, 0, EDGE)
-        draw = ImageDraw.Draw(image)
+        canvas = background.copy()
+        edge_on = _draw_card(canvas, view, outlines, card, poses, artwork)
         if triangles is not None and len(triangles):
-            _paint_flat(draw, view, triangles)
-        for a, b in segments:  # on the card's plane, where its paths are measured
-            draw.line(view(np.array([a, b])[:, :2], PANEL_PX), fill=BONE, width=3)
+            _draw_mesh(canvas, view, triangles)
+        image = Image.fromarray(canvas)
+        draw = ImageDraw.Draw(image)
+        for i in edge_on:
+            draw.line(view(np.vstack([outlines[i], outlines[i][:1]]), 0), fill=EDGE)
+        if segments:  # on the card's plane, where its paths are measured
+            ends = view.pixels(np.array(segments)[:, :, :2].reshape(-1, 2), PANEL_PX)
+            for a, b in ends.reshape(-1, 2, 2).tolist():
+                draw.line([tuple(a), tuple(b)], fill=BONE, width=3)
         for j, (target, achieved, samples) in enumerate(paths):
             colour = POINT_COLOURS[j % len(POINT_COLOURS)]
             for points, left in ((achieved, 0), (target, PANEL_PX)):
@@ -287,7 +311,8 @@ def write_movie(path, scaffold, character, chains=(), title="", count=FRAMES):
         draw.line([(PANEL_PX, HEADER_PX), (PANEL_PX, size[1])], fill=EDGE, width=1)
         header = f"{title}  fold {angle:5.1f} deg   animation frame {frame:6.2f}"
         draw.text((MARGIN_PX, 8), header.strip(), fill=(0, 0, 0), font=font)
-        images.append(image.convert("P", palette=Image.ADAPTIVE, colors=128))
+        images.append(image)
+    images = _one_palette(images)
     durations = [FRAME_MS] * (len(images) - 1) + [HOLD_MS]
     images[0].save(
         path, save_all=True, append_images=images[1:], duration=durations, loop=0, optimize=False
