@@ -292,3 +292,17 @@ def test_sheets_that_cannot_be_laid_out_are_reported_not_a_crash(tmp_path, user_
     assert "does not fit the printable area 190.0 x 277.0 mm of A4" in report["sheets_error"]
     assert any("no cutting sheets" in line for line in said)
     assert "sheets" not in files
+
+
+def test_the_demos_figure_exits_0_with_sheets_that_glue(tmp_path, user_home):
+    """`make demo`'s animation (resources/samples/waving_figure.glb): its design is valid and its
+    sheets lay out without error. An outline that leaves a glue tab no room is dropped, and the
+    report says which (the floating layer under the still foot, on the A4 card)."""
+    sample = os.path.join(os.environ["POPUP_SOURCE_DIR"], "resources", "samples")
+    out = tmp_path / "demo"
+    proc = animate(os.path.join(sample, "waving_figure.glb"), out, home=user_home)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    report = read_report(out)
+    assert report["sheets_ok"] is True
+    dropped = [d["message"] for d in report["diagnostics"] if "could not glue it" in d["message"]]
+    assert dropped and all(m.startswith("FloatingLayer_") for m in dropped), dropped
