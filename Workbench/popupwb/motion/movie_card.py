@@ -23,7 +23,7 @@ MIN_PIXELS_PER_MM = 1.0
 MAX_PIXELS_PER_MM = 8.0
 EDGE_ON_PX2 = 2.0  # a patch seen under this doubled area (pixels²) is drawn as a line
 # Patches lying on one plane (a mechanism's parts flat on the page at 180°): the later one, glued
-# over the earlier (the pages come first), shows.
+# over the earlier (the pages come first), shows, and a limb's part over all.
 TIE_MM = 1e-4
 
 
@@ -34,8 +34,12 @@ class CardArtwork:
     the top), its pixel (column c, row r) spanning the design-state points corner[i] +
     [c, c + 1] step_u[i] + [r, r + 1] step_v[i]; has[i] False where nothing is printed."""
 
-    def __init__(self, count, images):
+    def __init__(self, count, images, limbs=()):
         self.has = np.zeros(count, dtype=bool)
+        # The limbs' parts: on a plane shared with others they show (the moving part lies over
+        # the wing or page it folds from; a later part would otherwise hide the limb).
+        self.limb = np.zeros(count, dtype=bool)
+        self.limb[list(limbs)] = True
         self.back = np.zeros(count, dtype=bool)
         self.corner = np.zeros((count, 3))
         self.step_u = np.zeros((count, 3))
@@ -103,7 +107,7 @@ def render_card_artwork(scaffold, printed, resolution):
     if printed and body and len(printed[0].mesh.triangles):
         for art in popupcore.render_artworks(printed[0].mesh, body, pixels_per_mm=resolution):
             images[index[art.patch]] = art
-    return CardArtwork(len(patches), images)
+    return CardArtwork(len(patches), images, [index[i] for i in taken])
 
 
 def _print_patch(picture, ids, box, artwork, i, shade, pose, camera):
@@ -172,18 +176,19 @@ def _depth_planes(polygons, normals, affine, eye):
         ]
 
 
-def _zbuffer(pixels, planes, box):
+def _zbuffer(pixels, planes, box, order):
     """(ids, edge-on indices): per pixel of `box` (x0, y0, x1, y1) the index of the polygon
-    nearest the camera there (-1 none; of polygons as near, within TIE_MM, the last);
-    `pixels` each polygon's corners in panel pixels, `planes` its depth plane. Polygons seen
-    edge-on (under a pixel of area) are left out."""
+    nearest the camera there (-1 none; of polygons as near, within TIE_MM, the last in
+    `order`); `pixels` each polygon's corners in panel pixels, `planes` its depth plane.
+    Polygons seen edge-on (under a pixel of area) are left out."""
     from PIL import Image, ImageDraw
 
     bx0, by0, bx1, by1 = box
     zbuffer = np.full((by1 - by0, bx1 - bx0), -np.inf)
     ids = np.full((by1 - by0, bx1 - bx0), -1, dtype=np.int32)
     edge_on = []
-    for i, corners in enumerate(pixels):
+    for i in order:
+        corners = pixels[i]
         if len(corners) < 3:
             continue
         x0, y0 = np.floor(corners.min(axis=0)).astype(int)
@@ -202,7 +207,7 @@ def _zbuffer(pixels, planes, box):
         nearer = np.asarray(mask).view(bool) & (z > window - TIE_MM)
         window[nearer] = z[nearer]
         ids[y0 - by0 : y1 - by0, x0 - bx0 : x1 - bx0][nearer] = i
-    return ids, edge_on
+    return ids, sorted(edge_on)
 
 
 def paint_card(view, polygons, normals, colours, size, outline, printed=None):
@@ -224,7 +229,10 @@ def paint_card(view, polygons, normals, colours, size, outline, printed=None):
     if box[2] <= box[0] or box[3] <= box[1]:  # nothing in the panel
         return np.zeros((0, 0, 3), np.uint8), np.zeros((0, 0), bool), box[:2], []
     planes = _depth_planes(polygons, normals, affine, eye)
-    ids, edge_on = _zbuffer(pixels, planes, box)
+    # Ties: the later patch, and a limb's part over everything (CardArtwork.limb).
+    limb = printed[0].limb if printed is not None else np.zeros(len(polygons), dtype=bool)
+    order = np.argsort(limb, kind="stable")
+    ids, edge_on = _zbuffer(pixels, planes, box, order)
     palette = np.array([(255, 255, 255)] + [tuple(c) for c in colours], dtype=np.uint8)
     picture = palette[ids + 1]
     covered = ids >= 0
