@@ -49,6 +49,7 @@ bench: build
 	  $(PYTHON) bench/freecad_recompute_bench.py
 	POPUP_BUILD_DIR=$(CURDIR)/$(BUILD) $(PYTHON) bench/sheets_bench.py
 	POPUP_BUILD_DIR=$(CURDIR)/$(BUILD) $(PYTHON) bench/fit_e2e_bench.py
+	POPUP_BUILD_DIR=$(CURDIR)/$(BUILD) $(PYTHON) bench/animate_e2e_bench.py
 
 # libFuzzer targets (fuzz/, docs/RELIABILITY.md): FUZZ_SECONDS per target, corpora kept in
 # $(BUILD)/fuzz-work between runs. Then load_model on FUZZ_MODEL_MUTANTS mutated model files
