@@ -88,12 +88,20 @@ def push_button(text, name, slot):
     return button
 
 
+# The narrowest a field may get: a spin box's own minimum is the width of its largest value
+# (10 digits for the iterations), which pushed the panel past FreeCAD's side pane (about 260 px).
+FIELD_MIN_WIDTH_PX = 60
+
+
 def form_group(title, rows):
-    """A group box of rows: (label, widget) pairs, and widgets alone that take the whole row."""
+    """A group box of rows: (label, widget) pairs, and widgets alone that take the whole row; the
+    fields may narrow to FIELD_MIN_WIDTH_PX so the panel fits the side pane."""
     group = QtGui.QGroupBox(title)
     form = QtGui.QFormLayout(group)
+    form.setFieldGrowthPolicy(QtGui.QFormLayout.AllNonFixedFieldsGrow)
     for row in rows:
         if isinstance(row, tuple):
+            row[1].setMinimumWidth(FIELD_MIN_WIDTH_PX)
             form.addRow(*row)
         else:
             form.addRow(row)
