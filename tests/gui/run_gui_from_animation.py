@@ -100,6 +100,8 @@ def run():
     result["chains"] = [c.name for c in designed.chains] if designed else []
     result["mechanism_names"] = [m.name for m in designed.mechanisms] if designed else []
     result["plot_size"] = list(panel.plot.full_size())
+    movie = panel.movie.movie
+    result["movie"] = [movie.frameCount(), *panel.movie.full_size()] if movie else []
     result["frame_boxes"] = [panel.first_frame.text(), panel.last_frame.text()]
     result["window"] = [designed.targets.first_frame, designed.targets.last_frame] if designed else []
     # FreeCAD's side pane is 260-400 px wide: the whole panel, plot included, must fit 260 px.
@@ -183,6 +185,11 @@ def main():
         "the paths plot is in the panel",
         r.get("plot_size", [0, 0])[0] >= 300 and r.get("panel_tinted_pixels", 0) > 300,
         r.get("plot_size"),
+    )
+    check(
+        "the panel plays the card opening beside the character (motion.gif's 37 frames)",
+        r.get("movie", [0])[0] == 37 and r["movie"][1] == 960,
+        r.get("movie"),
     )
     check(
         "the panel fits a 260 px side pane, its plot scaled to it",

@@ -251,8 +251,7 @@ def _write_design(args, result, animation, stages, files, say):
 
 
 def _write_pictures(args, result, animation, up, stages, files, say):
-    from popupwb.motion.design_from_motion import printed_character
-    from popupwb.motion.motion_movie import MovieError, character_frames, write_movie
+    from popupwb.motion.motion_movie import MovieError, write_result_movie
     from popupwb.motion.paths_plot import write_paths_plot
 
     title = os.path.basename(args.animation)
@@ -268,21 +267,8 @@ def _write_pictures(args, result, animation, up, stages, files, say):
     say(f"wrote {files['paths']}")
     with stages.stage("movie", "drawing the card opening beside the animation"):
         try:
-            files["movie"], _, _ = write_movie(
-                os.path.join(args.out, MOVIE_FILE),
-                result.scaffold,
-                character_frames(
-                    animation,
-                    result.targets.animation_to_card,
-                    result.targets.first_frame,
-                    result.targets.last_frame,
-                    # The character stands where the targets are when its walk was taken out.
-                    in_place_up=up if getattr(result.targets, "in_place", False) else None,
-                ),
-                result.chains,
-                title=title,
-                printed=printed_character(animation, result),  # the card as it is printed
-            )
+            movie = os.path.join(args.out, MOVIE_FILE)
+            files["movie"], _, _ = write_result_movie(movie, result, animation, up, title)
         except MovieError as e:  # an invalid design that locks: the report says why
             say(f"no movie: {e}")
             return

@@ -318,3 +318,28 @@ def write_movie(path, scaffold, character, chains=(), title="", count=FRAMES, pr
         path, save_all=True, append_images=images[1:], duration=durations, loop=0, optimize=False
     )
     return path, len(images), size
+
+
+def write_result_movie(path, result, animation, up, title=""):
+    """write_movie of a popupcore.MotionResult designed from `animation`: the card as it is
+    printed (design_from_motion.printed_character) beside the character over the frames shown,
+    standing where the targets are when its walk was taken out (`up`: the view's up). As
+    `popup animate` writes motion.gif and the From-animation panel plays it."""
+    from popupwb.motion.design_from_motion import printed_character
+
+    targets = result.targets
+    character = character_frames(
+        animation,
+        targets.animation_to_card,
+        targets.first_frame,
+        targets.last_frame,
+        in_place_up=tuple(up) if targets.in_place else None,
+    )
+    return write_movie(
+        path,
+        result.scaffold,
+        character,
+        result.chains,
+        title=title,
+        printed=printed_character(animation, result),
+    )

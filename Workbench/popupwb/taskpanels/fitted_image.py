@@ -1,7 +1,7 @@
 """FittedImage: a picture in a task panel as wide as the side pane lets it be (FreeCAD's combo
 view is 300-400 px wide; a picture drawn at a fixed width pushed the panel's right side out of
 view). It keeps the image at full size and shows it scaled to the label's width, again at every
-resize, never wider than the image itself."""
+resize, never wider than the image itself; an animated GIF (set_movie) plays the same way."""
 
 from PySide import QtCore, QtGui
 
@@ -16,6 +16,7 @@ class FittedImage(QtGui.QLabel):
         self.setSizePolicy(QtGui.QSizePolicy.Ignored, QtGui.QSizePolicy.Preferred)
         self.setMinimumWidth(1)
         self._full = None
+        self.movie = None  # the QMovie playing, or None
 
     def set_png(self, data):
         """Shows the PNG `data` (bytes), scaled to the label's width."""
@@ -23,7 +24,20 @@ class FittedImage(QtGui.QLabel):
         self._full.loadFromData(data, "PNG")
         self._fit()
 
+    def set_movie(self, path):
+        """Plays the animated GIF at `path` in a loop, scaled to the label's width."""
+        self.clear()
+        self.movie = QtGui.QMovie(path)
+        self.movie.jumpToFrame(0)
+        self._full = self.movie.currentPixmap()
+        self.setMovie(self.movie)
+        self._fit()
+        self.movie.start()
+
     def clear(self):
+        if self.movie is not None:
+            self.movie.stop()
+            self.movie = None
         self._full = None
         super().clear()
 
@@ -39,6 +53,9 @@ class FittedImage(QtGui.QLabel):
         if self._full is None or self._full.isNull():
             return
         width = max(1, min(self.width(), self._full.width()))
-        scaled = self._full.scaledToWidth(width, QtCore.Qt.SmoothTransformation)
-        self.setPixmap(scaled)
-        self.setMinimumHeight(scaled.height())
+        height = round(self._full.height() * width / self._full.width())
+        if self.movie is not None:
+            self.movie.setScaledSize(QtCore.QSize(width, height))
+        else:
+            self.setPixmap(self._full.scaledToWidth(width, QtCore.Qt.SmoothTransformation))
+        self.setMinimumHeight(height)

@@ -50,6 +50,11 @@ class FromAnimationPanel(LongJobPanel):
             "Solid: each end effector's target path on the card; dashed: its mechanism's point",
         )
         self.layout.addWidget(self.plot)
+        self.movie = FittedImage(
+            "MotionMovie",
+            "The card opening as it will be printed, beside the character at the same moment",
+        )
+        self.layout.insertWidget(self.layout.indexOf(self.plot), self.movie)
 
     # --- widgets ----------------------------------------------------------------------------
 
@@ -200,6 +205,7 @@ class FromAnimationPanel(LongJobPanel):
         self.result = None
         self.plot_png = None
         self.plot.clear()
+        self.movie.clear()
         label = f"{os.path.basename(self.path)}: designing an animated pop-up"
 
         def job():
@@ -222,6 +228,7 @@ class FromAnimationPanel(LongJobPanel):
         if self.result is None:
             return None
         self._show_window(self.result.targets)
+        self._show_movie(label)
         self._show_plot()
         self._say(self.summary())
         return self.result
@@ -233,6 +240,23 @@ class FromAnimationPanel(LongJobPanel):
         chosen = bool(targets.window["chosen"])
         self.first_frame.setSpecialValueText(f"auto: {targets.first_frame}" if chosen else "")
         self.last_frame.setSpecialValueText(f"auto: {targets.last_frame}" if chosen else "last")
+
+    def _show_movie(self, label):
+        """motion.gif of `popup animate`, written to a temporary file and played in the panel;
+        a design that locks has none (the status line says why the design is not valid)."""
+        import tempfile
+
+        from popupwb import progress
+        from popupwb.motion.motion_movie import MovieError, write_result_movie
+
+        self.movie.clear()
+        path = os.path.join(tempfile.mkdtemp(prefix="popup-motion-"), "motion.gif")
+        up = AXES[self.up.currentText()]
+        try:
+            progress.run(label, write_result_movie, path, self.result, self.animation, up)
+        except (MovieError, progress.Cancelled):  # the design stays; only its picture is skipped
+            return
+        self.movie.set_movie(path)
 
     def _show_plot(self):
         from popupwb.motion.paths_plot import write_paths_plot
