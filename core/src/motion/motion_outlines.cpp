@@ -41,12 +41,12 @@ void outline_motion(const Animation& animation, MotionResult& r, const CancelFla
         std::string chains;
         for (const std::string& c : limb.chains)
             chains += (chains.empty() ? "" : ", ") + c;
-        if (limb.mesh.triangles.empty()) {
+        auto warn = [&](const std::string& what) {
             r.diagnostics.push_back(Diagnostic::warning(
-                DiagnosticCode::bad_profile,
-                limb.mechanism + " (" + chains +
-                    "): no mesh triangle is skinned to its chains alone; it keeps its generated "
-                    "shape"));
+                DiagnosticCode::bad_profile, limb.mechanism + " (" + chains + "): " + what));
+        };
+        if (limb.mesh.triangles.empty()) {
+            warn("no mesh triangle is skinned to its chains alone; it keeps its generated shape");
             continue;
         }
         const auto m =
@@ -56,11 +56,8 @@ void outline_motion(const Animation& animation, MotionResult& r, const CancelFla
         if (!o.profiles.empty()) {
             const std::size_t now = sheet_errors(o.scaffold);
             if (now > errors) {
-                r.diagnostics.push_back(Diagnostic::warning(
-                    DiagnosticCode::bad_profile,
-                    limb.mechanism + " (" + chains +
-                        "): outline dropped, the cutting sheets could not glue it (a glue tab "
-                        "would have no room); it keeps its generated shape"));
+                warn("outline dropped, the cutting sheets could not glue it (a glue tab would "
+                     "have no room); it keeps its generated shape");
                 continue;
             }
             errors = now;
@@ -68,9 +65,7 @@ void outline_motion(const Animation& animation, MotionResult& r, const CancelFla
         r.scaffold = o.scaffold;
         r.profiles.insert(r.profiles.end(), o.profiles.begin(), o.profiles.end());
         for (const FitRepair& d : o.dropped)
-            r.diagnostics.push_back(Diagnostic::warning(
-                DiagnosticCode::bad_profile,
-                limb.mechanism + " (" + chains + "): outline " + d.action + ", " + d.reason));
+            warn("outline " + d.action + ", " + d.reason);
     }
 }
 
