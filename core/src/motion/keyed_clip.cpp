@@ -1,12 +1,16 @@
 #include "keyed_clip.hpp"
 
 #include <algorithm>
+#include <thread>
 
 namespace popup::motion {
 
 namespace {
 
 using Affine = Eigen::Matrix4d;
+
+/// Below this many bone transforms (frames × bones) the frames are made on one thread.
+constexpr std::size_t transforms_for_threads = 20000;
 
 /// A channel's value at a time in ticks: neighbouring keys lerped (slerped for rotations), the
 /// end keys held outside them.
@@ -134,24 +138,36 @@ void globals_at(const KeyedClip& clip, const std::vector<Bone>& bones, double ti
 
 void read_frames(const KeyedClip& clip, Animation& animation)
 {
-    const std::size_t n = clip.bones.size();
+    const std::size_t n = clip.bones.size(), frames = clip.frame_ticks.size();
     const ClipSampler sampler(clip, animation.bones);
-    std::vector<Affine> global(n);
-    std::vector<Eigen::Isometry3d> rigid(n);
-    animation.local.assign(clip.frame_ticks.size(), {});
-    for (std::size_t f = 0; f < clip.frame_ticks.size(); ++f) {
-        sampler.globals(clip.frame_ticks[f], global);
-        for (std::size_t b = 0; b < n; ++b)
-            rigid[b] = rigid_part(global[b]);
-        std::vector<Eigen::Isometry3d>& local = animation.local[f];
-        local.resize(n);
-        for (std::size_t b = 0; b < n; ++b) {
-            const int p = animation.bones[b].parent;
-            local[b] = p >= 0 ? rigid[p].inverse() * rigid[b] : rigid[b];
-            local[b].linear() =
-                Eigen::Quaterniond(local[b].linear()).normalized().toRotationMatrix();
+    animation.local.assign(frames, {});
+    // Frames from..to: each frame is made from its keys alone, so the frames are shared out
+    // among the cores (4,500 frames of 83 bones: 0.37 s on one).
+    auto make = [&](std::size_t from, std::size_t to) {
+        std::vector<Affine> global(n);
+        std::vector<Eigen::Isometry3d> rigid(n);
+        for (std::size_t f = from; f < to; ++f) {
+            sampler.globals(clip.frame_ticks[f], global);
+            for (std::size_t b = 0; b < n; ++b)
+                rigid[b] = rigid_part(global[b]);
+            std::vector<Eigen::Isometry3d>& local = animation.local[f];
+            local.resize(n);
+            for (std::size_t b = 0; b < n; ++b) {
+                const int p = animation.bones[b].parent;
+                local[b] = p >= 0 ? rigid[p].inverse() * rigid[b] : rigid[b];
+                local[b].linear() =
+                    Eigen::Quaterniond(local[b].linear()).normalized().toRotationMatrix();
+            }
         }
-    }
+    };
+    const std::size_t threads =
+        frames * n < transforms_for_threads ? 1 : std::max(1u, std::thread::hardware_concurrency());
+    std::vector<std::thread> helpers;
+    for (std::size_t k = 1; k < threads; ++k)
+        helpers.emplace_back(make, frames * k / threads, frames * (k + 1) / threads);
+    make(0, frames / threads);
+    for (std::thread& helper : helpers)
+        helper.join();
 }
 
 void put_clip(ByteWriter& w, const KeyedClip& clip)
