@@ -1,7 +1,8 @@
 #include "keyed_clip.hpp"
 
 #include <algorithm>
-#include <thread>
+
+#include "on_cores.hpp"
 
 namespace popup::motion {
 
@@ -11,6 +12,8 @@ using Affine = Eigen::Matrix4d;
 
 /// Below this many bone transforms (frames × bones) the frames are made on one thread.
 constexpr std::size_t transforms_for_threads = 20000;
+/// Frames made as one task (read_frames).
+constexpr std::size_t frames_per_block = 64;
 
 /// A channel's value at a time in ticks: neighbouring keys lerped (slerped for rotations), the
 /// end keys held outside them.
@@ -141,12 +144,13 @@ void read_frames(const KeyedClip& clip, Animation& animation)
     const std::size_t n = clip.bones.size(), frames = clip.frame_ticks.size();
     const ClipSampler sampler(clip, animation.bones);
     animation.local.assign(frames, {});
-    // Frames from..to: each frame is made from its keys alone, so the frames are shared out
-    // among the cores (4,500 frames of 83 bones: 0.37 s on one).
-    auto make = [&](std::size_t from, std::size_t to) {
+    // Each frame is made from its keys alone, so blocks of frames are shared out among the
+    // cores (4,500 frames of 83 bones: 0.37 s on one).
+    auto make_block = [&](std::size_t block) {
         std::vector<Affine> global(n);
         std::vector<Eigen::Isometry3d> rigid(n);
-        for (std::size_t f = from; f < to; ++f) {
+        const std::size_t to = std::min(frames, (block + 1) * frames_per_block);
+        for (std::size_t f = block * frames_per_block; f < to; ++f) {
             sampler.globals(clip.frame_ticks[f], global);
             for (std::size_t b = 0; b < n; ++b)
                 rigid[b] = rigid_part(global[b]);
@@ -160,14 +164,8 @@ void read_frames(const KeyedClip& clip, Animation& animation)
             }
         }
     };
-    const std::size_t threads =
-        frames * n < transforms_for_threads ? 1 : std::max(1u, std::thread::hardware_concurrency());
-    std::vector<std::thread> helpers;
-    for (std::size_t k = 1; k < threads; ++k)
-        helpers.emplace_back(make, frames * k / threads, frames * (k + 1) / threads);
-    make(0, frames / threads);
-    for (std::thread& helper : helpers)
-        helper.join();
+    run_on_cores((frames + frames_per_block - 1) / frames_per_block, make_block,
+                 frames * n >= transforms_for_threads);
 }
 
 void put_clip(ByteWriter& w, const KeyedClip& clip)

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
 #include <mutex>
 #include <string>
-#include <thread>
+
+#include "on_cores.hpp"
 
 namespace popup::motion {
 
@@ -43,40 +43,18 @@ std::vector<Candidates> fit_all_candidates(const std::vector<ChainTarget>& chain
     const MotionKind order[] = {MotionKind::diagonal, MotionKind::rotation, MotionKind::horizontal,
                                 MotionKind::vertical, MotionKind::stationary};
     const std::size_t tasks = chains.size() * motion_kind_count;
-    std::atomic<std::size_t> next{0};
     std::size_t done = 0;
     std::mutex progress_lock; // progress only grows
-    std::exception_ptr error;
-    auto work = [&] {
-        for (std::size_t task; (task = next++) < tasks;) {
-            try {
-                stop_if_cancelled(cancel, "design_motion: mapping");
-                const std::size_t j = task % chains.size();
-                const MotionKind kind = order[task / chains.size()];
-                out[j][int(kind)] = fit_candidate(kind, chains[j], card, h_max);
-            } catch (...) {
-                const std::lock_guard<std::mutex> hold(progress_lock);
-                if (!error)
-                    error = std::current_exception();
-                next = tasks; // the others stop at their next task
-                return;
-            }
-            const std::lock_guard<std::mutex> hold(progress_lock);
-            ++done;
-            if (progress)
-                progress->store(0.2 * double(done) / double(tasks));
-        }
-    };
-    const std::size_t threads =
-        std::min<std::size_t>(tasks, std::max(1u, std::thread::hardware_concurrency()));
-    std::vector<std::thread> helpers;
-    for (std::size_t k = 1; k < threads; ++k)
-        helpers.emplace_back(work);
-    work();
-    for (std::thread& helper : helpers)
-        helper.join();
-    if (error)
-        std::rethrow_exception(error);
+    run_on_cores(tasks, [&](std::size_t task) {
+        stop_if_cancelled(cancel, "design_motion: mapping");
+        const std::size_t j = task % chains.size();
+        const MotionKind kind = order[task / chains.size()];
+        out[j][int(kind)] = fit_candidate(kind, chains[j], card, h_max);
+        const std::lock_guard<std::mutex> hold(progress_lock);
+        ++done;
+        if (progress)
+            progress->store(0.2 * double(done) / double(tasks));
+    });
     return out;
 }
 
