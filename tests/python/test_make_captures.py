@@ -85,3 +85,31 @@ def test_the_long_take_is_4500_frames_round_a_circle():
     # The root keeps to a circle of 250 cm about (0, z = 250) while it walks (noise 0.05 cm).
     radius = np.hypot(root[:, 0], root[:, 2] - 250.0)
     assert radius == pytest.approx(np.full(4500, 250.0), abs=0.3)
+
+
+def _euler_zxy(degrees):
+    """A BVH joint's rotation from its Zrotation Xrotation Yrotation channels (degrees)."""
+    z, x, y = np.radians(degrees)
+    c, s = np.cos, np.sin
+    rz = np.array([[c(z), -s(z), 0], [s(z), c(z), 0], [0, 0, 1]])
+    rx = np.array([[1, 0, 0], [0, c(x), -s(x)], [0, s(x), c(x)]])
+    ry = np.array([[c(y), 0, s(y)], [0, 1, 0], [-s(y), 0, c(y)]])
+    return rz @ rx @ ry
+
+
+def test_the_long_take_reads_back_every_frame(tmp_path):
+    # The loader makes a long take's frames on several threads from the keys its reading child
+    # sends: every frame, the first and last of each share included, is the file's own row.
+    path = make_captures.write("long_take", str(tmp_path))
+    text, known = make_captures.build("long_take")
+    rows = text.split("MOTION\n", 1)[1].splitlines()[2:]
+    animation = popupcore.load_animation(path)
+    assert animation.frames == known["frames"] == len(rows) == 4500
+    # The file says "Frame Time: 0.008333".
+    assert np.diff(animation.frame_times_s) == pytest.approx(np.full(4499, 1 / 120), abs=1e-6)
+    names = [b[0] for b in animation.bones]
+    for frame in (0, 1, 1124, 1125, 2249, 2250, 3374, 3375, 4498, 4499):
+        hips = np.asarray(popupcore.forward_kinematics(animation, frame)[names.index("Hips")])
+        values = [float(v) for v in rows[frame].split()[:6]]
+        assert hips[:3, 3] == pytest.approx(values[:3], abs=1e-4)
+        assert hips[:3, :3] == pytest.approx(_euler_zxy(values[3:6]), abs=1e-5)

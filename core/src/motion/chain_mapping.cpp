@@ -413,17 +413,32 @@ Candidate CandidateFit::stationary() const
 
 } // namespace
 
+Candidate fit_candidate(MotionKind kind, const ChainTarget& full, const CardParams& card,
+                        double h_max, std::size_t fit_samples)
+{
+    const CandidateFit fit(full, card, h_max, fit_samples);
+    switch (kind) {
+    case MotionKind::rotation:
+        return fit.rotation();
+    case MotionKind::vertical:
+        return fit.vertical();
+    case MotionKind::horizontal:
+        return fit.horizontal();
+    case MotionKind::diagonal:
+        return fit.diagonal();
+    case MotionKind::stationary:
+        break;
+    }
+    return fit.stationary();
+}
+
 std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& full,
                                                         const CardParams& card, double h_max,
                                                         std::size_t fit_samples)
 {
-    const CandidateFit fit(full, card, h_max, fit_samples);
     std::array<Candidate, motion_kind_count> out;
-    out[int(MotionKind::rotation)] = fit.rotation();
-    out[int(MotionKind::vertical)] = fit.vertical();
-    out[int(MotionKind::horizontal)] = fit.horizontal();
-    out[int(MotionKind::diagonal)] = fit.diagonal();
-    out[int(MotionKind::stationary)] = fit.stationary();
+    for (int k = 0; k < motion_kind_count; ++k)
+        out[k] = fit_candidate(MotionKind(k), full, card, h_max, fit_samples);
     return out;
 }
 

@@ -49,6 +49,11 @@ std::array<Candidate, motion_kind_count> fit_candidates(const ChainTarget& t,
                                                         const CardParams& card, double h_max,
                                                         std::size_t fit_samples = fit_samples_max);
 
+/// fit_candidates' candidate of one kind alone (the same), so that the kinds of a character's
+/// chains can be fitted side by side on threads (map_chains).
+Candidate fit_candidate(MotionKind kind, const ChainTarget& t, const CardParams& card, double h_max,
+                        std::size_t fit_samples = fit_samples_max);
+
 /// Two candidates whose eq 6.6 errors differ by less than this fraction of the character's
 /// diagonal make the path equally well: the mapping takes the one with fewer parameters.
 constexpr double mapping_tie_fraction = 1e-4;

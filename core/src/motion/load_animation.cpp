@@ -17,6 +17,7 @@
 #include "../input/child_process.hpp"
 #include "../input/model_mesh_bytes.hpp"
 #include "bvh_root_channels.hpp"
+#include "keyed_clip.hpp"
 #include "popup/motion/animation.hpp"
 
 namespace popup {
@@ -24,6 +25,9 @@ namespace popup {
 namespace {
 
 namespace fs = std::filesystem;
+
+using motion::KeyedClip;
+using motion::rigid_part;
 
 using Affine = Eigen::Matrix4d;
 
@@ -36,80 +40,9 @@ Affine affine(const aiMatrix4x4& m)
     return a;
 }
 
-/// The rigid part of an affine transform whose linear part is a rotation times a uniform scale
-/// (what animation rigs use): the rotation nearest to it, and its translation unchanged.
-Eigen::Isometry3d rigid_part(const Affine& a)
-{
-    const Eigen::JacobiSVD<Mat3> svd(a.topLeftCorner<3, 3>(),
-                                     Eigen::ComputeFullU | Eigen::ComputeFullV);
-    Mat3 r = svd.matrixU() * svd.matrixV().transpose();
-    if (r.determinant() < 0) { // a mirror: keep a rotation, flip the weakest axis
-        Mat3 u = svd.matrixU();
-        u.col(2) *= -1.0;
-        r = u * svd.matrixV().transpose();
-    }
-    Eigen::Isometry3d out = Eigen::Isometry3d::Identity();
-    out.linear() = r;
-    out.translation() = a.topRightCorner<3, 1>();
-    return out;
-}
-
 double uniform_scale(const Affine& a)
 {
     return std::cbrt(std::abs(a.topLeftCorner<3, 3>().determinant()));
-}
-
-/// A channel's value at a time in ticks: neighbouring keys lerped (slerped for rotations), the
-/// end keys held outside them.
-template <class Key, class Blend>
-auto sample(const Key* keys, unsigned count, double time, Blend blend)
-{
-    if (count == 1 || time <= keys[0].mTime)
-        return keys[0].mValue;
-    if (time >= keys[count - 1].mTime)
-        return keys[count - 1].mValue;
-    const Key* next = std::upper_bound(keys, keys + count, time,
-                                       [](double t, const Key& k) { return t < k.mTime; });
-    const Key* prev = next - 1;
-    const double span = next->mTime - prev->mTime;
-    const double u = span > 0 ? (time - prev->mTime) / span : 0.0;
-    return blend(prev->mValue, next->mValue, float(u));
-}
-
-Affine channel_transform(const aiNodeAnim* channel, double time, const Affine& rest)
-{
-    aiVector3D position, scaling;
-    aiQuaternion rotation;
-    aiMatrix4x4 r;
-    aiVector3D rest_scaling, rest_position;
-    aiQuaternion rest_rotation;
-    aiMatrix4x4 rest_ai;
-    for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j)
-            rest_ai[i][j] = float(rest(i, j));
-    rest_ai.Decompose(rest_scaling, rest_rotation, rest_position);
-    auto lerp = [](const aiVector3D& a, const aiVector3D& b, float u) { return a + (b - a) * u; };
-    auto slerp = [](const aiQuaternion& a, const aiQuaternion& b, float u) {
-        aiQuaternion out;
-        aiQuaternion::Interpolate(out, a, b, u);
-        return out.Normalize();
-    };
-    position = channel->mNumPositionKeys
-                   ? sample(channel->mPositionKeys, channel->mNumPositionKeys, time, lerp)
-                   : rest_position;
-    rotation = channel->mNumRotationKeys
-                   ? sample(channel->mRotationKeys, channel->mNumRotationKeys, time, slerp)
-                   : rest_rotation;
-    scaling = channel->mNumScalingKeys
-                  ? sample(channel->mScalingKeys, channel->mNumScalingKeys, time, lerp)
-                  : rest_scaling;
-    // Rotations in double: assimp's float matrices would cost 1e-7 per frame.
-    const Eigen::Quaterniond q(rotation.w, rotation.x, rotation.y, rotation.z);
-    Affine m = Affine::Identity();
-    m.topLeftCorner<3, 3>() =
-        q.normalized().toRotationMatrix() * Vec3(scaling.x, scaling.y, scaling.z).asDiagonal();
-    m.topRightCorner<3, 1>() = Vec3(position.x, position.y, position.z);
-    return m;
 }
 
 /// What the child sends back: a diagnostic code name and why ("" when read), then the animation.
@@ -117,6 +50,7 @@ struct Read {
     std::string code = "unreadable_model";
     std::string why;
     Animation animation;
+    KeyedClip clip; ///< the frames' keys: the caller makes animation.local from them
 };
 
 /// assimp's drawing of a skeleton (SkeletonMeshBuilder, for files without a mesh), not a mesh of
@@ -226,44 +160,24 @@ std::vector<double> frame_ticks_of(const aiAnimation* clip)
     return frame_ticks;
 }
 
-/// Each frame's local transforms into animation.local; returns the bones' global transforms at the
-/// first frame (affine: the skin's scale is read from them).
-std::vector<Affine> read_frames(const SceneBones& s, const std::vector<double>& frame_ticks,
-                                Animation& animation)
+/// The bones' keys (the frames' transforms are made from them by the caller, read_frames).
+KeyedClip keyed_clip(const SceneBones& s, std::vector<double> frame_ticks)
 {
-    const std::vector<const aiNode*>& nodes = s.nodes;
-    const std::vector<const aiNodeAnim*>& channel_of = s.channel_of;
-    const std::vector<int>& node_of_bone = s.node_of_bone;
-    const int n = int(node_of_bone.size());
-    // Global affine transforms per frame, made rigid (a rig's uniform scale, as FBX's 0.01
-    // armature, goes into the bones' positions and the mesh, not their transforms).
-    std::vector<Affine> rest(n);
-    for (int b = 0; b < n; ++b)
-        rest[b] = affine(nodes[node_of_bone[b]]->mTransformation);
-    std::vector<Affine> global_at_first(n);
-    for (size_t f = 0; f < frame_ticks.size(); ++f) {
-        std::vector<Affine> global(n);
-        std::vector<Eigen::Isometry3d> rigid(n);
-        for (int b = 0; b < n; ++b) {
-            const aiNodeAnim* ch = channel_of[node_of_bone[b]];
-            const Affine local = ch ? channel_transform(ch, frame_ticks[f], rest[b]) : rest[b];
-            const int p = animation.bones[b].parent;
-            global[b] = p >= 0 ? Affine(global[p] * local) : local;
-            rigid[b] = rigid_part(global[b]);
-        }
-        std::vector<Eigen::Isometry3d> local(n);
-        for (int b = 0; b < n; ++b) {
-            const int p = animation.bones[b].parent;
-            local[b] = p >= 0 ? rigid[p].inverse() * rigid[b] : rigid[b];
-            local[b].linear() =
-                Eigen::Quaterniond(local[b].linear()).normalized().toRotationMatrix();
-        }
-        animation.local.push_back(std::move(local));
-        if (f == 0)
-            global_at_first = global;
-    }
+    KeyedClip clip;
+    clip.frame_ticks = std::move(frame_ticks);
+    for (int node : s.node_of_bone)
+        clip.bones.push_back(
+            motion::bone_keys(s.channel_of[node], affine(s.nodes[node]->mTransformation)));
+    return clip;
+}
 
-    return global_at_first;
+/// The bones' global transforms at the first frame (affine: the skin's scale is read from them).
+std::vector<Affine> globals_at_first(const KeyedClip& clip, const std::vector<Bone>& bones)
+{
+    std::vector<Affine> global(bones.size());
+    if (!clip.frame_ticks.empty())
+        motion::globals_at(clip, bones, clip.frame_ticks.front(), global);
+    return global;
 }
 
 /// The skinned mesh into animation.mesh, .skin and .bind_inverse.
@@ -406,11 +320,10 @@ void read_with_assimp(const std::string& path, Read& out)
     Animation& animation = out.animation;
     animation.source = path;
     const SceneBones bones = scene_bones(scene, clip, animation);
-    const std::vector<double> frame_ticks = frame_ticks_of(clip);
-    for (double t : frame_ticks)
+    out.clip = keyed_clip(bones, frame_ticks_of(clip));
+    for (double t : out.clip.frame_ticks)
         animation.frame_times_s.push_back(t / ticks_per_second);
-    const std::vector<Affine> global_at_first = read_frames(bones, frame_ticks, animation);
-    read_skin(scene, bones, global_at_first, path, animation);
+    read_skin(scene, bones, globals_at_first(out.clip, animation.bones), path, animation);
     out.code.clear();
 }
 
@@ -427,14 +340,7 @@ std::string encode(const Read& read)
         w.put(b.parent);
     }
     w.put_all(a.frame_times_s);
-    // The frames' transforms straight into the bytes, room made once (48 MB for 4,500 frames
-    // of 83 bones): growing them cost more than assimp's reading.
-    const std::uint64_t count = a.local.size() * a.bones.size() * 16;
-    w.bytes.reserve(w.bytes.size() + sizeof count + count * sizeof(double) + (1 << 20));
-    w.put(count);
-    for (const auto& frame : a.local)
-        for (const Eigen::Isometry3d& t : frame)
-            w.bytes.append(reinterpret_cast<const char*>(t.matrix().data()), 16 * sizeof(double));
+    motion::put_clip(w, read.clip);
     put_mesh(w, a.mesh);
     std::vector<double> numbers;
     for (const Eigen::Isometry3d& t : a.bind_inverse)
@@ -471,18 +377,9 @@ bool decode(const std::string& bytes, Read& read)
         a.bones.push_back(bone);
     }
     r.get_all(a.frame_times_s);
-    // The frames' transforms read straight from the bytes into place.
-    const auto count = r.get<std::uint64_t>();
-    if (!r.fine || count != a.frame_times_s.size() * n * 16 ||
-        count > (bytes.size() - r.at) / sizeof(double))
+    motion::get_clip(r, n, read.clip);
+    if (!r.fine || read.clip.frame_ticks.size() != a.frame_times_s.size())
         return false;
-    a.local.assign(a.frame_times_s.size(), std::vector<Eigen::Isometry3d>(n));
-    for (auto& frame : a.local)
-        for (Eigen::Isometry3d& t : frame) {
-            std::memcpy(static_cast<void*>(t.matrix().data()), bytes.data() + r.at,
-                        16 * sizeof(double));
-            r.at += 16 * sizeof(double);
-        }
     std::vector<double> numbers;
     auto isometry = [&](size_t at) {
         Eigen::Isometry3d t;
@@ -569,6 +466,8 @@ Result<Animation> load_animation(const std::string& path, const LoadAnimationOpt
         return refuse(code ? *code : DiagnosticCode::unreadable_model, read.why);
     }
     read.animation.source = path;
+    motion::read_frames(read.clip, read.animation);
+    read.clip = KeyedClip(); // its keys are not needed past here
     return check_animation(std::move(read.animation));
 }
 
