@@ -151,3 +151,38 @@ def _offsets(design):
         out.append(offset)
         offset += len(limb.mesh.vertices)
     return out
+
+
+def test_a_thick_characters_body_prints_on_the_pages_at_any_depth(tmp_path):
+    """The Blender walk (tools/blender_capture.py) lies across the open card's plane from 29 mm
+    behind the page to 15 mm in front. Wherever a body vertex lies more than 3 mm behind the
+    page and is on a page that nothing stands on, the page's artwork has ink: a fitted model's
+    window (1 mm behind, 10 mm in front) printed none of the rear leg."""
+    from popupwb.sheets.export import layout
+    from popupwb.sheets.print_artwork import render_sheet_artwork
+
+    walk = os.path.join(os.path.dirname(FIGURE), "capture_walk.glb")
+    out = tmp_path / "walk"
+    proc = popup("animate", walk, "--out", str(out), "--view=-1,0,0")
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    design = _design(out)
+    artwork = render_sheet_artwork(
+        design.model, design.scaffold, layout(design.scaffold), design.limbs, pixels_per_mm=2.0
+    )
+    body = np.asarray(design.model.vertices)
+    behind = body[body[:, 2] < -3.0]
+    assert len(behind) > 100
+    inked = checked = 0
+    for page in (p for p in design.scaffold.patches if str(p.role) in ("ground", "backdrop")):
+        art = artwork[page.id]
+        frame = art.frame
+        origin, u, v = (np.asarray(frame[k], dtype=float) for k in ("origin", "u", "v"))
+        alpha = np.asarray(art.rgba)[..., 3]
+        u0, v0 = art.origin_uv
+        step = float(art.mm_per_pixel)
+        cols = (((behind - origin) @ u - u0) / step).astype(int)
+        rows = len(alpha) - 1 - (((behind - origin) @ v - v0) / step).astype(int)
+        inside = (cols >= 0) & (cols < alpha.shape[1]) & (rows >= 0) & (rows < alpha.shape[0])
+        checked += int(inside.sum())
+        inked += int((alpha[rows[inside], cols[inside]] > 0).sum())
+    assert checked > 100 and inked >= 0.9 * checked, (inked, checked)

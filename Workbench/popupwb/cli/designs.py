@@ -17,11 +17,12 @@ from popupwb.readable_file import unreadable
 # `patch_titles` ({patch id: maker title}, patch_titles.py) names a card's patches in findings.
 # `model` is the ModelMesh (card mm) a card was designed from (card.SourceModel, `popup fit`), whose
 # appearance the sheets print as artwork; None for anything else. `limbs` are an animated
-# character's limbs (model_source.card_limbs), each printed on its mechanism's moving parts alone.
+# character's limbs (model_source.card_limbs), each printed on its mechanism's moving parts alone;
+# None when the card is not animated.
 Design = collections.namedtuple(
     "Design",
     "scaffold fields printed_sides patch_titles model limbs",
-    defaults=({}, {}, None, ()),
+    defaults=({}, {}, None, None),
 )
 
 
@@ -72,7 +73,7 @@ def _card_design(path, card, several, with_model=False):
         _cutting_sides(card),
         titles_of_card(card, built),
         _source_model(path, card) if prints else None,
-        _limbs(path, card) if prints else (),
+        _limbs(path, card) if prints else None,
     )
 
 

@@ -447,7 +447,7 @@ def sheet_artwork(obj, sheet_set):
         )
     try:
         model = card_model(card)
-        limbs = card_limbs(card) if model is not None else ()
+        limbs = card_limbs(card) if model is not None else None
     except ValueError as error:
         raise ValueError(f"{obj.Label}: {card.Label}.SourceModel: {error}") from None
     if model is None:

@@ -206,9 +206,12 @@ PrintedLimb = collections.namedtuple("PrintedLimb", "mesh patches")
 
 def card_limbs(card):
     """The limbs `card`'s mechanisms carry (each mechanism's LimbModel, printed on its
-    LimbParts alone; thesis Fig 6.9), in the card's frame; [] for a card without any."""
+    LimbParts alone; thesis Fig 6.9), in the card's frame: [] for an animated card without any,
+    None for a card not designed from an animation (its model prints as a fitted model's)."""
     from popupwb.model.card_scaffold import mechanisms_of
 
+    if "SourceAnimation" not in card.PropertiesList:
+        return None
     limbs = []
     for mechanism in mechanisms_of(card):
         limb = getattr(mechanism, "LimbModel", None)

@@ -15,7 +15,7 @@ import math
 
 import numpy as np
 
-from popupwb.sheets.print_artwork import LIMB_BEHIND_MM
+from popupwb.sheets.print_artwork import LIMB_BEHIND_MM, body_windows
 
 # Artwork pixels per panel pixel: a little finer than the panel, so nearest sampling is sharp.
 OVERSAMPLE = 1.5
@@ -84,7 +84,8 @@ def render_card_artwork(scaffold, printed, resolution):
     """CardArtwork of `scaffold` (design state) for `printed`, popupcore.printed_parts as
     design_from_motion.printed_character gives them (the body first, then the limbs): each limb
     on its mechanism's parts at any depth (print_artwork.LIMB_BEHIND_MM), the body on every
-    other patch, each from its normal side, `resolution` pixels per mm."""
+    other patch (the pages at any depth: print_artwork.body_windows), each from its normal side,
+    `resolution` pixels per mm."""
     from popupwb.core import popupcore
 
     patches = list(scaffold.patches)
@@ -105,8 +106,10 @@ def render_card_artwork(scaffold, printed, resolution):
             images.update((index[a.patch], a) for a in arts)
     body = [p for p in patches if p.id not in taken]
     if printed and body and len(printed[0].mesh.triangles):
-        for art in popupcore.render_artworks(printed[0].mesh, body, pixels_per_mm=resolution):
-            images[index[art.patch]] = art
+        for chosen, window in body_windows(body, {"pixels_per_mm": resolution}):
+            if chosen:
+                for art in popupcore.render_artworks(printed[0].mesh, chosen, **window):
+                    images[index[art.patch]] = art
     return CardArtwork(len(patches), images, [index[i] for i in taken])
 
 

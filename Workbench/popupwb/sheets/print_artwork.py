@@ -132,6 +132,20 @@ def place_artwork(sheet_set, artwork):
 # A limb is all that prints on its patches: it counts at any depth in front of them and this far
 # behind (the raised platform of a floating layer stands above the limb it shows), in mm.
 LIMB_BEHIND_MM = 1000.0
+# The pages of an animated card print the body as seen from the front at any depth, in front of
+# them or behind: the character lies across the open card's plane, as thick as it is (a Blender
+# walker spans 29 mm behind the page to 15 mm in front; a fitted model's page looks 1 mm behind
+# and 10 mm in front).
+PAGE_ROLES = ("ground", "backdrop")
+
+
+def body_windows(patches, options):
+    """[(patches, options)]: how the body of an animated character prints on `patches` (those
+    that carry no limb): the pages at any depth, the others as a fitted model's."""
+    pages = [p for p in patches if str(p.role) in PAGE_ROLES]
+    others = [p for p in patches if str(p.role) not in PAGE_ROLES]
+    pages_window = dict(options, depth=float("inf"), behind=LIMB_BEHIND_MM)
+    return [(pages, pages_window), (others, dict(options))]
 
 
 def _patch_sides(sheet_set):
@@ -159,13 +173,14 @@ def _render_on(artwork, mesh, patches, sides, options):
                 artwork[art.patch] = art
 
 
-def render_sheet_artwork(mesh, scaffold, sheet_set, limbs=(), **options):
+def render_sheet_artwork(mesh, scaffold, sheet_set, limbs=None, **options):
     """{patch id: popupcore.PatchArtwork} for every patch the sheet set lays out, each rendered
     from the side its sheet prints (back_side where the flat patch's back faces up), the
     texture read once per side. `mesh`: a popupcore.ModelMesh in card mm; `scaffold`: the
     design at its design state; `sheet_set`: the popupcore.SheetSet export.layout gives;
     `limbs`: model_source.PrintedLimb of an animated character, each printed alone on its
-    patches (at any depth: LIMB_BEHIND_MM), `mesh` (the body) on all the others; `options`: the
+    patches (at any depth: LIMB_BEHIND_MM), `mesh` (the body) on all the others (the pages at
+    any depth, body_windows); None for a card not animated; `options`: the
     keywords of popupcore.render_artworks (pixels_per_mm, depth, behind, light, ambient,
     max_pixels). popupcore.DesignError names a bad option or model."""
     if "back_side" in options:
@@ -173,17 +188,18 @@ def render_sheet_artwork(mesh, scaffold, sheet_set, limbs=(), **options):
     sides = _patch_sides(sheet_set)
     artwork = {}
     limb_patches = set()
-    for limb in limbs:
+    for limb in limbs or ():
         patches = [p for p in scaffold.patches if p.name in limb.patches]
         limb_patches.update(p.id for p in patches)
         window = dict(options, depth=float("inf"), behind=LIMB_BEHIND_MM)
         _render_on(artwork, limb.mesh, patches, sides, window)
     body = [p for p in scaffold.patches if p.id not in limb_patches]
-    _render_on(artwork, mesh, body, sides, options)
+    for patches, window in body_windows(body, options) if limbs is not None else [(body, options)]:
+        _render_on(artwork, mesh, patches, sides, window)
     return artwork
 
 
-def source_model_artwork(mesh, scaffold, sheet_set, owner, run=None, limbs=()):
+def source_model_artwork(mesh, scaffold, sheet_set, owner, run=None, limbs=None):
     """render_sheet_artwork of a card's source model (and its limbs), as the GUI export and
     `popup sheet` both print it; `run(function, *args)` runs the rendering (progress.run in the
     GUI: progress and cancel), else it runs here. ValueError "<owner>: artwork of the source
