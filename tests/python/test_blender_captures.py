@@ -183,3 +183,19 @@ def test_the_walk_is_kept_in_place(designs, takes):
     shown = (targets["last_frame"] - targets["first_frame"]) / (known["frames"] - 1)
     expected = np.linalg.norm(known["root_travel_m"]) * shown * scale
     assert targets["travel_removed_mm"] == pytest.approx(expected, rel=0.02)
+
+
+def test_the_movie_draws_no_bone_from_the_armature_node(takes):
+    """motion.gif's character half draws the character's bones only: the .glb's still armature
+    node (bone 0, at the file's origin) is above the character (character_root is the Hips), so
+    the 61 joints under it give 60 segments, none from the node."""
+    from popupwb.motion.motion_movie import character_frames
+
+    animation, known = takes["walk"]
+    names = [name for name, _ in animation.bones]
+    assert popupcore.character_root(animation) == names.index("Hips") == 1
+    matrix = np.eye(4)
+    for _, segments, _ in character_frames(animation, matrix, 0, known["frames"] - 1, count=3):
+        assert len(segments) == len(names) - 2
+        node = np.asarray(popupcore.forward_kinematics(animation, 0)[0])[:3, 3]
+        assert min(np.linalg.norm(a - node) for a, _ in segments) > 1e-3  # the node is no end

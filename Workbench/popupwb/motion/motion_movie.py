@@ -98,6 +98,13 @@ def character_frames(
 
     matrix = np.asarray(animation_to_card, dtype=float)
     parents = [int(parent) for _, parent in animation.bones]
+    # The still nodes above the character (a glTF or FBX armature node at the file's origin) are
+    # not drawn: a bone from the hips to the origin is no part of the character.
+    above = set()
+    parent = parents[popupcore.character_root(animation)] if parents else -1
+    while parent >= 0:
+        above.add(parent)
+        parent = parents[parent]
     mesh = animation.mesh
     has_mesh = mesh is not None and len(mesh.triangles) > 0
     out = []
@@ -113,7 +120,9 @@ def character_frames(
             )
         points = np.array([g[:3, 3] for g in globals_]).reshape(-1, 3) - back
         joints = transformed(points, matrix)
-        segments = [(joints[p], joints[b]) for b, p in enumerate(parents) if p >= 0]
+        segments = [
+            (joints[p], joints[b]) for b, p in enumerate(parents) if p >= 0 and p not in above
+        ]
         triangles = None
         if has_mesh:
             posed = popupcore.posed_mesh(animation, float(frame))
