@@ -7,16 +7,15 @@ FUZZ_MODEL_SEED ?= 1
 PYTHON  := /usr/bin/python3
 JOBS    ?= $(shell nproc)
 SUDO    := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
-MODDIR  := $(HOME)/.local/share/FreeCAD/Mod
 
 DEBS := cmake make g++ pkg-config freecad \
 	libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libtbb-dev \
 	libcgal-dev libboost-dev libeigen3-dev pybind11-dev python3-dev nlohmann-json3-dev libassimp-dev \
 	python3-ezdxf python3-pytest python3-numpy libgtest-dev libbenchmark-dev \
 	libpolyclipping-dev libstb-dev python3-pil python3-svgwrite python3-reportlab python3-matplotlib python3-pypdf librecad \
-	xvfb xauth clang-format black patch clang-14 libclang-rt-14-dev llvm-14
+	xvfb xauth clang-format black patch clang libclang-rt-dev llvm
 
-.PHONY: all deps build test demo bench lint format install install-dev clean fuzz asan layers corpus
+.PHONY: all deps build test test-matrix demo bench lint format install install-dev clean fuzz asan layers corpus
 
 all: build
 
@@ -39,6 +38,12 @@ build: deps $(BUILD)/CMakeCache.txt
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j 2
+
+# Debian 13 / FreeCAD 1.0 and sid / FreeCAD 1.1 in chroots under $(BUILD)/matrix (README, Platforms).
+test-matrix:
+	@command -v debootstrap >/dev/null || { $(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends debootstrap; }
+	$(SUDO) $(PYTHON) tools/test_matrix.py --build $(BUILD) --jobs $(JOBS)
 
 demo: build
 	$(PYTHON) tools/run_demo.py --build $(BUILD) --out out/demo
@@ -86,13 +91,13 @@ format: deps
 	clang-format -i $$(git ls-files '*.cpp' '*.hpp')
 	black -l 100 -q $$(git ls-files '*.py')
 
+# Into the user Mod folder of the FreeCAD installed here, which FreeCAD names (tools/install_addon.py).
 install-dev:
-	mkdir -p $(MODDIR)
-	ln -sfn $(CURDIR)/Workbench $(MODDIR)/PopUp
+	$(PYTHON) tools/install_addon.py --build $(BUILD) --link
 
-install: build install-dev
-	mkdir -p $(HOME)/.local/bin
-	ln -sfn $(CURDIR)/$(BUILD)/bin/popup $(HOME)/.local/bin/popup
+install: build
+	$(PYTHON) tools/install_addon.py --build $(BUILD)
 
 clean:
-	rm -rf $(BUILD) $(ASAN_BUILD) out
+	@if [ -d $(BUILD)/matrix ]; then $(SUDO) $(PYTHON) tools/test_matrix.py --build $(BUILD) --unmount; fi
+	rm -rf --one-file-system $(BUILD) $(ASAN_BUILD) out

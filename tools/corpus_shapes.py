@@ -5,11 +5,17 @@ Every solid stays its own piece: nothing here fuses parts the recipe keeps apart
 """
 
 import math
+import os
 import sys
 
 import numpy as np
 
-FREECAD_LIB = "/usr/lib/freecad-python3/lib"
+sys.path.append(
+    os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "Workbench")
+)
+from popupwb import freecad_version  # noqa: E402  (importable before FreeCAD)
+
+FREECAD_LIB = freecad_version.freecad_lib_dir()
 if FREECAD_LIB not in sys.path:
     sys.path.append(FREECAD_LIB)
 

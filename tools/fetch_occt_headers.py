@@ -141,6 +141,16 @@ def download_source(root, package, version, entries):
     download = os.path.join(root, "download")
     src = run(["apt-get", *opts, "source", "--download-only", f"{package}={version}"], cwd=download)
     dsc = os.path.join(download, f"{package}_{strip_epoch(version)}.dsc")
+    if (
+        src.returncode != 0
+        and os.path.exists(dsc)
+        and glob.glob(os.path.join(download, "*.orig.tar.*"))
+    ):
+        # Debian 13's mirror here serves the .dsc and the upstream tarball (apt checked both
+        # against the index) but not always Debian's packaging tarball: the headers are taken
+        # as upstream wrote them, and supply() says that Debian's patches went unread.
+        print(f"note: only part of {package} {version} downloaded ({last_line(src.stderr)})")
+        return dsc
     if src.returncode != 0 or not os.path.exists(dsc):
         raise Unavailable(
             f"Debian's archive has no source package {package}={version} "
@@ -298,8 +308,11 @@ def supply(roots, include_dir, out):
     if not supplied:
         raise Unavailable(f"{package} {version} has none of {', '.join(sorted(absent))}")
     patched = []
-    if debian:
+    if debian and os.path.exists(os.path.join(download, debian[0])):
         patched = apply_debian_patches(os.path.join(download, debian[0]), supplied, dest)
+    elif debian:
+        patched = ["unread: Debian's packaging tarball was not downloadable"]
+        print(f"note: {', '.join(sorted(supplied))} as upstream wrote them ({debian[0]} missing)")
     with open(stamp_path, "w") as f:
         f.write(f"{package} {version}\n")
         f.writelines(f"supplied {b} {supplied[b]}\n" for b in sorted(supplied))

@@ -20,7 +20,12 @@ import argparse
 import os
 import sys
 
-FREECAD_LIB = "/usr/lib/freecad-python3/lib"
+sys.path.append(
+    os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "Workbench")
+)
+from popupwb import freecad_version  # noqa: E402  (importable before FreeCAD)
+
+FREECAD_LIB = freecad_version.freecad_lib_dir()
 if FREECAD_LIB not in sys.path:
     sys.path.append(FREECAD_LIB)
 

@@ -40,7 +40,10 @@ import textwrap
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PYTHON = "/usr/bin/python3"
-FREECAD_LIB = "/usr/lib/freecad-python3/lib"
+sys.path.append(os.path.join(REPO, "Workbench"))
+from popupwb import freecad_version  # noqa: E402  (importable before FreeCAD)
+
+FREECAD_LIB = freecad_version.freecad_lib_dir()
 DEMO_DESIGN = os.path.join(REPO, "resources", "samples", "demo_card.json")
 DEMO_MODEL = os.path.join(REPO, "resources", "samples", "house.stl")
 DEMO_ANIMATION = os.path.join(REPO, "resources", "samples", "waving_figure.glb")
@@ -60,17 +63,12 @@ class DemoError(Exception):
 def sandbox_env(build):
     """Environment for FreeCAD runs: sandboxed home with Mod/PopUp -> <repo>/Workbench."""
     home = os.path.join(build, "sandbox", "home")
-    mod = os.path.join(home, "Mod")
-    os.makedirs(mod, exist_ok=True)
-    link = os.path.join(mod, "PopUp")
-    target = os.path.join(REPO, "Workbench")
-    if os.path.realpath(link) != os.path.realpath(target):
-        if os.path.exists(link) and not os.path.islink(link):
-            raise DemoError(f"{link} exists and is not a link to {target}; remove it")
-        # Atomic: the tests create the same link, possibly at the same time.
-        temporary = f"{link}.{os.getpid()}"
-        os.symlink(target, temporary)
-        os.replace(temporary, link)
+    os.makedirs(home, exist_ok=True)
+    try:
+        mod = freecad_version.user_mod_dir_for(dict(os.environ, FREECAD_USER_HOME=home, HOME=home))
+        freecad_version.link_into(mod, os.path.join(REPO, "Workbench"))
+    except RuntimeError as error:
+        raise DemoError(str(error)) from error
     env = dict(os.environ)
     env.update(
         FREECAD_USER_HOME=home,
@@ -273,7 +271,7 @@ RENDER_MACRO = textwrap.dedent(
     import traceback
     import FreeCAD
     import FreeCADGui as Gui
-    from PySide2 import QtCore, QtGui
+    from PySide import QtCore, QtGui
 
     JOBS = json.loads({jobs!r})
     STATUS = {status!r}

@@ -15,7 +15,7 @@ import json
 import os
 import shutil
 import subprocess
-import uuid
+import sys
 
 SOURCE_DIR = os.environ.get("POPUP_SOURCE_DIR") or os.path.dirname(
     os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -23,6 +23,9 @@ SOURCE_DIR = os.environ.get("POPUP_SOURCE_DIR") or os.path.dirname(
 BUILD_DIR = os.environ.get("POPUP_BUILD_DIR") or os.path.join(SOURCE_DIR, "build")
 SANDBOX = os.path.join(BUILD_DIR, "sandbox")
 WORKBENCH_DIR = os.path.join(SOURCE_DIR, "Workbench")
+sys.path.append(WORKBENCH_DIR)
+from popupwb import freecad_version  # noqa: E402  (importable before FreeCAD)
+
 WIDTH, HEIGHT = 800, 600
 
 PRELUDE = r"""
@@ -149,14 +152,10 @@ QtCore.QTimer.singleShot(0, Gui.getMainWindow().close)
 
 
 def install_mod(home):
-    """Links the source tree's Workbench into `home`/Mod/PopUp (atomically: tests run in
-    parallel)."""
-    mod_dir = os.path.join(home, "Mod")
-    os.makedirs(mod_dir, exist_ok=True)
-    link = os.path.join(mod_dir, "PopUp")
-    temporary = f"{link}.{uuid.uuid4().hex}"
-    os.symlink(WORKBENCH_DIR, temporary)
-    os.replace(temporary, link)
+    """Links the source tree's Workbench into the user Mod folder FreeCAD uses with `home`
+    (versioned from 1.1 on; atomically: tests run in parallel)."""
+    env = dict(os.environ, FREECAD_USER_HOME=home, HOME=home)
+    freecad_version.link_into(freecad_version.user_mod_dir_for(env), WORKBENCH_DIR)
 
 
 def run_freecad(name, macro_text, timeout=180):

@@ -17,17 +17,19 @@ import json
 import os
 import subprocess
 import sys
-import uuid
 
 import pytest
 
-FREECAD_LIB = "/usr/lib/freecad-python3/lib"
 SOURCE_DIR = os.environ.setdefault(
     "POPUP_SOURCE_DIR", os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 )
 BUILD_DIR = os.environ.setdefault("POPUP_BUILD_DIR", os.path.join(SOURCE_DIR, "build"))
 USER_HOME = os.environ.setdefault("FREECAD_USER_HOME", os.path.join(BUILD_DIR, "sandbox", "home"))
 WORKBENCH_DIR = os.path.join(SOURCE_DIR, "Workbench")
+sys.path.append(WORKBENCH_DIR)
+from popupwb import freecad_version  # noqa: E402  (importable before FreeCAD)
+
+FREECAD_LIB = freecad_version.freecad_lib_dir()
 # The tests' time limits (hang and speed checks) are for the optimised build: a slower one, such as
 # tools/run_asan.py's sanitized build, sets POPUP_TIME_SCALE to stretch them all.
 TIME_SCALE = float(os.environ.get("POPUP_TIME_SCALE", "1"))
@@ -46,18 +48,12 @@ for _directory in (os.path.join(BUILD_DIR, "python"), WORKBENCH_DIR, FREECAD_LIB
 
 
 def install_sandbox_mod(user_home=USER_HOME):
-    """<user_home>/Mod/PopUp -> <source>/Workbench. Debian's FreeCAD restores a proxy only when its
-    module lies in a Mod folder, so reopened files need this. Replaced atomically: ctest runs the
-    GUI smoke test, which does the same, in parallel."""
-    mod_dir = os.path.join(user_home, "Mod")
-    os.makedirs(mod_dir, exist_ok=True)
-    link = os.path.join(mod_dir, "PopUp")
-    if os.path.islink(link) and os.path.realpath(link) == os.path.realpath(WORKBENCH_DIR):
-        return link
-    temporary = f"{link}.{uuid.uuid4().hex}"
-    os.symlink(WORKBENCH_DIR, temporary)
-    os.replace(temporary, link)
-    return link
+    """<FreeCAD's user Mod folder for user_home>/PopUp -> <source>/Workbench. Debian's FreeCAD
+    restores a proxy only when its module lies in a Mod folder, so reopened files need this. The
+    folder is FreeCAD's to name (versioned from 1.1 on); the link is replaced atomically: ctest
+    runs the GUI tests, which do the same, in parallel."""
+    env = dict(os.environ, FREECAD_USER_HOME=user_home, HOME=user_home)
+    return freecad_version.link_into(freecad_version.user_mod_dir_for(env), WORKBENCH_DIR)
 
 
 @pytest.fixture(scope="session")

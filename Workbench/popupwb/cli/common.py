@@ -9,12 +9,14 @@ import os
 import re
 import sys
 
+from popupwb import freecad_version
+
 EXIT_VALID = 0
 EXIT_INVALID = 1
 EXIT_BAD_INPUT = 2
 EXIT_INTERNAL = 3
 
-FREECAD_LIB = "/usr/lib/freecad-python3/lib"
+FREECAD_LIB = freecad_version.freecad_lib_dir()
 VERSION = "0.1.0"
 
 

@@ -8,9 +8,16 @@
 #include <random>
 #include <sstream>
 
+#include <CGAL/version.h>
+// CGAL 6.0 (Debian 13) renamed the 3D AABB traits and primitive, adding _3; 5.x has only the old.
+#if CGAL_VERSION_MAJOR >= 6
+#include <CGAL/AABB_traits_3.h>
+#include <CGAL/AABB_triangle_primitive_3.h>
+#else
 #include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
+#endif
+#include <CGAL/AABB_tree.h>
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
@@ -35,8 +42,13 @@ using Point = Kernel::Point_3;
 using Triangle = Kernel::Triangle_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 using Triangles = std::vector<Triangle>;
+#if CGAL_VERSION_MAJOR >= 6
+using Primitive = CGAL::AABB_triangle_primitive_3<Kernel, Triangles::const_iterator>;
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits_3<Kernel, Primitive>>;
+#else
 using Primitive = CGAL::AABB_triangle_primitive<Kernel, Triangles::const_iterator>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+#endif
 
 // A constrained Delaunay triangulation whose faces know how many outlines enclose them: odd
 // means inside the patch (the outer loop), even means outside or in a hole.
