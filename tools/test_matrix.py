@@ -120,11 +120,15 @@ class Mounts:
         self.mounted = []
 
 
-def active_mounts(matrix):
-    """Mount points under <build>/matrix still mounted (a run killed with SIGKILL)."""
+def unmount_stale(folder):
+    """Unmounts what a run killed with SIGKILL left mounted under `folder`, deepest first:
+    `rm -rf build` would otherwise reach the host's /dev through them."""
     with open("/proc/mounts") as handle:
         points = [line.split()[1] for line in handle]
-    return [p for p in points if p.startswith(os.path.realpath(matrix) + os.sep)]
+    inside = [p for p in points if p.startswith(os.path.realpath(folder) + os.sep)]
+    for point in sorted(inside, key=len, reverse=True):
+        if subprocess.run(["umount", point]).returncode != 0:
+            subprocess.run(["umount", "-l", point])
 
 
 def in_chroot(root, command, log=None):
@@ -206,11 +210,8 @@ def main():
     source = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     matrix = os.path.join(source, args.build, "matrix")
     os.makedirs(matrix, exist_ok=True)
-    # Left mounted by a killed run: `rm -rf build` would reach /dev through them.
-    for point in sorted(active_mounts(matrix), key=len, reverse=True):
-        if subprocess.run(["umount", point]).returncode != 0:
-            subprocess.run(["umount", "-l", point])
     if args.unmount:
+        unmount_stale(matrix)
         return 0
     names = [n for n in args.only.split(",") if n]
     unknown = [n for n in names if n not in PLATFORMS]

@@ -95,3 +95,16 @@ def test_freecad_reads_the_same_metadata(freecad):
         "numpy",
         "PIL",
     ]
+
+
+def test_the_addon_fields_freecad_checks_are_there(freecad):
+    root = package()
+    assert root.find("p:date", NAMESPACE).text == "2026-11-28"
+    assert root.find("p:pythonmin", NAMESPACE).text == "3.11"
+    icon = os.path.join(SOURCE_DIR, root.find("p:icon", NAMESPACE).text)
+    assert os.path.getsize(icon) < 10 * 1024  # the Addon Manager's limit for a package icon
+    metadata = freecad.Metadata(os.path.join(SOURCE_DIR, "package.xml"))
+    assert metadata.FreeCADMin.split(".")[:2] == ["0", "20"]
+    assert metadata.supportsCurrentFreeCAD()
+    (workbench,) = metadata.Content["workbench"]
+    assert workbench.Subdirectory == "Workbench" and workbench.Classname == "PopUpWorkbench"

@@ -10,6 +10,10 @@ DEFLECTION = 0.05  # mm, for curved edges
 
 
 def _find(vobj):
+    # FreeCAD 1.0 hands out RootNode as a pivy object only once pivy is imported: without this,
+    # a check that runs before any other Coin code gets a SwigPyObject with no getNumChildren.
+    from pivy import coin  # noqa: F401
+
     root = vobj.RootNode
     for index in range(root.getNumChildren()):
         child = root.getChild(index)

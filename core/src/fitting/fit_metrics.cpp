@@ -8,7 +8,7 @@
 #include <random>
 #include <sstream>
 
-#include <CGAL/version.h>
+#include <CGAL/version_macros.h>
 // CGAL 6.0 (Debian 13) renamed the 3D AABB traits and primitive, adding _3; 5.x has only the old.
 #if CGAL_VERSION_MAJOR >= 6
 #include <CGAL/AABB_traits_3.h>

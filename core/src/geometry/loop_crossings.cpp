@@ -7,6 +7,7 @@
 #include <CGAL/Arr_segment_traits_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Sweep_line_2_algorithms.h>
+#include <CGAL/version_macros.h>
 
 namespace popup {
 
@@ -14,6 +15,16 @@ namespace {
 using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
 using Segment = CGAL::Arr_segment_traits_2<Kernel>::Curve_2;
 using Point = Kernel::Point_2;
+
+bool any_curves_meet(const std::vector<Segment>& edges)
+{
+#if CGAL_VERSION_MAJOR > 6 || (CGAL_VERSION_MAJOR == 6 && CGAL_VERSION_MINOR >= 2)
+    // CGAL 6.2 (Debian sid) deprecates do_curves_intersect for this, its own body.
+    return CGAL::Surface_sweep_2::do_intersect(edges.begin(), edges.end(), false);
+#else
+    return CGAL::do_curves_intersect(edges.begin(), edges.end());
+#endif
+}
 } // namespace
 
 std::optional<Vec2> first_loop_crossing(const std::vector<Loop2>& loops)
@@ -31,7 +42,7 @@ std::optional<Vec2> first_loop_crossing(const std::vector<Loop2>& loops)
                 edges.emplace_back(Point(a.x(), a.y()), Point(b.x(), b.y()));
         }
     // Edges of a simple loop meet only at their shared ends, never in an edge's interior.
-    if (!CGAL::do_curves_intersect(edges.begin(), edges.end()))
+    if (!any_curves_meet(edges))
         return std::nullopt;
     // Where: a meeting point that is no loop vertex, or a vertex more than two edges end at.
     std::map<Point, int> ends;
