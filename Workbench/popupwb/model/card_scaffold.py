@@ -129,6 +129,17 @@ def _number(value):
     return float(getattr(value, "Value", value))
 
 
+def _as_saved(item):
+    """`item` with every float as a .FCStd file gives it back: FreeCAD writes floats with 16
+    decimals, so 0.00018599999999935335 reopens as 0.0001859999999994. Keyed as saved, a card
+    checked before saving keeps its verdict when reopened and recomputed (by any version)."""
+    if isinstance(item, float):
+        return float(f"{item:.16f}") if math.isfinite(item) else item
+    if isinstance(item, tuple):
+        return tuple(_as_saved(part) for part in item)
+    return item
+
+
 def design_key(card):
     """Everything that shapes the card's scaffold, as a hashable tuple (FoldAngle and Thickened
     are not in it: they pose and display the same design)."""
@@ -146,7 +157,7 @@ def design_key(card):
             + tuple(_proxy(obj).parameter_values(obj))
             + (profile_storage.key_of(obj),)
         )
-    return tuple(parts)
+    return _as_saved(tuple(parts))
 
 
 class CardScaffold:
