@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """`make install` / `make install-dev`: PopUp into the user Mod folder of the FreeCAD installed here.
 
-FreeCAD names that folder (FreeCAD.getUserAppDataDir()/Mod: ~/.local/share/FreeCAD/Mod on 0.20
-and 1.0, …/FreeCAD/v1-1/Mod on 1.1), so it is asked, never assumed.
+FreeCAD names that folder (FreeCAD.getUserAppDataDir()/Mod: FreeCAD's folder under ~/.local/share
+on 0.20 and 1.0, its v1-1 subfolder on 1.1), so it is asked, never assumed.
 
 - install: a copy laid out as FreeCAD's Addon Manager lays one out: <Mod>/PopUp/package.xml,
   LICENSE, Workbench/ (package.xml's <subdirectory>) and lib/popupcore.<ABI tag>.so, the core
