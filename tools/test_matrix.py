@@ -8,7 +8,8 @@ there (which runs `make deps`, so the Makefile's package choice for that release
 with a build folder of its own, <build>/matrix/<platform>-build. Then one line per platform:
 its FreeCAD and Python, the ctest counts, the time and the disk.
 
-Usage: test_matrix.py [--build build] [--only debian-13,...] [--target test] [--jobs N] [--unmount]
+Usage: test_matrix.py [--build build] [--only debian-13,...] [--target test] [--jobs N]
+                      [--keep-going] [--command CMD] [--unmount]
 Exit 0 when every platform passes, 1 otherwise, 2 when a chroot cannot be made (the message says
 why). Needs root (debootstrap, chroot, mount); `make test-matrix` installs debootstrap.
 """
@@ -131,9 +132,10 @@ def unmount_stale(folder):
             subprocess.run(["umount", "-l", point])
 
 
-def in_chroot(root, command, log=None):
+def in_chroot(root, command, log=None, extra_env=()):
     """Runs a shell command in the chroot with a clean environment; returns (exit code, output)."""
     env = ["env", "-i", "PATH=/usr/sbin:/usr/bin:/sbin:/bin", "HOME=/root", "LANG=C.UTF-8"]
+    env += list(extra_env)
     argv = ["chroot", root] + env + ["bash", "-c", command]
     if log is None:
         done = subprocess.run(argv, capture_output=True, text=True)
@@ -167,13 +169,14 @@ def disk_gb(*paths):
     return sum(int(s) for s in sizes[::2]) / 1e9
 
 
-def platform_line(name, root, build_dir, target, jobs, logs):
-    """Runs `make <target>` on one platform; returns (ok, the summary line)."""
+def platform_line(name, root, target, jobs, logs, keep_going=False, command=None):
+    """Runs `make <target>` (or `command`) on one platform; returns (ok, the summary line)."""
     started = time.monotonic()
     code, output = in_chroot(
         root,
-        f"cd {SOURCE_IN_CHROOT} && make {target} BUILD={BUILD_IN_CHROOT} JOBS={jobs}",
+        command or f"cd {SOURCE_IN_CHROOT} && make {target} BUILD={BUILD_IN_CHROOT} JOBS={jobs}",
         log=os.path.join(logs, f"{name}.log"),
+        extra_env=["MAKEFLAGS=-k"] if keep_going else [],
     )
     seconds = time.monotonic() - started
     _, freecad = in_chroot(root, "dpkg-query -W -f='${Version}' freecad 2>/dev/null")
@@ -232,7 +235,9 @@ def main():
             build_dir = os.path.join(matrix, f"{name}-build")
             os.makedirs(build_dir, exist_ok=True)
             with Mounts(root, source, build_dir):
-                ok, line = platform_line(name, root, build_dir, args.target, args.jobs, matrix)
+                ok, line = platform_line(
+                    name, root, args.target, args.jobs, matrix, args.keep_going, args.command
+                )
             # Measured unmounted: du would count the source tree through the bind mount.
             line += f"; disk {disk_gb(root, build_dir):.1f} GB" + (
                 "" if ok else f"  FAILED: see {matrix}/{name}.log"
