@@ -202,6 +202,12 @@ def main():
     parser.add_argument("--target", default="test", help="the make target run on each platform")
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
     parser.add_argument(
+        "--keep-going", action="store_true", help="make -k: every compile error in one run"
+    )
+    parser.add_argument(
+        "--command", help="a shell command instead of make (in /src; the build folder is /build)"
+    )
+    parser.add_argument(
         "--unmount",
         action="store_true",
         help="only unmount what a killed run left mounted (make clean runs it)",
