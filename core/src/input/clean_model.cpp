@@ -7,6 +7,19 @@
 #include <vector>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+// GCC 14 (Debian 13) reports a memmove out of bounds (-Warray-bounds, -Wstringop-overflow) where
+// CGAL's duplicate-polygon search (collect_duplicate_polygons) copies a polygon's std::vector:
+// a false positive of the inliner's range analysis. Only the polygon-soup repair's headers are
+// exempt: GCC honours the pragma at the inlined call sites inside them.
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 14
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Warray-bounds"
+#pragma GCC diagnostic ignored "-Wstringop-overflow"
+#endif
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 14
+#pragma GCC diagnostic pop
+#endif
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -14,7 +27,6 @@
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair.h>
 #include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
-#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -79,14 +91,6 @@ std::pair<int, double> reversed_faces(const Mesh& mesh,
     return {count, area};
 }
 
-// GCC 14 (Debian 13) reports a memmove out of bounds (-Warray-bounds, -Wstringop-overflow) where
-// CGAL's duplicate-polygon search copies a three-index polygon, inlined here: a false positive of
-// the inliner's range analysis (the copy is a std::vector's own), silenced for this function only.
-#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 14
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Warray-bounds"
-#pragma GCC diagnostic ignored "-Wstringop-overflow"
-#endif
 // The soup steps of PMP::repair_polygon_soup, one at a time so that each repair is counted.
 void repair_soup(std::vector<Point>& points, std::vector<Polygon>& polygons, RepairCounts& counts)
 {
@@ -100,9 +104,6 @@ void repair_soup(std::vector<Point>& points, std::vector<Polygon>& polygons, Rep
     counts.isolated_vertices_removed =
         int(PMP::remove_isolated_points_in_polygon_soup(points, polygons));
 }
-#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 14
-#pragma GCC diagnostic pop
-#endif
 
 } // namespace
 
