@@ -20,7 +20,14 @@
 #if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 14
 #pragma GCC diagnostic pop
 #endif
+#include <CGAL/version_macros.h>
+// CGAL 6.2 (Debian sid) moved the border functions from PMP to CGAL/boost/graph.
+#if CGAL_VERSION_MAJOR > 6 || (CGAL_VERSION_MAJOR == 6 && CGAL_VERSION_MINOR >= 2)
+#define POPUP_CGAL_GRAPH_BORDER 1
+#include <CGAL/boost/graph/border.h>
+#else
 #include <CGAL/Polygon_mesh_processing/border.h>
+#endif
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
@@ -105,6 +112,17 @@ void repair_soup(std::vector<Point>& points, std::vector<Polygon>& polygons, Rep
         int(PMP::remove_isolated_points_in_polygon_soup(points, polygons));
 }
 
+int boundary_cycles(const Mesh& mesh)
+{
+    std::vector<Mesh::Halfedge_index> cycles;
+#ifdef POPUP_CGAL_GRAPH_BORDER
+    CGAL::extract_boundary_cycles(mesh, std::back_inserter(cycles));
+#else
+    PMP::extract_boundary_cycles(mesh, std::back_inserter(cycles));
+#endif
+    return int(cycles.size());
+}
+
 } // namespace
 
 Result<CleanedModel> clean_model(const ModelMesh& model)
@@ -169,9 +187,7 @@ Result<CleanedModel> clean_model(const ModelMesh& model)
     counts.faces_reoriented = reversed_faces(mesh, input_winding).first;
     for (Mesh::Halfedge_index h : mesh.halfedges())
         counts.border_edges += mesh.is_border(h) ? 1 : 0;
-    std::vector<Mesh::Halfedge_index> cycles;
-    PMP::extract_boundary_cycles(mesh, std::back_inserter(cycles));
-    counts.holes = int(cycles.size());
+    counts.holes = boundary_cycles(mesh);
 
     ModelMesh& out = result.value.mesh;
     out.source = model.source;

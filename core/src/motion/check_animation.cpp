@@ -28,8 +28,10 @@ std::vector<int> cycle_from(const std::vector<Bone>& bones, int start)
     std::vector<int> seen_at(bones.size(), -1);
     std::vector<int> path;
     for (int b = start; b >= 0; b = bones[b].parent) {
-        if (seen_at[b] >= 0)
-            return std::vector<int>(path.begin() + seen_at[b], path.end());
+        if (seen_at[b] >= 0) { // the cycle is the path from b's first visit on
+            path.erase(path.begin(), path.begin() + seen_at[b]);
+            return path;
+        }
         seen_at[b] = int(path.size());
         path.push_back(b);
     }
