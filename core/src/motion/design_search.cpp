@@ -29,20 +29,23 @@ void restore_own_fits(const AnnealProblem& p, const std::vector<MotionKind>& map
         const Candidate& own = p.candidates[j][int(mapped[j])];
         if (!std::isfinite(own.error_mm))
             continue;
-        Slot trial = s;
-        trial.mechanism = own.mechanism;
         const double tie = s.mechanism.kind() == mapped[j]
                                ? 0.0
                                : p.chains[j].weight * p.motion_weight * mapping_tie_fraction;
-        if (!(slot_cost(p, trial) < slot_cost(p, s) + tie))
+        // Only the mechanism is tried: the slot's chains stay (copying the one-chain vector
+        // also tripped GCC 14's -Warray-bounds).
+        const MotionMechanism kept = s.mechanism;
+        const double cost_before = slot_cost(p, s);
+        s.mechanism = own.mechanism;
+        if (!(slot_cost(p, s) < cost_before + tie)) {
+            s.mechanism = kept;
             continue;
-        const Slot kept = s;
-        s = trial;
+        }
         const double trial_depth = state_collision(p, state);
         if (trial_depth <= depth + 1e-12)
             depth = trial_depth;
         else
-            s = kept;
+            s.mechanism = kept;
     }
 }
 
