@@ -1,4 +1,5 @@
 #include "popup/io/design_file.hpp"
+#include "popup/refers_into_argument.hpp"
 
 #include <climits>
 #include <cmath>
@@ -42,17 +43,6 @@ struct FieldError {
     std::string message;
 };
 
-// GCC 14 (Debian 13) takes a reference returned from a call with temporary arguments (the key
-// strings) for a dangling one (-Wdangling-reference); this one refers into `object`. GCC 14's
-// no_dangling attribute says so; older compilers do not warn.
-#if defined(__has_cpp_attribute)
-#if __has_cpp_attribute(gnu::no_dangling)
-#define POPUP_REFERS_INTO_ARGUMENT [[gnu::no_dangling]]
-#endif
-#endif
-#ifndef POPUP_REFERS_INTO_ARGUMENT
-#define POPUP_REFERS_INTO_ARGUMENT
-#endif
 POPUP_REFERS_INTO_ARGUMENT const json& member(const json& object, const std::string& key,
                                               const std::string& path)
 {

@@ -11,6 +11,7 @@
 #include "popup/mechanisms/box_fold.hpp"
 #include "popup/model/apply_profile.hpp"
 #include "popup/model/card.hpp"
+#include "popup/refers_into_argument.hpp"
 #include "popup/sheets/sheet_layout.hpp"
 #include "popup/sheets/verify_sheets.hpp"
 #include "popup/simulation/check_validity.hpp"
@@ -75,7 +76,7 @@ void arc(std::vector<Vec2>& out, const Vec2& c, double r, double a0, int n)
     }
 }
 
-const Patch& patch_named(const Scaffold& s, const std::string& name)
+POPUP_REFERS_INTO_ARGUMENT const Patch& patch_named(const Scaffold& s, const std::string& name)
 {
     for (const Patch& p : s.patches)
         if (p.name == name)

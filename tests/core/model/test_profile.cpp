@@ -11,6 +11,7 @@
 #include "popup/mechanisms/step_fold.hpp"
 #include "popup/model/apply_profile.hpp"
 #include "popup/model/card.hpp"
+#include "popup/refers_into_argument.hpp"
 #include "popup/sheets/sheet_layout.hpp"
 #include "popup/sheets/verify_sheets.hpp"
 #include "popup/simulation/check_validity.hpp"
@@ -57,7 +58,7 @@ Profile tree()
 }
 constexpr double kTreeOnRiser = 8 * 6 + (40 + 64.0 / 3) / 2 * 14; // trunk + trapezoid
 
-const Patch& patch_named(const Scaffold& s, const std::string& name)
+POPUP_REFERS_INTO_ARGUMENT const Patch& patch_named(const Scaffold& s, const std::string& name)
 {
     for (const Patch& p : s.patches)
         if (p.name == name)

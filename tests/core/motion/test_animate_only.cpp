@@ -7,6 +7,7 @@
 
 #include "motion/design_from_targets.hpp"
 #include "motion_fixtures.hpp"
+#include "popup/refers_into_argument.hpp"
 #include "popup/simulation/check_validity.hpp"
 
 namespace popup::motion {
@@ -31,7 +32,7 @@ std::vector<Chain> arm_and_head()
             {"head", vertical_mechanism(95, 20, 30, 40 * M_PI / 180), 0.4}};
 }
 
-const ChainReport& chain(const MotionResult& r, const std::string& name)
+POPUP_REFERS_INTO_ARGUMENT const ChainReport& chain(const MotionResult& r, const std::string& name)
 {
     for (const ChainReport& c : r.chains)
         if (c.name == name)

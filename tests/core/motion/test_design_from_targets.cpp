@@ -7,6 +7,7 @@
 
 #include "motion/design_from_targets.hpp"
 #include "motion_fixtures.hpp"
+#include "popup/refers_into_argument.hpp"
 #include "popup/simulation/check_validity.hpp"
 
 namespace popup::motion {
@@ -25,7 +26,7 @@ MotionOptions quick(std::uint64_t seed = 1)
     return o;
 }
 
-const ChainReport& chain(const MotionResult& r, const std::string& name)
+POPUP_REFERS_INTO_ARGUMENT const ChainReport& chain(const MotionResult& r, const std::string& name)
 {
     for (const ChainReport& c : r.chains)
         if (c.name == name)

@@ -11,6 +11,7 @@
 #include "motion_fixtures.hpp"
 #include "popup/motion/design_motion.hpp"
 #include "popup/motion/printed_parts.hpp"
+#include "popup/refers_into_argument.hpp"
 #include "popup/simulation/check_validity.hpp"
 
 namespace popup::motion {
@@ -118,7 +119,8 @@ double area_of(const std::vector<Vec2>& poly)
     return std::abs(a) / 2;
 }
 
-const ChainReport& chain_named(const MotionResult& r, const std::string& name)
+POPUP_REFERS_INTO_ARGUMENT const ChainReport& chain_named(const MotionResult& r,
+                                                          const std::string& name)
 {
     for (const ChainReport& c : r.chains)
         if (c.name == name)
