@@ -44,6 +44,10 @@ def user_mod_dir():
 def user_mod_dir_for(env):
     """user_mod_dir() of a FreeCAD started with `env` (FREECAD_USER_HOME, HOME), asked in a
     child process: the folder must exist before FreeCAD is imported, and only FreeCAD knows it."""
+    # FreeCAD 0.20 ignores a FREECAD_USER_HOME that does not exist yet (and falls back to
+    # ~/.local/share/FreeCAD): make it first, as FreeCAD's own start would find it.
+    if env.get("FREECAD_USER_HOME"):
+        os.makedirs(env["FREECAD_USER_HOME"], exist_ok=True)
     probe = (
         f"import sys; sys.path.append({freecad_lib_dir()!r}); import FreeCAD; "
         "print(FreeCAD.getUserAppDataDir())"
