@@ -15,6 +15,8 @@ why). Needs root (debootstrap, chroot, mount); `make test-matrix` installs deboo
 """
 
 import argparse
+import contextlib
+import fcntl
 import glob
 import os
 import re
@@ -105,13 +107,17 @@ class Mounts:
     def __enter__(self):
         shutil.copyfile("/etc/resolv.conf", os.path.join(self.root, "etc/resolv.conf"))
         signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))  # runs __exit__
-        for args, target, read_only in self.plan:
-            where = os.path.join(self.root, target.lstrip("/"))
-            os.makedirs(where, exist_ok=True)
-            subprocess.run(["mount"] + args + [where], check=True)
-            self.mounted.append(where)
-            if read_only:
-                subprocess.run(["mount", "-o", "remount,bind,ro", where], check=True)
+        try:
+            for args, target, read_only in self.plan:
+                where = os.path.join(self.root, target.lstrip("/"))
+                os.makedirs(where, exist_ok=True)
+                subprocess.run(["mount"] + args + [where], check=True)
+                self.mounted.append(where)
+                if read_only:
+                    subprocess.run(["mount", "-o", "remount,bind,ro", where], check=True)
+        except subprocess.CalledProcessError as error:
+            self.__exit__()
+            raise MatrixError(f"cannot mount into {self.root}: {error}") from error
         return self
 
     def __exit__(self, *exc):
@@ -119,6 +125,18 @@ class Mounts:
             if subprocess.run(["umount", where]).returncode != 0:
                 subprocess.run(["umount", "-l", where])
         self.mounted = []
+
+
+@contextlib.contextmanager
+def platform_lock(matrix, name):
+    """One run per platform at a time: a second would mount over the first and unmount it."""
+    path = os.path.join(matrix, f"{name}.lock")
+    with open(path, "w") as handle:
+        try:
+            fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            raise MatrixError(f"{name} is being tested by another run ({path} is locked)")
+        yield
 
 
 def unmount_stale(folder):
@@ -195,6 +213,22 @@ def platform_line(name, root, target, jobs, logs, keep_going=False, command=None
     return ok, line
 
 
+def run_platform(name, matrix, mirror, source, args):
+    """The chroot made or reused, mounted, `make` run, unmounted; (ok, the summary line)."""
+    root = os.path.join(matrix, name)
+    unmount_stale(root)  # left by a run of this platform killed with SIGKILL
+    ensure_chroot(root, PLATFORMS[name], mirror, os.path.join(matrix, f"{name}.debootstrap.log"))
+    build_dir = os.path.join(matrix, f"{name}-build")
+    os.makedirs(build_dir, exist_ok=True)
+    with Mounts(root, source, build_dir):
+        ok, line = platform_line(
+            name, root, args.target, args.jobs, matrix, args.keep_going, args.command
+        )
+    # Measured unmounted: du would count the source tree through the bind mount.
+    line += f"; disk {disk_gb(root, build_dir):.1f} GB"
+    return ok, line + ("" if ok else f"  FAILED: see {matrix}/{name}.log")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--build", default="build", help="the host build folder (relative)")
@@ -220,8 +254,16 @@ def main():
     matrix = os.path.join(source, args.build, "matrix")
     os.makedirs(matrix, exist_ok=True)
     if args.unmount:
-        unmount_stale(matrix)
-        return 0
+        # Exit 1 while a run is going on: `make clean` must not rm -rf through its mounts.
+        busy = False
+        for name in PLATFORMS:
+            try:
+                with platform_lock(matrix, name):
+                    unmount_stale(os.path.join(matrix, name))
+            except MatrixError as error:
+                print(f"test-matrix: {error}: left mounted", file=sys.stderr)
+                busy = True
+        return 1 if busy else 0
     names = [n for n in args.only.split(",") if n]
     unknown = [n for n in names if n not in PLATFORMS]
     if unknown:
@@ -234,20 +276,8 @@ def main():
     try:
         mirror = host_mirror()
         for name in names:
-            root = os.path.join(matrix, name)
-            ensure_chroot(
-                root, PLATFORMS[name], mirror, os.path.join(matrix, f"{name}.debootstrap.log")
-            )
-            build_dir = os.path.join(matrix, f"{name}-build")
-            os.makedirs(build_dir, exist_ok=True)
-            with Mounts(root, source, build_dir):
-                ok, line = platform_line(
-                    name, root, args.target, args.jobs, matrix, args.keep_going, args.command
-                )
-            # Measured unmounted: du would count the source tree through the bind mount.
-            line += f"; disk {disk_gb(root, build_dir):.1f} GB" + (
-                "" if ok else f"  FAILED: see {matrix}/{name}.log"
-            )
+            with platform_lock(matrix, name):
+                ok, line = run_platform(name, matrix, mirror, source, args)
             print(line, flush=True)
             lines.append(line)
             all_ok &= ok
