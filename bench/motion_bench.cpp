@@ -63,8 +63,8 @@ void run(benchmark::State& state, bool incremental)
     long iterations = 0;
     double collision = 0;
     for (auto _ : state) {
-        const AnnealResult r = anneal(e.problem, e.start, o);
-        benchmark::DoNotOptimize(r.cost);
+        AnnealResult r = anneal(e.problem, e.start, o);
+        benchmark::DoNotOptimize(r.cost); // non-const: newer Google Benchmark deprecates const
         iterations += r.iterations;
         collision = r.collision;
     }

@@ -63,7 +63,8 @@ SurfaceSamples owned_by(RansacResult& fit, const std::vector<Vec3>& points, int 
 /// Sum of the distances from `points` to the patches of `kind` planned for `prism` on the card.
 double distance_sum(MechanismKind kind, const Prism& prism, const std::vector<Vec3>& points)
 {
-    const PrismHost& card = one_prism_on_the_card(prism).hosts[0];
+    // A copy: a reference into the returned temporary dangled (GCC 14 found it).
+    const PrismHost card = one_prism_on_the_card(prism).hosts[0];
     const std::vector<HostPolygon> patches =
         design_patches(plan_mechanism(kind, prism, card), card);
     double sum = 0;
