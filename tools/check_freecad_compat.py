@@ -6,6 +6,7 @@ It reads every tracked Python file (and the Makefile) for:
 - a direct PySide2 or PySide6 import: FreeCAD 1.1 is Qt 6, 0.20 and 1.0 are Qt 5; only FreeCAD's
   own `PySide` shim names the right one;
 - QRegExp (gone in Qt 6) and `exec_` (renamed `exec`; PySide6 drops the old name);
+- Part.makeCompound, which crashes FreeCAD 1.0 imported as a Python module;
 - a hard-coded FreeCAD user folder: 1.1 keeps Mod in a versioned folder (…/FreeCAD/v1-1/Mod), so
   only FreeCAD.getUserAppDataDir() knows it;
 - a document object or view provider proxy without `dumps`/`loads`: FreeCAD 1.0 and later save
@@ -28,6 +29,10 @@ LINE_RULES = [
     ),
     (re.compile(r"\bQRegExp\b"), "QRegExp is gone in Qt 6 (FreeCAD 1.1): use QRegularExpression"),
     (re.compile(r"\bexec_\s*\("), "exec_() is gone in PySide6 (FreeCAD 1.1): call exec()"),
+    (
+        re.compile(r"\bPart\.makeCompound\("),
+        "Part.makeCompound crashes FreeCAD 1.0 imported as a module: use freecad_version.compound",
+    ),
     (
         re.compile(
             r"\.local/share/FreeCAD|\.FreeCAD/Mod|[\"']FreeCAD/Mod|join\([^)]*[\"']Mod[\"']"

@@ -75,7 +75,7 @@ def engine(up="+z"):
     p = lambda name, shape, colour: piece(name, shape, colour, 0.8, up)  # noqa: E731
     case = box(*ENGINE["crankcase"]).cut(box((15, 15, 15), (385, 185, 235)))
     block = box((20, 20, 250), (380, 180, 450))
-    block = block.cut(Part.makeCompound([rod((x, 100, 249), (x, 100, 451), 40) for x in BORES]))
+    block = block.cut(Part.Compound([rod((x, 100, 249), (x, 100, 451), 40) for x in BORES]))
     pieces = [
         p("crankcase", case, STEEL),
         p("cylinder_block", block, STEEL),
@@ -292,7 +292,7 @@ def print_bed_bracket(up="+z"):
     upright = box((80, 95, 5), (85, 125, 40))
     gusset = extrude_xz([(85, 5), (120, 5), (85, 35)], 107.5, 5)
     bracket = fuse([base, upright, gusset]).cut(
-        Part.makeCompound(holes + [rod((79, 110, 28), (86, 110, 28), 3)])
+        Part.Compound(holes + [rod((79, 110, 28), (86, 110, 28), 3)])
     )
     return {
         "pieces": [

@@ -63,7 +63,7 @@ def cut(solid, holes):
     if not holes:
         return solid
     tools = [box(lo, hi) for lo, hi in holes]
-    return solid.cut(tools[0] if len(tools) == 1 else Part.makeCompound(tools))
+    return solid.cut(tools[0] if len(tools) == 1 else Part.Compound(tools))
 
 
 def polyhedron(points, faces):

@@ -73,3 +73,12 @@ def link_into(mod_dir, target, name="PopUp"):
     os.symlink(target, temporary)
     os.replace(temporary, link)
     return link
+
+
+def compound(shapes):
+    """A Part compound of `shapes`. FreeCAD 1.0 (Debian 13) crashes in Part.makeCompound when it
+    is imported as a Python module (the command line, the tests), not in freecadcmd or the GUI;
+    the Part.Compound constructor builds the same compound on every version."""
+    import Part
+
+    return Part.Compound(list(shapes))

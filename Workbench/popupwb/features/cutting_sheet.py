@@ -27,6 +27,7 @@ import hashlib
 
 import FreeCAD
 
+from popupwb import freecad_version
 from popupwb import progress
 from popupwb.model import card_scaffold
 from popupwb.features.one_line_errors import one_line_errors
@@ -305,7 +306,7 @@ class CuttingSheet(StatelessProxy):
             sheet.translate(FreeCAD.Vector(index * pitch, 0.0, 0.0))
             sheets.append(sheet)
         placement = obj.Placement  # assigning Shape resets it to the shape's own
-        obj.Shape = Part.makeCompound(sheets)
+        obj.Shape = freecad_version.compound(sheets)
         obj.Placement = placement
 
         pieces = sheet_set.pieces

@@ -20,6 +20,7 @@ import collections
 import hashlib
 import math
 
+from popupwb import freecad_version
 from popupwb.model import profile_cutting, profile_storage
 
 CARD_TYPE = "PopUp::Card"
@@ -263,10 +264,8 @@ class CardScaffold:
     def own_shape(self, name, angle_deg, thickness=0.0):
         """Compound of the patches object `name` owns (the card its pages, a mechanism its own),
         cut from shape_at(): what that object shows, one child per patch in id order."""
-        import Part
-
         children = self.shape_at(angle_deg, thickness).childShapes()
-        return Part.makeCompound([children[i] for i in self.patches[name]])
+        return freecad_version.compound([children[i] for i in self.patches[name]])
 
 
 def assembled_shape(card):

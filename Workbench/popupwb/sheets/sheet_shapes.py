@@ -5,6 +5,8 @@ Needs FreeCAD."""
 import FreeCAD
 import Part
 
+from popupwb import freecad_version
+
 from .sheet_set import loops, pieces_by_sheet, points
 
 
@@ -34,13 +36,13 @@ def flat_sheet(sheet_set, index):
         for fold in piece.folds
     ]
     tabs = [loop_wire(points(tab.polygon)) for piece in pieces for tab in piece.tabs]
-    return Part.makeCompound(faces + folds + tabs)
+    return freecad_version.compound(faces + folds + tabs)
 
 
 def cut_outline(sheet_set, index):
     """What sheet `index` is cut along, without kerf: one face per region of `cut_nominal`. A page
     drawing these shows no edge inside a piece, so its folds show only as fold lines."""
-    return Part.makeCompound(
+    return freecad_version.compound(
         [
             region_face(region)
             for piece in pieces_by_sheet(sheet_set)[index]
