@@ -13,6 +13,7 @@
 #include <assimp/Exporter.hpp>
 #include <assimp/material.h>
 #include <assimp/scene.h>
+#include <assimp/version.h>
 #include <gtest/gtest.h>
 
 #include "load_model_mutations.hpp"
@@ -549,13 +550,16 @@ TEST(FitLoadModel, MutatedFilesComeBackAsMeshesOrNamedErrors)
 
 TEST(FitLoadModel, AReaderThatNeverReturnsIsStoppedAndNamed)
 {
-    // assimp 5.2's PLY reader loops forever on a header cut short.
+    // assimp 5.2's PLY reader (Debian 12) loops forever on a header cut short; 5.4 (Debian 13)
+    // refuses it at once. Either way the file is named; on 5.2 the reader had to be stopped.
     const fs::path file = scratch("hang") / "cut.ply";
     std::ofstream(file, std::ios::binary) << "ply\nformat ascii 1.0\ncomment Created b";
     const Result<ModelMesh> read = load_model(file.string(), LoadModelOptions{0.5});
     ASSERT_FALSE(read.ok);
     EXPECT_EQ(read.diagnostics.front().code, DiagnosticCode::unreadable_model);
-    EXPECT_NE(read.diagnostics.front().message.find("did not finish"), std::string::npos)
-        << read.diagnostics.front().message;
+    if (aiGetVersionMajor() == 5 && aiGetVersionMinor() <= 2) {
+        EXPECT_NE(read.diagnostics.front().message.find("did not finish"), std::string::npos)
+            << read.diagnostics.front().message;
+    }
     EXPECT_NE(read.diagnostics.front().message.find(file.string()), std::string::npos);
 }
