@@ -156,16 +156,15 @@ def mechanisms():
     v_fold.Offset = box.Offset.Value + box.Width.Value + 2.0
     doc.recompute()
     Gui.runCommand("PopUp_CheckValidity")
-    red = OFFENDING + (0.0,)
+    red = OFFENDING  # compared as RGB: the alpha's meaning differs between FreeCAD versions
 
     def is_red(c):
-        return tuple(round(x, 3) for x in c) == tuple(round(x, 3) for x in red)
+        return tuple(round(x, 3) for x in c[:3]) == tuple(round(x, 3) for x in red)
 
     # Colouring is deferred to the event loop: wait for it rather than for a fixed time.
     wait_until(lambda: any(is_red(c) for o in objects for c in o.ViewObject.DiffuseColor), 10000)
     out["red_faces"] = {
-        o.Name: sum(1 for c in o.ViewObject.DiffuseColor if tuple(round(x, 3) for x in c)
-                    == tuple(round(x, 3) for x in red))
+        o.Name: sum(1 for c in o.ViewObject.DiffuseColor if is_red(c))
         for o in objects
     }
     out["invalid_found"] = card.Valid is False
@@ -173,11 +172,7 @@ def mechanisms():
     doc.recompute()
     # Colours are applied from the event loop: wait for them rather than for a fixed time.
     out["red_cleared"] = wait_until(
-        lambda: not any(
-            tuple(round(x, 3) for x in c) == tuple(round(x, 3) for x in red)
-            for o in objects
-            for c in o.ViewObject.DiffuseColor
-        ),
+        lambda: not any(is_red(c) for o in objects for c in o.ViewObject.DiffuseColor),
         10000,
     )
 

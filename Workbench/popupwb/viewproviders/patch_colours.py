@@ -87,8 +87,10 @@ def colour_object(obj):
             marked.append(child)
         else:
             colour = ROLE_COLOURS.get(patches[patch_id].role, ROLE_COLOURS["other"])
-        colours.extend([colour + (0.0,)] * len(child.Faces))
-    if list(vobj.DiffuseColor) != colours:
+        colours.extend([colour] * len(child.Faces))
+    # RGB without alpha: opaque on every version. FreeCAD 0.20 reads a fourth value as
+    # transparency, 1.1 as opacity (0.0 made every face invisible there).
+    if [tuple(c[:3]) for c in vobj.DiffuseColor] != colours:
         vobj.DiffuseColor = colours
     offending_overlay.show_outlines(vobj, marked)
 
