@@ -42,6 +42,7 @@ CORE_FLOORS = {
 WORKBENCH_FLOORS = {
     "popupwb": 1,
     "popupwb.core": 1,
+    "popupwb.freecad_version": 1,
     "popupwb.stateless_proxy": 1,
     "popupwb.readable_file": 1,
     "popupwb.view_provider_by_name": 1,

@@ -498,7 +498,10 @@ class _Reader:
 
     def _font(self, entity, height):
         """ezdxf's measuring font for a TEXT (matplotlib's metrics of its style's font)."""
-        from ezdxf.tools import fonts
+        try:  # ezdxf 1.1 moved the fonts (Debian 13 has 1.4); Debian 12's 0.18 has them in tools
+            from ezdxf.fonts import fonts
+        except ImportError:
+            from ezdxf.tools import fonts
 
         font_name = "DejaVuSans.ttf"
         style_name = entity.dxf.get("style", "Standard")
