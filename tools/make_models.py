@@ -75,10 +75,9 @@ def _prism(lo, hi):
 
 
 def _fuse(shapes):
-    solid = shapes[0]
-    for other in shapes[1:]:
-        solid = solid.fuse(other)
-    return solid.removeSplitter()
+    """One fuse of all: OCCT 7.8 (FreeCAD 1.0) made the figure's spheres and cylinders an
+    invalid solid when fused one by one; the same solid on OCCT 7.6."""
+    return shapes[0].multiFuse(shapes[1:]).removeSplitter()
 
 
 def blocky(name):

@@ -120,9 +120,15 @@ def remove_pages(owner):
 
 
 def remove_page(page):
+    """The page's views and outlines first, then its template, then the page: FreeCAD 1.0's
+    DrawPage, removed first, reached views it had already dropped and crashed (a legacy
+    document's page, replaced during a recompute)."""
     doc = page.Document
-    for name in [o.Name for o in page_objects(page)]:
-        _remove_object(doc, name)  # the page first: TechDraw then drops its views itself
+    objects = page_objects(page)
+    names = [o.Name for o in objects[1:]][::-1] + [page.Name]
+    page.Views = []
+    for name in names:
+        _remove_object(doc, name)
 
 
 def _current_kind(page):
