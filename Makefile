@@ -8,7 +8,7 @@ PYTHON  := /usr/bin/python3
 JOBS    ?= $(shell nproc)
 SUDO    := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-DEBS := cmake make g++ pkg-config freecad \
+DEBS := cmake make g++ pkg-config git freecad \
 	libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libtbb-dev \
 	libcgal-dev libboost-dev libeigen3-dev pybind11-dev python3-dev nlohmann-json3-dev libassimp-dev \
 	python3-ezdxf python3-pytest python3-numpy libgtest-dev libbenchmark-dev \

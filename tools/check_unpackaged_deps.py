@@ -56,9 +56,23 @@ def is_packaged(path, owned):
     return False
 
 
+def files_under(build):
+    """Every file of the build folder. make test-matrix's chroots (<build>/matrix) are other
+    systems' files, with /proc and the source tree mounted in them: never walked, nor any mount."""
+    for folder, subfolders, files in os.walk(build):
+        subfolders[:] = [
+            name
+            for name in subfolders
+            if not (folder == build and name == "matrix")
+            and not os.path.ismount(os.path.join(folder, name))
+        ]
+        for name in files:
+            yield os.path.join(folder, name)
+
+
 def depfile_paths(build):
     """System files named by the compiler's dependency files."""
-    depfiles = glob.glob(os.path.join(build, "**", "*.o.d"), recursive=True)
+    depfiles = [p for p in files_under(os.path.normpath(build)) if p.endswith(".o.d")]
     used = set()
     for depfile in depfiles:
         with open(depfile, errors="replace") as f:
@@ -94,7 +108,7 @@ def shared_libraries(binary):
 def built_elf_files(build):
     return [
         p
-        for p in glob.glob(os.path.join(build, "**", "*"), recursive=True)
+        for p in files_under(os.path.normpath(build))
         if os.path.isfile(p) and not os.path.islink(p) and is_elf(p)
     ]
 

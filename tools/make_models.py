@@ -75,9 +75,15 @@ def _prism(lo, hi):
 
 
 def _fuse(shapes):
-    """One fuse of all: OCCT 7.8 (FreeCAD 1.0) made the figure's spheres and cylinders an
-    invalid solid when fused one by one; the same solid on OCCT 7.6."""
-    return shapes[0].multiFuse(shapes[1:]).removeSplitter()
+    """The parts fused one by one; when that is no valid solid (OCCT 7.8, FreeCAD 1.0: the
+    figure's spheres and cylinders), fused all at once, which OCCT 7.6 refuses for some models."""
+    solid = shapes[0]
+    for other in shapes[1:]:
+        solid = solid.fuse(other)
+    solid = solid.removeSplitter()
+    if not solid.isValid():
+        solid = shapes[0].multiFuse(shapes[1:]).removeSplitter()
+    return solid
 
 
 def blocky(name):

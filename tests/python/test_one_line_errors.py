@@ -50,6 +50,8 @@ print("RESULT " + json.dumps(out))
 
 
 def run(case, tmp_path):
+    """freecadcmd on SCRIPT. FreeCAD 1.1's freecadcmd ignores PYTHONPATH: popupwb comes from the
+    sandbox Mod folder (the tests take the sandbox_mod fixture), popupcore from POPUP_BUILD_DIR."""
     script = tmp_path / "one_line_errors.py"
     script.write_text(SCRIPT)
     process = subprocess.run(
@@ -65,7 +67,7 @@ def run(case, tmp_path):
     return result, output
 
 
-def test_bad_values_print_one_line_each_and_leave_the_objects_invalid(tmp_path):
+def test_bad_values_print_one_line_each_and_leave_the_objects_invalid(tmp_path, sandbox_mod):
     result, output = run("expected", tmp_path)
     assert "Traceback" not in output, output
     card, box, sheet = result["card"], result["box"], result["sheet"]
@@ -79,7 +81,7 @@ def test_bad_values_print_one_line_each_and_leave_the_objects_invalid(tmp_path):
     assert result["tracebacklimit"] is None  # restored after each error
 
 
-def test_a_real_bug_keeps_its_traceback(tmp_path):
+def test_a_real_bug_keeps_its_traceback(tmp_path, sandbox_mod):
     result, output = run("bug", tmp_path)
     assert "Invalid" in result["card"]["state"], result
     assert "Traceback (most recent call last)" in output, output
