@@ -49,6 +49,15 @@ def sheet_set_of(sheet):
 SVG = "{http://www.w3.org/2000/svg}"
 
 
+def line_format(edge):
+    """(style, RGB) of a cosmetic edge: its Format is a tuple on FreeCAD 0.20, a dict on 1.x."""
+    form = edge.Format
+    if isinstance(form, dict):
+        return form["style"], tuple(form["color"][:3])
+    style, _, colour, _ = form
+    return style, tuple(colour[:3])
+
+
 def page_parts(page):
     """The page's part view and its symbol view (glue areas and labels)."""
     (view,) = [v for v in page.Views if v.TypeId == "TechDraw::DrawViewPart"]
@@ -160,9 +169,8 @@ def test_pages_draw_every_sheet_at_full_size(doc, popup):
         edges = view.CosmeticEdges
         assert len(edges) == len(folds) > 0
         for edge, fold in zip(edges, folds):
-            style, _, colour, _ = edge.Format
             expected = {"mountain": (4, (0, 0, 1)), "valley": (2, (0, 1, 0))}[fold["direction"]]
-            assert (style, tuple(colour[:3])) == expected
+            assert line_format(edge) == expected
             # Cosmetic edges keep y up (TechDraw flips them when drawing) and 4 decimals.
             start = (view.X.Value + edge.Start.x, view.Y.Value + edge.Start.y)
             assert start == pytest.approx(tuple(fold["from"]), abs=1e-3)
